@@ -1,0 +1,127 @@
+# dtdel -- vertex deletion for 3D Delaunay triangulations, checked against CGAL.
+#
+#   make              build/dtdel (CLI) and build/libdtdel.a (+ src/dtdel.h)
+#   make deps         install the Debian packages (or say what to install)
+#   make test         release and sanitizer (ASan+UBSan) test suites
+#   make bench        the full benchmark, tables and plots into results/
+#   make bench-quick  a short benchmark (about 2 minutes)
+#   make plots        redraw the plots from results/*.csv
+#   make install      PREFIX=/usr/local: library, header and CLI
+#   make clean
+#
+# Three builds share the sources: build/ (release, -O2), build/asan/
+# (sanitizers, -O1 -g, validator after every operation in tests) and
+# build/count/ (release with counters compiled in, for counting runs).
+
+PREFIX  ?= /usr/local
+CC      ?= gcc
+CXX     ?= g++
+WARN     = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion -Wstrict-prototypes -Wmissing-prototypes
+CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L
+# -ffp-contract=off: the predicate filters' error bounds assume no FMA fusion.
+OPT      = -O2 -DNDEBUG -ffp-contract=off
+CFLAGS_R = $(CSTD) $(WARN) $(OPT)
+CFLAGS_A = $(CSTD) $(WARN) -O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-omit-frame-pointer -DDD_TEST_BUILD
+CFLAGS_C = $(CFLAGS_R) -DDD_COUNTERS
+CXXFLAGS_R = -std=c++17 -O2 -DNDEBUG -frounding-math -Wall -Wextra
+CXXFLAGS_A = -std=c++17 -O1 -g -frounding-math -Wall -Wextra -fsanitize=address,undefined
+LIBS     = -lgmp -lmpfr -lm
+
+LIB_SRC  = $(wildcard src/*.c) $(wildcard variants/*.c)
+LIB_SRC := $(filter-out src/cli.c,$(LIB_SRC))
+DATA_SRC = datasets/datasets.c
+SHIM_SRC = src/cgal/cgal_shim.cpp
+TEST_C   = $(wildcard tests/test_*.c)
+HDRS     = $(wildcard src/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h datasets/datasets.h
+
+B = build
+A = build/asan
+K = build/count
+
+LIB_OBJ_R = $(LIB_SRC:%.c=$(B)/obj/%.o)
+LIB_OBJ_A = $(LIB_SRC:%.c=$(A)/obj/%.o)
+LIB_OBJ_K = $(LIB_SRC:%.c=$(K)/obj/%.o)
+
+TESTS_R = $(TEST_C:tests/%.c=$(B)/tests/%)
+TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
+
+.PHONY: all deps test test-release test-asan bench bench-quick plots install clean
+.DEFAULT_GOAL := all
+
+all: deps $(B)/dtdel $(B)/libdtdel.a
+
+deps:
+	@sh scripts/deps.sh
+
+# ---- release ----------------------------------------------------------------
+$(B)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) -c $< -o $@
+$(B)/obj/%.o: %.cpp $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS_R) -c $< -o $@
+$(B)/libdtdel.a: $(LIB_OBJ_R)
+	@rm -f $@
+	ar rcs $@ $^
+$(B)/dtdel: $(B)/obj/src/cli.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
+	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
+$(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) -Isrc -c $< -o $@.o
+	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a -o $@ $(LIBS)
+
+# ---- sanitizers ---------------------------------------------------------------
+$(A)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_A) -c $< -o $@
+$(A)/obj/%.o: %.cpp $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS_A) -c $< -o $@
+$(A)/libdtdel.a: $(LIB_OBJ_A)
+	@rm -f $@
+	ar rcs $@ $^
+$(A)/dtdel: $(A)/obj/src/cli.o $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
+	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
+$(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_A) -Isrc -c $< -o $@.o
+	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a -o $@ $(LIBS)
+
+# ---- counting build -----------------------------------------------------------
+$(K)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_C) -c $< -o $@
+$(K)/obj/%.o: %.cpp $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS_R) -c $< -o $@
+$(K)/libdtdel.a: $(LIB_OBJ_K)
+	@rm -f $@
+	ar rcs $@ $^
+$(K)/dtdel: $(K)/obj/src/cli.o $(K)/obj/datasets/datasets.o $(K)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
+	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
+
+# ---- tests --------------------------------------------------------------------
+# Both suites run; the runner prints per-test lines and ends with
+# "N passed, N failed"; it exits non-zero on any failure.
+test: deps
+	@$(MAKE) --no-print-directory $(B)/dtdel $(TESTS_R) $(A)/dtdel $(TESTS_A)
+	@sh tests/run.sh $(B) $(A)
+
+# ---- bench --------------------------------------------------------------------
+bench: deps $(B)/dtdel
+	@sh scripts/bench.sh full
+
+bench-quick: deps $(B)/dtdel
+	@sh scripts/bench.sh quick
+
+plots:
+	@sh scripts/plots.sh
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
+	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
+	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
+	install -m 644 src/dtdel.h $(DESTDIR)$(PREFIX)/include/dtdel.h
+
+clean:
+	rm -rf build

@@ -1,0 +1,21 @@
+#!/bin/sh
+# Installs the Debian packages the project needs, or says exactly what to
+# install when it cannot (not root, no apt-get).  Quiet when all is there.
+PKGS="libcgal-dev libgmp-dev libmpfr-dev libboost-dev gnuplot-nox libcgal-demo g++ make"
+missing=""
+for p in $PKGS; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "deps: missing Debian packages:$missing" >&2
+if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
+    echo "deps: cannot install them here; run as root:" >&2
+    echo "    apt-get update && apt-get install -y$missing" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq >/dev/null && apt-get install -y -qq --no-install-recommends$missing >/dev/null || {
+    echo "deps: apt-get failed; run: apt-get update && apt-get install -y$missing" >&2
+    exit 1
+}
+echo "deps: installed$missing" >&2

@@ -1,0 +1,120 @@
+/*
+ * canon.c -- canonical output, its hash, status names and the small
+ * accessors of the public header (DESIGN 8).
+ *
+ * Canonical form: each live cell as its four input indices sorted
+ * ascending, -1 for the infinite vertex, the list sorted.  It depends only
+ * on the triangulation, never on cell storage order, so it is the key for
+ * comparing with CGAL.
+ */
+#include "mesh.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+const char *dd_status_name(dd_status s)
+{
+    static const char *const names[DD_NUM_STATUS] = {
+        "ok", "out of memory", "i/o error", "parse error", "NaN coordinate",
+        "infinite coordinate", "too few points", "collinear points",
+        "coplanar points", "unknown vertex", "unknown variant",
+        "duplicate point", "dimension would drop", "internal error"};
+    return (unsigned)s < DD_NUM_STATUS ? names[s] : "unknown status";
+}
+
+const char *dd_errmsg(const dd_tri *t) { return t->err; }
+uint32_t dd_num_input(const dd_tri *t) { return t->np; }
+uint32_t dd_num_vertices(const dd_tri *t) { return t->nvert; }
+uint32_t dd_num_duplicates(const dd_tri *t) { return t->ndup; }
+size_t dd_num_tets(const dd_tri *t) { return t->nlive; }
+size_t dd_num_finite_tets(const dd_tri *t) { return t->nfinite; }
+
+uint32_t dd_alias(const dd_tri *t, uint32_t i)
+{
+    return i < t->np ? t->alias[i] : UINT32_MAX;
+}
+
+int dd_is_vertex(const dd_tri *t, uint32_t i)
+{
+    return i < t->np && t->vcell[i] != DD_NONE;
+}
+
+size_t dd_memory_bytes(const dd_tri *t)
+{
+    return (size_t)t->cap_c * (9 * sizeof(uint32_t))
+         + (size_t)t->cap_p * (3 * sizeof(double) + 2 * sizeof(uint32_t));
+}
+
+void dd_get_counters(const dd_tri *t, dd_counters *c)
+{
+    memset(c, 0, sizeof *c);
+#ifdef DD_COUNTERS
+    c->orient_calls = t->pred.orient_calls;
+    c->orient_exact = t->pred.orient_exact;
+    c->insphere_calls = t->pred.insphere_calls;
+    c->insphere_exact = t->pred.insphere_exact;
+    c->perturbed = t->pred.perturbed;
+#endif
+    c->tets_created = t->tets_created;
+    c->walk_steps = t->walk_steps;
+}
+
+void dd_reset_counters(dd_tri *t)
+{
+#ifdef DD_COUNTERS
+    t->pred.orient_calls = t->pred.orient_exact = 0;
+    t->pred.insphere_calls = t->pred.insphere_exact = 0;
+    t->pred.perturbed = 0;
+#endif
+    t->tets_created = t->walk_steps = 0;
+}
+
+static void sort4(int32_t *a)
+{
+    for (int i = 1; i < 4; i++) {
+        int32_t x = a[i];
+        int j = i - 1;
+        while (j >= 0 && a[j] > x) { a[j + 1] = a[j]; j--; }
+        a[j + 1] = x;
+    }
+}
+
+static int cmp_tet(const void *a, const void *b)
+{
+    const int32_t *p = a, *q = b;
+    for (int i = 0; i < 4; i++)
+        if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
+    return 0;
+}
+
+dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
+{
+    size_t n = t->nlive;
+    int32_t *a = malloc((n ? n : 1) * 4 * sizeof *a);
+    if (!a) return DD_ERR_NOMEM;
+    size_t k = 0;
+    for (uint32_t c = 0; c < t->ncell; c++) {
+        const uint32_t *v = t->tv + 4 * (size_t)c;
+        if (v[0] == DD_DEAD) continue;
+        for (int i = 0; i < 4; i++) a[4 * k + (size_t)i] = v[i] == DD_INF ? -1 : (int32_t)v[i];
+        sort4(a + 4 * k);
+        k++;
+    }
+    qsort(a, k, 4 * sizeof *a, cmp_tet);
+    *tets = a;
+    *ntets = k;
+    return DD_OK;
+}
+
+uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (size_t i = 0; i < 4 * ntets; i++) {
+        uint32_t x = (uint32_t)tets[i];
+        for (int b = 0; b < 4; b++) {
+            h ^= (x >> (8 * b)) & 0xFF;
+            h *= 0x100000001b3ull;
+        }
+    }
+    return h;
+}

@@ -1,0 +1,90 @@
+/*
+ * check.c -- the validator (DESIGN 8b): run after every operation in test
+ * builds, never in timed runs.
+ *
+ * Checks, in order: neighbour symmetry tn[tn[f]] == f and that the two
+ * cells really share the facet's three vertices; one infinite vertex at
+ * most per cell; positive orientation of finite cells; vertex -> cell links;
+ * the perturbed empty-sphere test across every facet (the opposite vertex
+ * of the neighbour is not in conflict with the cell).  For a valid
+ * triangulation the last test certifies the perturbed Delaunay
+ * triangulation, hence CGAL's.
+ */
+#include "mesh.h"
+
+#include <stdlib.h>
+
+static int same_facet(const dd_tri *t, uint32_t c, uint32_t i, uint32_t d, uint32_t j)
+{
+    uint32_t a[3], b[3];
+    for (int k = 0; k < 3; k++) {
+        a[k] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][k]];
+        b[k] = t->tv[4 * (size_t)d + (uint32_t)dd_facet[j][k]];
+    }
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[0] && a[k] != b[1] && a[k] != b[2]) return 0;
+    return 1;
+}
+
+dd_status dd_check(dd_tri *t)
+{
+    size_t live = 0, finite = 0;
+    for (uint32_t c = 0; c < t->ncell; c++) {
+        const uint32_t *v = t->tv + 4 * (size_t)c;
+        if (v[0] == DD_DEAD) continue;
+        live++;
+        int ninf = 0;
+        for (uint32_t i = 0; i < 4; i++) {
+            if (v[i] == DD_INF) { ninf++; continue; }
+            if (v[i] >= t->np || t->vcell[v[i]] == DD_NONE)
+                return dd_fail(t, DD_ERR_INTERNAL, "cell %u: vertex %u is not a live vertex", c, v[i]);
+            for (uint32_t k = i + 1; k < 4; k++)
+                if (v[k] == v[i]) return dd_fail(t, DD_ERR_INTERNAL, "cell %u repeats vertex %u", c, v[i]);
+        }
+        if (ninf > 1) return dd_fail(t, DD_ERR_INTERNAL, "cell %u has %d infinite vertices", c, ninf);
+        if (ninf == 0) finite++;
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t f = t->tn[4 * (size_t)c + i];
+            if (f == DD_NONE || (f >> 2) >= t->ncell || t->tv[4 * (size_t)(f >> 2)] == DD_DEAD)
+                return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: no live neighbour", c, i);
+            if (t->tn[f] != 4 * c + i)
+                return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: neighbour link not symmetric", c, i);
+            if (!same_facet(t, c, i, f >> 2, f & 3))
+                return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: neighbour %u does not share the facet", c, i, f >> 2);
+        }
+        if (ninf == 0 && dd_orient3d(&t->pred, dd_pt(t, v[0]), dd_pt(t, v[1]),
+                                     dd_pt(t, v[2]), dd_pt(t, v[3])) <= 0)
+            return dd_fail(t, DD_ERR_INTERNAL, "cell %u (%u %u %u %u) is not positively oriented",
+                           c, v[0], v[1], v[2], v[3]);
+    }
+    if (live != t->nlive || finite != t->nfinite)
+        return dd_fail(t, DD_ERR_INTERNAL, "cell counts wrong: %zu live (recorded %u), %zu finite (recorded %u)",
+                       live, t->nlive, finite, t->nfinite);
+    uint32_t nv = 0;
+    for (uint32_t v = 0; v < t->np; v++) {
+        uint32_t c = t->vcell[v];
+        if (c == DD_NONE) continue;
+        nv++;
+        if (c >= t->ncell || t->tv[4 * (size_t)c] == DD_DEAD || dd_index_of(t, c, v) < 0)
+            return dd_fail(t, DD_ERR_INTERNAL, "vertex %u: its cell link %u does not contain it", v, c);
+    }
+    if (nv != t->nvert)
+        return dd_fail(t, DD_ERR_INTERNAL, "vertex count wrong: %u found, %u recorded", nv, t->nvert);
+    if (t->inf_cell == DD_NONE || t->tv[4 * (size_t)t->inf_cell] == DD_DEAD ||
+        !dd_is_infinite_cell(t, t->inf_cell))
+        return dd_fail(t, DD_ERR_INTERNAL, "the infinite vertex has no live cell link");
+    /* Local Delaunay test across every facet. */
+    for (uint32_t c = 0; c < t->ncell; c++) {
+        if (t->tv[4 * (size_t)c] == DD_DEAD) continue;
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t f = t->tn[4 * (size_t)c + i];
+            uint32_t w = t->tv[f];
+            if (w == DD_INF) continue;
+            if (dd_cell_conflict(t, c, dd_pt(t, w)))
+                return dd_fail(t, DD_ERR_INTERNAL,
+                               "facet %u of cell %u is not locally Delaunay: vertex %u is in conflict",
+                               i, c, w);
+        }
+    }
+    return DD_OK;
+}

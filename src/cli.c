@@ -1,0 +1,289 @@
+/*
+ * cli.c -- the dtdel command line.  The only place that prints to the user
+ * and picks exit codes: 0 success, 1 bad input, 2 bad usage.
+ *
+ *   dtdel gen DATASET N [--seed S]   points of a dataset as .xyz on stdout
+ *   dtdel tets FILE                  canonical DT(points of FILE)
+ *   dtdel cgal-tets FILE             the same computed by CGAL
+ *   dtdel build-bench N [--seed S]   construction speed against CGAL
+ */
+#include "dtdel.h"
+#include "cgal/cgal_shim.h"
+#include "../datasets/datasets.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define EXIT_INPUT 1
+#define EXIT_USAGE 2
+
+typedef struct command {
+    const char *name;
+    const char *usage;
+    const char *help;
+    int (*run)(int argc, char **argv);
+} command;
+
+static const command *find_command(const char *name);
+
+static int usage_error(const char *cmd, const char *fmt, const char *arg)
+{
+    fprintf(stderr, "dtdel %s: ", cmd);
+    fprintf(stderr, fmt, arg);
+    const command *c = find_command(cmd);
+    fprintf(stderr, "\nusage: dtdel %s\n", c ? c->usage : "");
+    return EXIT_USAGE;
+}
+
+static int wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
+    return 0;
+}
+
+static int print_help(const char *cmd)
+{
+    const command *c = find_command(cmd);
+    printf("usage: dtdel %s\n\n%s\n", c->usage, c->help);
+    return 0;
+}
+
+/* Parses a non-negative integer; returns 0 on success. */
+static int parse_u64(const char *s, uint64_t *out)
+{
+    if (!s || !*s || *s == '-') return -1;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end) return -1;
+    *out = v;
+    return 0;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- gen ------------------------------------------------------------------ */
+
+static int cmd_gen(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("gen");
+    const char *name = NULL, *nstr = NULL;
+    uint64_t n = 0, seed = 1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--seed")) {
+            if (++i >= argc || parse_u64(argv[i], &seed))
+                return usage_error("gen", "--seed needs a non-negative integer%s", "");
+        } else if (!name) name = argv[i];
+        else if (!nstr) nstr = argv[i];
+        else return usage_error("gen", "unexpected argument '%s'", argv[i]);
+    }
+    if (!name || !nstr) return usage_error("gen", "missing DATASET or N%s", "");
+    if (parse_u64(nstr, &n) || n > UINT32_MAX / 4)
+        return usage_error("gen", "N must be a non-negative integer, got '%s'", nstr);
+    double *xyz = NULL;
+    uint32_t np = 0;
+    char msg[512];
+    dd_status s = dd_gen(name, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg);
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel gen: %s\n", msg);
+        return s == DD_ERR_PARSE ? EXIT_USAGE : EXIT_INPUT;
+    }
+    for (uint32_t i = 0; i < np; i++)
+        printf("%.17g %.17g %.17g\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    free(xyz);
+    return 0;
+}
+
+/* ---- tets ----------------------------------------------------------------- */
+
+static int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
+{
+    char msg[512];
+    dd_status s = dd_read_points(path, xyz, np, msg, sizeof msg);
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel %s: %s\n", cmd, msg);
+        return EXIT_INPUT;
+    }
+    return 0;
+}
+
+static void write_tets(const int32_t *tets, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        printf("%d %d %d %d\n", tets[4 * k], tets[4 * k + 1], tets[4 * k + 2], tets[4 * k + 3]);
+}
+
+static int cmd_tets(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("tets");
+    if (argc != 2) return usage_error("tets", "expected exactly one FILE%s", "");
+    double *xyz;
+    uint32_t np;
+    int rc = load_file("tets", argv[1], &xyz, &np);
+    if (rc) return rc;
+    dd_tri *t;
+    char msg[512];
+    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
+    free(xyz);
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel tets: %s: %s\n", argv[1], msg);
+        return EXIT_INPUT;
+    }
+    if (dd_num_duplicates(t))
+        fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
+                dd_num_duplicates(t));
+    int32_t *tets;
+    size_t n;
+    if (dd_canonical(t, &tets, &n) != DD_OK) {
+        fprintf(stderr, "dtdel tets: out of memory\n");
+        dd_free(t);
+        return EXIT_INPUT;
+    }
+    write_tets(tets, n);
+    free(tets);
+    dd_free(t);
+    return 0;
+}
+
+static int cmd_cgal_tets(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("cgal-tets");
+    if (argc != 2) return usage_error("cgal-tets", "expected exactly one FILE%s", "");
+    double *xyz;
+    uint32_t np;
+    int rc = load_file("cgal-tets", argv[1], &xyz, &np);
+    if (rc) return rc;
+    dd_cgal *c = dd_cgal_build(xyz, np);
+    free(xyz);
+    if (!c) {
+        fprintf(stderr, "dtdel cgal-tets: %s: CGAL cannot build a 3D triangulation of these points\n", argv[1]);
+        return EXIT_INPUT;
+    }
+    int32_t *tets;
+    size_t n;
+    if (dd_cgal_canonical(c, &tets, &n)) {
+        dd_cgal_free(c);
+        return EXIT_INPUT;
+    }
+    write_tets(tets, n);
+    free(tets);
+    dd_cgal_free(c);
+    return 0;
+}
+
+/* ---- build-bench ---------------------------------------------------------- */
+
+static int cmd_build_bench(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("build-bench");
+    const char *dataset = "uniform";
+    uint64_t n = 1000000, seed = 1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--seed")) {
+            if (++i >= argc || parse_u64(argv[i], &seed))
+                return usage_error("build-bench", "--seed needs a non-negative integer%s", "");
+        } else if (!strcmp(argv[i], "--dataset")) {
+            if (++i >= argc) return usage_error("build-bench", "--dataset needs a name%s", "");
+            dataset = argv[i];
+        } else if (parse_u64(argv[i], &n) || n > UINT32_MAX / 8) {
+            return usage_error("build-bench", "N must be a non-negative integer, got '%s'", argv[i]);
+        }
+    }
+    double *xyz;
+    uint32_t np;
+    char msg[512];
+    if (dd_gen(dataset, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel build-bench: %s\n", msg);
+        return EXIT_INPUT;
+    }
+    double t0 = now_seconds();
+    dd_tri *t;
+    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
+    double t1 = now_seconds();
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel build-bench: %s\n", msg);
+        free(xyz);
+        return EXIT_INPUT;
+    }
+    double t2 = now_seconds();
+    dd_cgal *c = dd_cgal_build(xyz, np);
+    double t3 = now_seconds();
+    int same = 0;
+    int32_t *a = NULL, *b = NULL;
+    size_t na = 0, nb = 0;
+    if (c && dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(c, &b, &nb))
+        same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+    free(a);
+    free(b);
+    printf("dataset %s, n = %u, %zu cells (%zu finite)\n", dataset, np, dd_num_tets(t), dd_num_finite_tets(t));
+    printf("dtdel: %.3f s, %.0f points/s\n", t1 - t0, np / (t1 - t0));
+    printf("cgal:  %.3f s, %.0f points/s (%s)\n", t3 - t2, np / (t3 - t2), dd_cgal_version());
+    printf("speed ratio dtdel/cgal: %.2f\n", (t3 - t2) / (t1 - t0));
+    printf("bytes per cell: %.1f (all arrays, capacity included)\n",
+           (double)dd_memory_bytes(t) / (double)dd_num_tets(t));
+    printf("identical to CGAL: %s\n", same ? "yes" : "NO");
+    dd_cgal_free(c);
+    dd_free(t);
+    free(xyz);
+    return same ? 0 : EXIT_INPUT;
+}
+
+/* ---- dispatch ------------------------------------------------------------- */
+
+static const command commands[] = {
+    {"gen", "gen DATASET N [--seed S]",
+     "Writes N points of DATASET as .xyz (x y z per line) to stdout.\n"
+     "Datasets: moment, helix, uniform, sphere, grid, cosphere, layers,\n"
+     "grid-perturbed, and real models (bunny, elephant, armadillo, ...; N is\n"
+     "then a maximum, 0 = all).", cmd_gen},
+    {"tets", "tets FILE",
+     "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
+     "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
+     "ascending, -1 for the infinite vertex, lines sorted.  FILE is .xyz or\n"
+     ".off; input index = 0-based order of the points in the file.", cmd_tets},
+    {"cgal-tets", "cgal-tets FILE",
+     "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
+    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S]",
+     "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
+     "range insert in the same run; prints points/s, the ratio, bytes per\n"
+     "cell, and whether the two triangulations are identical.", cmd_build_bench},
+    {NULL, NULL, NULL, NULL}};
+
+static const command *find_command(const char *name)
+{
+    for (const command *c = commands; c->name; c++)
+        if (!strcmp(c->name, name)) return c;
+    return NULL;
+}
+
+static void main_usage(FILE *f)
+{
+    fprintf(f, "usage: dtdel COMMAND [ARGS]   (dtdel COMMAND --help for details)\n\ncommands:\n");
+    for (const command *c = commands; c->name; c++) fprintf(f, "  dtdel %s\n", c->usage);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) { main_usage(stderr); return EXIT_USAGE; }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        main_usage(stdout);
+        return 0;
+    }
+    const command *c = find_command(argv[1]);
+    if (!c) {
+        fprintf(stderr, "dtdel: unknown command '%s'\n", argv[1]);
+        main_usage(stderr);
+        return EXIT_USAGE;
+    }
+    return c->run(argc - 1, argv + 1);
+}

@@ -1,0 +1,107 @@
+/*
+ * dtdel.h -- the one public header of libdtdel.
+ *
+ * libdtdel builds the 3D Delaunay triangulation DT(S) of a point set and
+ * deletes vertices from it with the algorithms of Buchin, Devillers, Mulzer,
+ * Schrijvers and Shewchuk, "Vertex Deletion for 3D Delaunay Triangulations"
+ * (ESA 2013).  Predicates are exact and symbolically perturbed exactly as
+ * CGAL's Delaunay_triangulation_3 perturbs them, so the triangulation is
+ * unique for every point set that is not all coplanar and equals CGAL's
+ * simplex for simplex.
+ *
+ * Conventions:
+ *  - Vertices are named by their input index: the 0-based position of the
+ *    point in the array given to dd_create (or the index returned by
+ *    dd_insert).  A duplicate input point is not a vertex; dd_alias maps it
+ *    to the first occurrence, which is.
+ *  - Every function returns a dd_status.  On failure the triangulation is
+ *    left exactly as it was, and dd_errmsg() says what went wrong.
+ *  - Exported names start with dd_; nothing here keeps global state.
+ */
+#ifndef DTDEL_H
+#define DTDEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum dd_status {
+    DD_OK = 0,
+    DD_ERR_NOMEM,          /* out of memory                                  */
+    DD_ERR_IO,             /* a file cannot be opened or read                */
+    DD_ERR_PARSE,          /* a malformed line or header in an input file    */
+    DD_ERR_NAN,            /* a coordinate is NaN                            */
+    DD_ERR_INFINITE,       /* a coordinate is +inf or -inf                   */
+    DD_ERR_TOO_FEW,        /* fewer than 4 distinct points                   */
+    DD_ERR_COLLINEAR,      /* all points on one line                         */
+    DD_ERR_COPLANAR,       /* all points in one plane                        */
+    DD_ERR_UNKNOWN_VERTEX, /* the index names no vertex of the triangulation */
+    DD_ERR_UNKNOWN_VARIANT,/* no deletion strategy has that name             */
+    DD_ERR_DUPLICATE,      /* an inserted point equals an existing vertex    */
+    DD_ERR_DIMENSION,      /* deletion would leave fewer than 4 or only
+                              coplanar points (dimension drop unsupported)   */
+    DD_ERR_INTERNAL,       /* an invariant broke: a bug, please report it    */
+    DD_NUM_STATUS
+} dd_status;
+
+/* A short fixed name for a status ("ok", "nan", "coplanar", ...). */
+const char *dd_status_name(dd_status s);
+
+typedef struct dd_tri dd_tri;
+
+/* Builds DT of the n points xyz[3i..3i+2].  On success *out owns a copy of
+ * the points.  On failure *out is NULL, and if msg is not NULL a message
+ * naming the problem (and the offending index) is written to msg.        */
+dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n,
+                    char *msg, size_t msglen);
+void dd_free(dd_tri *t);
+
+/* The message of the last failed call on t ("" if none). */
+const char *dd_errmsg(const dd_tri *t);
+
+uint32_t dd_num_input(const dd_tri *t);      /* points given + inserted     */
+uint32_t dd_num_vertices(const dd_tri *t);   /* finite vertices now in DT   */
+uint32_t dd_num_duplicates(const dd_tri *t); /* input points merged away    */
+size_t dd_num_tets(const dd_tri *t);         /* finite + infinite cells     */
+size_t dd_num_finite_tets(const dd_tri *t);
+/* Index of the vertex that input point i became (i itself unless i was a
+ * duplicate); UINT32_MAX if i is out of range.                           */
+uint32_t dd_alias(const dd_tri *t, uint32_t i);
+/* 1 if input index i is a vertex of the triangulation now.               */
+int dd_is_vertex(const dd_tri *t, uint32_t i);
+/* Number of vertices adjacent to v (the infinite vertex counts as one).  */
+uint32_t dd_degree(dd_tri *t, uint32_t v);
+int dd_on_hull(dd_tri *t, uint32_t v);
+
+/* Canonical form: each cell as its four vertex indices sorted ascending,
+ * -1 for the infinite vertex; the cells sorted lexicographically.  *tets
+ * is malloc'd (4 * *ntets ints); the caller frees it.                    */
+dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets);
+/* 64-bit hash of a canonical list (FNV-1a over the ints). */
+uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets);
+
+/* Full self-check: neighbour symmetry, shared facets, positive orientation
+ * of finite cells, and the perturbed empty-sphere test on every facet.   */
+dd_status dd_check(dd_tri *t);
+
+/* Statistics kept by counting builds (-DDD_COUNTERS); zero otherwise. */
+typedef struct dd_counters {
+    uint64_t orient_calls, orient_exact;
+    uint64_t insphere_calls, insphere_exact;
+    uint64_t perturbed;            /* exact zeros resolved by perturbation */
+    uint64_t tets_created;
+    uint64_t walk_steps;
+} dd_counters;
+void dd_get_counters(const dd_tri *t, dd_counters *c);
+void dd_reset_counters(dd_tri *t);
+
+/* Bytes held by the triangulation's arrays (capacity, not just use). */
+size_t dd_memory_bytes(const dd_tri *t);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,154 @@
+/*
+ * mesh.h -- the tetrahedral mesh: the one place that fixes numbering and
+ * orientation (DESIGN 4).  Every other file uses these tables; nobody keeps
+ * a private copy.
+ *
+ * Cells.  Cell t has vertices tv[4t+0..3] and neighbours tn[4t+i] = 4u+j:
+ * u is the cell across the facet opposite vertex i, and j is that facet's
+ * index in u.  Invariant: tn[tn[f]] == f for every live facet f.
+ *
+ * Orientation.  A finite cell is positively oriented:
+ * orient3d(p[tv0], p[tv1], p[tv2], p[tv3]) > 0.  An infinite cell has
+ * exactly one vertex DD_INF; it is oriented as if DD_INF were a point
+ * beyond its finite facet (replacing DD_INF by such a point gives a
+ * positive orientation).  dd_facet[i] lists facet i's vertices so that
+ * (facet i, then vertex i) has the cell's orientation:
+ * orient3d(v[f0], v[f1], v[f2], x) > 0  iff  x is on v[i]'s side of facet i.
+ *
+ * Dead cells have tv[4t] == DD_DEAD; they are chained in a free list
+ * through tn[4t] and reused before the arrays grow.
+ *
+ * Marks.  stamp[t] holds an epoch; a cell is marked in the current pass
+ * iff stamp[t] equals the pass's epoch.  Passes never clear marks: they
+ * take fresh epochs (dd_new_epoch), O(1).
+ *
+ * Vertices are input indices.  vcell[v] is a live cell containing v, or
+ * DD_NONE when v is not a vertex (a duplicate, deleted, or not yet
+ * inserted).  inf_cell is a live infinite cell.
+ */
+#ifndef DD_MESH_H
+#define DD_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "dtdel.h"
+#include "pred.h"
+
+#define DD_INF  UINT32_MAX          /* the infinite vertex                 */
+#define DD_DEAD (UINT32_MAX - 1)    /* tv[4t] of a dead cell               */
+#define DD_NONE UINT32_MAX          /* no cell / no facet                  */
+
+/* Facet i's vertex positions, ordered as described above (same as the
+ * order CGAL's side_of_sphere uses for an infinite vertex at i).         */
+static const int dd_facet[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
+
+/* A growable array of uint32_t (scratch; reused, never shrunk). */
+typedef struct dd_vec {
+    uint32_t *a;
+    size_t n, cap;
+} dd_vec;
+
+dd_status dd_vec_reserve(dd_vec *v, size_t cap);
+static inline dd_status dd_vec_push(dd_vec *v, uint32_t x)
+{
+    if (v->n == v->cap) {
+        dd_status s = dd_vec_reserve(v, v->cap ? 2 * v->cap : 64);
+        if (s != DD_OK) return s;
+    }
+    v->a[v->n++] = x;
+    return DD_OK;
+}
+void dd_vec_free(dd_vec *v);
+
+struct dd_tri {
+    /* points and vertices, indexed by input index */
+    double *xyz;
+    uint32_t np, cap_p;
+    uint32_t *vcell;
+    uint32_t *alias;          /* input index -> kept vertex              */
+    uint32_t nvert, ndup;
+    uint32_t inf_cell;
+
+    /* cells */
+    uint32_t *tv, *tn, *stamp;
+    uint32_t ncell, cap_c;    /* high-water mark and capacity            */
+    uint32_t nlive, nfinite;
+    uint32_t free_head;       /* free list through tn[4t], DD_NONE = empty */
+    uint32_t epoch;
+    uint32_t hint;            /* where the next point location starts    */
+
+    uint64_t rng;             /* xorshift state for walks                */
+    dd_pred pred;
+    uint64_t tets_created, walk_steps;
+
+    /* scratch for insertion */
+    dd_vec stack, conflict, boundary;
+
+    char err[256];
+};
+
+/* Sets t->err and returns s. */
+dd_status dd_fail(dd_tri *t, dd_status s, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static inline const double *dd_pt(const dd_tri *t, uint32_t v)
+{
+    return t->xyz + 3 * (size_t)v;
+}
+
+static inline int dd_is_infinite_cell(const dd_tri *t, uint32_t c)
+{
+    const uint32_t *v = t->tv + 4 * (size_t)c;
+    return v[0] == DD_INF || v[1] == DD_INF || v[2] == DD_INF || v[3] == DD_INF;
+}
+
+/* Position of vertex x in cell c, or -1. */
+static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
+{
+    const uint32_t *v = t->tv + 4 * (size_t)c;
+    return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : v[3] == x ? 3 : -1;
+}
+
+static inline uint32_t dd_new_epoch(dd_tri *t, uint32_t step)
+{
+    if (t->epoch > UINT32_MAX - 4 * step) {   /* wrap: clear once */
+        for (uint32_t c = 0; c < t->ncell; c++) t->stamp[c] = 0;
+        t->epoch = 0;
+    }
+    t->epoch += step;
+    return t->epoch;
+}
+
+static inline uint32_t dd_rand(dd_tri *t)
+{
+    uint64_t x = t->rng;
+    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+    t->rng = x;
+    return (uint32_t)(x >> 32);
+}
+
+/* Cell storage. dd_reserve_cells makes room for k more cells so that the
+ * next k dd_new_cell calls cannot fail.                                  */
+dd_status dd_reserve_cells(dd_tri *t, uint32_t k);
+uint32_t dd_new_cell(dd_tri *t);     /* after dd_reserve_cells */
+void dd_kill_cell(dd_tri *t, uint32_t c);
+
+static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
+{
+    t->tn[f] = g;
+    t->tn[g] = f;
+}
+
+/* Conflict test of the perturbed Delaunay triangulation: 1 when point p
+ * lies inside the (perturbed) circumsphere of cell c, CGAL's rule for
+ * infinite cells included.                                               */
+int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+
+/* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
+ * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
+dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+
+/* Creates an empty dd_tri with room for np points. */
+dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
+
+#endif

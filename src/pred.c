@@ -1,0 +1,405 @@
+/*
+ * pred.c -- exact, perturbed predicates (DESIGN 3; see pred.h for signs).
+ *
+ * Each predicate runs in two stages.
+ *  1. A semi-static filter: the determinant in doubles, evaluated in the
+ *     same order as CGAL's determinant(), accepted when its magnitude
+ *     exceeds CGAL's certified error bound for that order (orientation
+ *     5.1107127829973299e-15 * maxx*maxy*maxz, in-sphere
+ *     1.2466136531027298e-13 * maxx*maxy*maxz * maxz^2 with the maxima
+ *     sorted), with CGAL's underflow and overflow guards.
+ *  2. An exact evaluation in GMP integers: every double is m * 2^e with an
+ *     integer m of at most 53 bits, so after shifting all coordinates of
+ *     one call by the smallest exponent they are integers and every sum
+ *     and product is exact.  Works for all finite doubles (1e-300 and
+ *     1e300 included).
+ * The perturbation (Devillers & Teillaud 2011, as CGAL implements it) is
+ * applied on top, only when the exact sign is zero.
+ */
+#include "pred.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+void dd_pred_init(dd_pred *ctx)
+{
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
+#ifdef DD_COUNTERS
+    ctx->orient_calls = ctx->orient_exact = 0;
+    ctx->insphere_calls = ctx->insphere_exact = 0;
+    ctx->perturbed = 0;
+#endif
+}
+
+void dd_pred_clear(dd_pred *ctx)
+{
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_clear(ctx->z[i]);
+}
+
+/* ---- exact stage --------------------------------------------------------- */
+
+/* Smallest binary exponent e such that every nonzero x[i] is an integer
+ * multiple of 2^e.                                                          */
+static int min_exponent(const double *const *pts, int npts)
+{
+    int emin = INT32_MAX;
+    for (int i = 0; i < npts; i++)
+        for (int c = 0; c < 3; c++) {
+            double x = pts[i][c];
+            if (x == 0.0) continue;
+            int e;
+            double f = frexp(x, &e);           /* x = f 2^e, |f| in [.5,1) */
+            int64_t m = (int64_t)ldexp(f, 53); /* exact 53-bit integer      */
+            int tz = __builtin_ctzll((uint64_t)(m < 0 ? -m : m));
+            int lo = e - 53 + tz;
+            if (lo < emin) emin = lo;
+        }
+    return emin == INT32_MAX ? 0 : emin;
+}
+
+/* out = x / 2^emin, exactly (an integer by choice of emin). */
+static void set_scaled(mpz_t out, double x, int emin)
+{
+    if (x == 0.0) { mpz_set_ui(out, 0); return; }
+    int e;
+    double f = frexp(x, &e);
+    int64_t m = (int64_t)ldexp(f, 53);
+    mpz_set_si(out, (long)m);
+    int sh = e - 53 - emin;
+    if (sh > 0) mpz_mul_2exp(out, out, (mp_bitcnt_t)sh);
+    else if (sh < 0) mpz_tdiv_q_2exp(out, out, (mp_bitcnt_t)(-sh)); /* exact */
+}
+
+/* Loads the npts points as scaled integers into z[0 .. 3*npts-1]. */
+static void load_points(dd_pred *ctx, const double *const *pts, int npts)
+{
+    int emin = min_exponent(pts, npts);
+    for (int i = 0; i < npts; i++)
+        for (int c = 0; c < 3; c++) set_scaled(ctx->z[3 * i + c], pts[i][c], emin);
+}
+
+/* r = a*d - b*c */
+static void det2(mpz_t r, const mpz_t a, const mpz_t b, const mpz_t c,
+                 const mpz_t d, mpz_t tmp)
+{
+    mpz_mul(r, a, d);
+    mpz_mul(tmp, b, c);
+    mpz_sub(r, r, tmp);
+}
+
+/* sign det[[a0 a1 a2][b0 b1 b2][c0 c1 c2]] using scratch s[0..3]. */
+static int sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s)
+{
+    det2(s[0], b[1], b[2], c[1], c[2], s[3]);
+    mpz_mul(s[1], a[0], s[0]);
+    det2(s[0], b[0], b[2], c[0], c[2], s[3]);
+    mpz_submul(s[1], a[1], s[0]);
+    det2(s[0], b[0], b[1], c[0], c[1], s[3]);
+    mpz_addmul(s[1], a[2], s[0]);
+    return mpz_sgn(s[1]);
+}
+
+static int orient3d_exact(dd_pred *ctx, const double *p, const double *q,
+                          const double *r, const double *s)
+{
+    const double *pts[4] = {p, q, r, s};
+    load_points(ctx, pts, 4);
+    mpz_ptr z[48];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    /* rows q-p, r-p, s-p into z[12..20] */
+    for (int row = 0; row < 3; row++)
+        for (int c = 0; c < 3; c++)
+            mpz_sub(z[12 + 3 * row + c], z[3 * (row + 1) + c], z[c]);
+    return sign_det3(&z[12], &z[15], &z[18], &z[21]);
+}
+
+/* Sign of the 4x4 determinant whose rows are r[i][0..3]; scratch s[0..9]. */
+static int sign_det4(mpz_ptr r[4][4], mpz_ptr *s)
+{
+    /* Laplace expansion along the last column:
+     * det = sum_i (-1)^(i+3) r[i][3] * M_i3, M_i3 the 3x3 minor without row i. */
+    mpz_set_ui(s[9], 0);
+    for (int i = 0; i < 4; i++) {
+        mpz_ptr rows[3][3];
+        int k = 0;
+        for (int j = 0; j < 4; j++) {
+            if (j == i) continue;
+            rows[k][0] = r[j][0]; rows[k][1] = r[j][1]; rows[k][2] = r[j][2];
+            k++;
+        }
+        sign_det3(rows[0], rows[1], rows[2], s);   /* value left in s[1] */
+        if (((i + 3) & 1) == 0) mpz_addmul(s[9], r[i][3], s[1]);
+        else mpz_submul(s[9], r[i][3], s[1]);
+    }
+    return mpz_sgn(s[9]);
+}
+
+/* CGAL: sign det(rows p-t, r-t, q-t, s-t, each lifted with its squared norm). */
+static int insphere_exact(dd_pred *ctx, const double *p, const double *q,
+                          const double *r, const double *s, const double *t)
+{
+    const double *pts[5] = {p, r, q, s, t};   /* note r, q swapped */
+    load_points(ctx, pts, 5);
+    mpz_ptr z[48];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    mpz_ptr rows[4][4];
+    for (int i = 0; i < 4; i++) {
+        for (int c = 0; c < 3; c++) {
+            rows[i][c] = z[15 + 4 * i + c];
+            mpz_sub(rows[i][c], z[3 * i + c], z[12 + c]);
+        }
+        rows[i][3] = z[15 + 4 * i + 3];
+        mpz_mul(rows[i][3], rows[i][0], rows[i][0]);
+        mpz_addmul(rows[i][3], rows[i][1], rows[i][1]);
+        mpz_addmul(rows[i][3], rows[i][2], rows[i][2]);
+    }
+    return sign_det4(rows, &z[31]);
+}
+
+/* 2D orientation of (a,b,c) projected on coordinates i, j (exact ints). */
+static int orient2d_exact_z(mpz_ptr *z, int i, int j, mpz_ptr *s)
+{
+    /* (b_i - a_i)(c_j - a_j) - (c_i - a_i)(b_j - a_j) */
+    mpz_sub(s[0], z[3 + i], z[i]);
+    mpz_sub(s[1], z[6 + j], z[j]);
+    mpz_sub(s[2], z[6 + i], z[i]);
+    mpz_sub(s[3], z[3 + j], z[j]);
+    mpz_mul(s[4], s[0], s[1]);
+    mpz_submul(s[4], s[2], s[3]);
+    return mpz_sgn(s[4]);
+}
+
+static int orient_coplanar_exact(dd_pred *ctx, const double *p,
+                                 const double *q, const double *r)
+{
+    const double *pts[3] = {p, q, r};
+    load_points(ctx, pts, 3);
+    mpz_ptr z[48];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    int o = orient2d_exact_z(z, 0, 1, &z[9]);
+    if (o != 0) return o;
+    o = orient2d_exact_z(z, 1, 2, &z[9]);
+    if (o != 0) return o;
+    return orient2d_exact_z(z, 0, 2, &z[9]);
+}
+
+/* CGAL: side_of_bounded_sphere(p, q, r, t+v, t) with v = pq x pr, i.e. the
+ * sign of det(rows p-t, r-t, q-t, v), each lifted.                        */
+static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
+                                   const double *q, const double *r,
+                                   const double *t)
+{
+    const double *pts[4] = {p, r, q, t};   /* rows in CGAL's order */
+    load_points(ctx, pts, 4);
+    mpz_ptr z[48];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    mpz_ptr rows[4][4];
+    for (int i = 0; i < 3; i++) {
+        for (int c = 0; c < 3; c++) {
+            rows[i][c] = z[12 + 4 * i + c];
+            mpz_sub(rows[i][c], z[3 * i + c], z[9 + c]);
+        }
+        rows[i][3] = z[12 + 4 * i + 3];
+        mpz_mul(rows[i][3], rows[i][0], rows[i][0]);
+        mpz_addmul(rows[i][3], rows[i][1], rows[i][1]);
+        mpz_addmul(rows[i][3], rows[i][2], rows[i][2]);
+    }
+    /* pq = q - p = z[6..8] - z[0..2]; pr = r - p = z[3..5] - z[0..2] */
+    mpz_ptr pq[3] = {z[24], z[25], z[26]}, pr[3] = {z[27], z[28], z[29]};
+    for (int c = 0; c < 3; c++) {
+        mpz_sub(pq[c], z[6 + c], z[c]);
+        mpz_sub(pr[c], z[3 + c], z[c]);
+    }
+    mpz_ptr *v = &z[30];   /* v[0..3] = vx, vy, vz, v2 */
+    det2(v[0], pq[1], pq[2], pr[1], pr[2], z[34]);
+    det2(v[1], pq[2], pq[0], pr[2], pr[0], z[34]);
+    det2(v[2], pq[0], pq[1], pr[0], pr[1], z[34]);
+    mpz_mul(v[3], v[0], v[0]);
+    mpz_addmul(v[3], v[1], v[1]);
+    mpz_addmul(v[3], v[2], v[2]);
+    for (int c = 0; c < 4; c++) rows[3][c] = v[c];
+    return sign_det4(rows, &z[35]);
+}
+
+/* ---- filtered predicates ------------------------------------------------- */
+
+static inline void sort3(double *a, double *b, double *c)
+{
+    double t;
+    if (*a > *c) { t = *a; *a = *c; *c = t; }
+    if (*b > *c) { t = *b; *b = *c; *c = t; }
+    else if (*b < *a) { t = *a; *a = *b; *b = t; }
+}
+
+int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
+                const double *r, const double *s)
+{
+    DD_COUNT(ctx, orient_calls);
+    double pqx = q[0] - p[0], pqy = q[1] - p[1], pqz = q[2] - p[2];
+    double prx = r[0] - p[0], pry = r[1] - p[1], prz = r[2] - p[2];
+    double psx = s[0] - p[0], psy = s[1] - p[1], psz = s[2] - p[2];
+    double maxx = fabs(pqx), maxy = fabs(pqy), maxz = fabs(pqz);
+    double a;
+    if ((a = fabs(prx)) > maxx) maxx = a;
+    if ((a = fabs(psx)) > maxx) maxx = a;
+    if ((a = fabs(pry)) > maxy) maxy = a;
+    if ((a = fabs(psy)) > maxy) maxy = a;
+    if ((a = fabs(prz)) > maxz) maxz = a;
+    if ((a = fabs(psz)) > maxz) maxz = a;
+    /* CGAL's determinant(a00..a22) evaluation order */
+    double m01 = pqx * pry - prx * pqy;
+    double m02 = pqx * psy - psx * pqy;
+    double m12 = prx * psy - psx * pry;
+    double det = m01 * psz - m02 * prz + m12 * pqz;
+    double eps = 5.1107127829973299e-15 * maxx * maxy * maxz;
+    sort3(&maxx, &maxy, &maxz);
+    if (maxx < 1e-97) {
+        if (maxx == 0) return 0;
+    } else if (maxz < 1e102) {
+        if (det > eps) return 1;
+        if (det < -eps) return -1;
+    }
+    DD_COUNT(ctx, orient_exact);
+    return orient3d_exact(ctx, p, q, r, s);
+}
+
+int dd_insphere(dd_pred *ctx, const double *p, const double *q,
+                const double *r, const double *s, const double *t)
+{
+    DD_COUNT(ctx, insphere_calls);
+    double ptx = p[0] - t[0], pty = p[1] - t[1], ptz = p[2] - t[2];
+    double qtx = q[0] - t[0], qty = q[1] - t[1], qtz = q[2] - t[2];
+    double rtx = r[0] - t[0], rty = r[1] - t[1], rtz = r[2] - t[2];
+    double stx = s[0] - t[0], sty = s[1] - t[1], stz = s[2] - t[2];
+    double pt2 = ptx * ptx + pty * pty + ptz * ptz;
+    double qt2 = qtx * qtx + qty * qty + qtz * qtz;
+    double rt2 = rtx * rtx + rty * rty + rtz * rtz;
+    double st2 = stx * stx + sty * sty + stz * stz;
+    double maxx = fabs(ptx), maxy = fabs(pty), maxz = fabs(ptz), a;
+    if ((a = fabs(qtx)) > maxx) maxx = a;
+    if ((a = fabs(rtx)) > maxx) maxx = a;
+    if ((a = fabs(stx)) > maxx) maxx = a;
+    if ((a = fabs(qty)) > maxy) maxy = a;
+    if ((a = fabs(rty)) > maxy) maxy = a;
+    if ((a = fabs(sty)) > maxy) maxy = a;
+    if ((a = fabs(qtz)) > maxz) maxz = a;
+    if ((a = fabs(rtz)) > maxz) maxz = a;
+    if ((a = fabs(stz)) > maxz) maxz = a;
+    double eps = 1.2466136531027298e-13 * maxx * maxy * maxz;
+    sort3(&maxx, &maxy, &maxz);
+    /* CGAL's 4x4 determinant(pt, rt, qt, st) evaluation order:
+     * rows a0=pt, a1=rt, a2=qt, a3=st; aij = row i, column j.             */
+    double m01 = rtx * pty - ptx * rty;
+    double m02 = qtx * pty - ptx * qty;
+    double m03 = stx * pty - ptx * sty;
+    double m12 = qtx * rty - rtx * qty;
+    double m13 = stx * rty - rtx * sty;
+    double m23 = stx * qty - qtx * sty;
+    double m012 = m12 * ptz - m02 * rtz + m01 * qtz;
+    double m013 = m13 * ptz - m03 * rtz + m01 * stz;
+    double m023 = m23 * ptz - m03 * qtz + m02 * stz;
+    double m123 = m23 * rtz - m13 * qtz + m12 * stz;
+    double det = m123 * pt2 - m023 * rt2 + m013 * qt2 - m012 * st2;
+    if (maxx < 1e-58) {
+        if (maxx == 0) return 0;
+    } else if (maxz < 1e61) {
+        eps *= maxz * maxz;
+        if (det > eps) return 1;
+        if (det < -eps) return -1;
+    }
+    DD_COUNT(ctx, insphere_exact);
+    return insphere_exact(ctx, p, q, r, s, t);
+}
+
+/* Shewchuk's orient2d bound: |det| > 3.3307e-16 * (|l| + |r|) is certain
+ * (differences of doubles are rounded too; the bound covers that).        */
+static int orient2d_filtered(dd_pred *ctx, const double *p, const double *q,
+                             const double *r, int i, int j)
+{
+    double l = (q[i] - p[i]) * (r[j] - p[j]);
+    double rr = (r[i] - p[i]) * (q[j] - p[j]);
+    double det = l - rr;
+    double bound = 3.3306690738754716e-16 * (fabs(l) + fabs(rr));
+    if (det > bound && bound > 1e-250) return 1;
+    if (-det > bound && bound > 1e-250) return -1;
+    (void)ctx;
+    return 2;   /* undecided */
+}
+
+int dd_orient_coplanar(dd_pred *ctx, const double *p, const double *q,
+                       const double *r)
+{
+    int o = orient2d_filtered(ctx, p, q, r, 0, 1);
+    if (o != 2) return o;
+    return orient_coplanar_exact(ctx, p, q, r);
+}
+
+int dd_incircle_coplanar(dd_pred *ctx, const double *p, const double *q,
+                         const double *r, const double *t)
+{
+    return incircle_coplanar_exact(ctx, p, q, r, t);
+}
+
+/* ---- perturbation -------------------------------------------------------- */
+
+/* Sorts the n point pointers lexicographically (insertion sort, n <= 5). */
+static void lex_sort(const double **pts, int n)
+{
+    for (int i = 1; i < n; i++) {
+        const double *x = pts[i];
+        int j = i - 1;
+        while (j >= 0 && dd_lex_cmp(pts[j], x) > 0) { pts[j + 1] = pts[j]; j--; }
+        pts[j + 1] = x;
+    }
+}
+
+int dd_insphere_perturbed(dd_pred *ctx, const double *p0, const double *p1,
+                          const double *p2, const double *p3,
+                          const double *p)
+{
+    int s = dd_insphere(ctx, p0, p1, p2, p3, p);
+    if (s != 0) return s;
+    DD_COUNT(ctx, perturbed);
+    const double *pts[5] = {p0, p1, p2, p3, p};
+    lex_sort(pts, 5);
+    for (int i = 4; i > 2; --i) {
+        int o;
+        if (pts[i] == p) return -1;
+        if (pts[i] == p3 && (o = dd_orient3d(ctx, p0, p1, p2, p)) != 0) return o;
+        if (pts[i] == p2 && (o = dd_orient3d(ctx, p0, p1, p, p3)) != 0) return o;
+        if (pts[i] == p1 && (o = dd_orient3d(ctx, p0, p, p2, p3)) != 0) return o;
+        if (pts[i] == p0 && (o = dd_orient3d(ctx, p, p1, p2, p3)) != 0) return o;
+    }
+    return -1;   /* unreachable for distinct points (CGAL asserts) */
+}
+
+int dd_incircle_coplanar_perturbed(dd_pred *ctx, const double *p0,
+                                   const double *p1, const double *p2,
+                                   const double *p)
+{
+    int s = dd_incircle_coplanar(ctx, p0, p1, p2, p);
+    if (s != 0) return s;
+    DD_COUNT(ctx, perturbed);
+    const double *pts[4] = {p0, p1, p2, p};
+    lex_sort(pts, 4);
+    int local = dd_orient_coplanar(ctx, p0, p1, p2);
+    for (int i = 3; i > 0; --i) {
+        int o;
+        if (pts[i] == p) return -1;
+        if (pts[i] == p2 && (o = dd_orient_coplanar(ctx, p0, p1, p)) != 0) return o * local;
+        if (pts[i] == p1 && (o = dd_orient_coplanar(ctx, p0, p, p2)) != 0) return o * local;
+        if (pts[i] == p0 && (o = dd_orient_coplanar(ctx, p, p1, p2)) != 0) return o * local;
+    }
+    return -local;
+}
+
+int dd_inf_conflict(dd_pred *ctx, const double *const v[4], int k,
+                    const double *p)
+{
+    /* Same argument order as CGAL's side_of_sphere(v0, v1, v2, v3, p). */
+    static const int facet[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
+    const double *a = v[facet[k][0]], *b = v[facet[k][1]], *c = v[facet[k][2]];
+    int o = dd_orient3d(ctx, a, b, c, p);
+    if (o != 0) return o;
+    return dd_incircle_coplanar_perturbed(ctx, a, b, c, p);
+}

@@ -1,0 +1,43 @@
+#!/bin/sh
+# Runs the whole suite: the C test programs and the CLI tests, first in the
+# release build, then in the sanitizer build (smaller sizes).  Counts the
+# "ok"/"FAIL" lines and ends with "N passed, N failed"; exits 1 on any
+# failure, including a test program that crashed or exited non-zero.
+REL=${1:-build}
+ASAN=${2:-build/asan}
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+
+run() {   # run LABEL CMD...
+    label=$1; shift
+    start=$(date +%s)
+    "$@" >"$log.out" 2>"$log.err"
+    rc=$?
+    cat "$log.out" >>"$log"
+    if [ $rc -ne 0 ] && ! grep -q "^FAIL" "$log.out"; then
+        echo "FAIL $label: exited with status $rc" >>"$log"
+        tail -n 20 "$log.err" | sed 's/^/    /' >>"$log"
+    fi
+    echo "  $label: $(( $(date +%s) - start ))s" >&2
+    rm -f "$log.out" "$log.err"
+}
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+for t in "$REL"/tests/test_*; do
+    case "$t" in *.o) continue ;; esac
+    run "release $(basename "$t")" "$t"
+done
+run "release cli" sh tests/test_cli.sh "$REL/dtdel"
+for t in "$ASAN"/tests/test_*; do
+    case "$t" in *.o) continue ;; esac
+    run "asan $(basename "$t")" "$t" small
+done
+run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
+
+grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'
+passed=$(grep -c "^ok " "$log")
+failed=$(grep -c "^FAIL " "$log")
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

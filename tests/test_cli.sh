@@ -1,0 +1,88 @@
+#!/bin/sh
+# CLI contract: exit codes (0 ok, 1 bad input, 2 bad usage), a clear message
+# naming each problem, --help everywhere, and `dtdel tets` equal to CGAL's
+# canonical form on generated datasets.  Prints ok/FAIL lines.
+DTDEL=${1:-build/dtdel}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# expect NAME CODE PATTERN CMD...: exit code CODE and stderr matching PATTERN
+expect() {
+    name=$1; code=$2; pat=$3; shift 3
+    "$@" >"$tmp/out" 2>"$tmp/err"
+    rc=$?
+    if [ $rc -ne "$code" ]; then
+        echo "FAIL cli/$name: exit $rc, expected $code; stderr: $(head -c 300 "$tmp/err")"
+    elif [ -n "$pat" ] && ! grep -qiE "$pat" "$tmp/err"; then
+        echo "FAIL cli/$name: stderr does not match /$pat/: $(head -c 300 "$tmp/err")"
+    else
+        echo "ok cli/$name"
+    fi
+}
+
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n' >"$tmp/good.xyz"
+printf '# comment\n0 0 0\n\n1 0 0\n1 2 x\n' >"$tmp/badline.xyz"
+printf '0 0 0\n1 0 0\nnan 1 0\n0 0 1\n' >"$tmp/nan.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 inf\n' >"$tmp/inf.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n' >"$tmp/three.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n1 0 0\n0 0 0\n' >"$tmp/dups3.xyz"
+printf '0 0 0\n1 1 1\n2 2 2\n3 3 3\n-1 -1 -1\n' >"$tmp/line.xyz"
+printf '0 0 5\n1 0 5\n0 1 5\n1 1 5\n2 3 5\n' >"$tmp/plane.xyz"
+printf '' >"$tmp/empty.xyz"
+printf 'OFF\n5 0 0\n0 0 0\n1 0 0\n' >"$tmp/short.off"
+printf 'OFF\nfive 0 0\n' >"$tmp/badcount.off"
+printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n3 0 1 2\n' >"$tmp/good.off"
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0 0 0\n' >"$tmp/withdup.xyz"
+
+expect no-args 2 "usage" "$DTDEL"
+expect unknown-command 2 "unknown command" "$DTDEL" frobnicate
+expect help 0 "" "$DTDEL" --help
+expect tets-help 0 "" "$DTDEL" tets --help
+expect gen-help 0 "" "$DTDEL" gen --help
+expect tets-no-file 2 "usage" "$DTDEL" tets
+expect tets-missing-file 1 "cannot open" "$DTDEL" tets "$tmp/nope.xyz"
+expect tets-bad-line 1 "badline.xyz:5" "$DTDEL" tets "$tmp/badline.xyz"
+expect tets-nan 1 "nan.xyz:3.*nan" "$DTDEL" tets "$tmp/nan.xyz"
+expect tets-inf 1 "inf.xyz:4.*infinite" "$DTDEL" tets "$tmp/inf.xyz"
+expect tets-three-points 1 "at least 4 distinct points" "$DTDEL" tets "$tmp/three.xyz"
+expect tets-three-distinct 1 "at least 4 distinct points, got 3" "$DTDEL" tets "$tmp/dups3.xyz"
+expect tets-collinear 1 "collinear" "$DTDEL" tets "$tmp/line.xyz"
+expect tets-coplanar 1 "coplanar" "$DTDEL" tets "$tmp/plane.xyz"
+expect tets-empty 1 "at least 4 distinct points, got 0" "$DTDEL" tets "$tmp/empty.xyz"
+expect tets-off-truncated 1 "short.off" "$DTDEL" tets "$tmp/short.off"
+expect tets-off-bad-count 1 "badcount.off:2" "$DTDEL" tets "$tmp/badcount.off"
+expect tets-duplicate-note 0 "1 duplicate point" "$DTDEL" tets "$tmp/withdup.xyz"
+expect gen-unknown 2 "unknown dataset" "$DTDEL" gen nosuchset 10
+expect gen-bad-n 2 "N must be" "$DTDEL" gen uniform -5
+expect gen-bad-seed 2 "seed" "$DTDEL" gen uniform 5 --seed x
+
+# The canonical form of a tiny input, worked out by hand: the 5 points are
+# cospherical (all on the sphere around (.5,.5,.5)), so the perturbation
+# decides; point 4 = (1,1,1) is the lexicographically largest, hence outside
+# the sphere of 0 1 2 3: 2 finite tetrahedra and 6 infinite cells.
+"$DTDEL" tets "$tmp/good.xyz" >"$tmp/good.tets" 2>/dev/null
+cat >"$tmp/good.expect" <<'X'
+-1 0 1 2
+-1 0 1 3
+-1 0 2 3
+-1 1 2 4
+-1 1 3 4
+-1 2 3 4
+0 1 2 3
+1 2 3 4
+X
+if cmp -s "$tmp/good.tets" "$tmp/good.expect"; then echo "ok cli/tets-by-hand"; else
+    echo "FAIL cli/tets-by-hand: got $(tr '\n' ',' <"$tmp/good.tets")"; fi
+"$DTDEL" tets "$tmp/good.off" >"$tmp/goodoff.tets" 2>/dev/null
+if cmp -s "$tmp/goodoff.tets" "$tmp/good.expect"; then echo "ok cli/tets-off"; else
+    echo "FAIL cli/tets-off: .off input gives a different result"; fi
+
+# tets equals CGAL's canonical form, through the CLI, on several datasets.
+for spec in "grid 343" "cosphere 200" "layers 72" "moment 64" "helix 400" "sphere 500" "bunny 800"; do
+    set -- $spec
+    "$DTDEL" gen "$1" "$2" --seed 3 >"$tmp/p.xyz" 2>"$tmp/err" || { echo "FAIL cli/gen-$1: $(cat "$tmp/err")"; continue; }
+    "$DTDEL" tets "$tmp/p.xyz" >"$tmp/a" 2>/dev/null
+    "$DTDEL" cgal-tets "$tmp/p.xyz" >"$tmp/b" 2>/dev/null
+    if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then echo "ok cli/tets-equals-cgal-$1-$2"; else
+        echo "FAIL cli/tets-equals-cgal-$1-$2: $(wc -l <"$tmp/a") vs $(wc -l <"$tmp/b") lines"; fi
+done
