@@ -47,12 +47,12 @@ typedef struct keyed { uint64_t key; uint32_t id; } keyed;
 
 /* Sorts ids[0..n) along the Hilbert curve of their bounding box (LSD radix
  * sort on the 48-bit key, 16 bits a pass).                                */
-static dd_status hilbert_sort(const dd_tri *t, uint32_t *ids, uint32_t n)
+static dd_status hilbert_sort(const double *pts, uint32_t *ids, uint32_t n)
 {
     if (n < 2) return DD_OK;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (uint32_t k = 0; k < n; k++) {
-        const double *p = dd_pt(t, ids[k]);
+        const double *p = pts + 3 * (size_t)ids[k];
         for (int c = 0; c < 3; c++) {
             if (p[c] < lo[c]) lo[c] = p[c];
             if (p[c] > hi[c]) hi[c] = p[c];
@@ -66,7 +66,7 @@ static dd_status hilbert_sort(const dd_tri *t, uint32_t *ids, uint32_t n)
     if (!a || !count) { free(a); free(count); return DD_ERR_NOMEM; }
     keyed *b = a + n;
     for (uint32_t k = 0; k < n; k++) {
-        const double *p = dd_pt(t, ids[k]);
+        const double *p = pts + 3 * (size_t)ids[k];
         uint32_t x[3];
         for (int c = 0; c < 3; c++) {
             double q = (p[c] - lo[c]) * scale;
@@ -91,7 +91,7 @@ static dd_status hilbert_sort(const dd_tri *t, uint32_t *ids, uint32_t n)
 }
 
 /* BRIO: shuffle, then Hilbert-sort rounds [n/8, n), [n/64, n/8), ... */
-static dd_status brio_order(dd_tri *t, uint32_t *ids, uint32_t n)
+static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
 {
     uint64_t r = 0x243F6A8885A308D3ull;
     for (uint32_t k = n; k > 1; k--) {
@@ -102,11 +102,11 @@ static dd_status brio_order(dd_tri *t, uint32_t *ids, uint32_t n)
     uint32_t hi = n;
     while (hi > 64) {
         uint32_t lo = hi / 8;
-        dd_status s = hilbert_sort(t, ids + lo, hi - lo);
+        dd_status s = hilbert_sort(pts, ids + lo, hi - lo);
         if (s != DD_OK) return s;
         hi = lo;
     }
-    return hilbert_sort(t, ids, hi);
+    return hilbert_sort(pts, ids, hi);
 }
 
 /* ---- validation and duplicates ------------------------------------------- */
@@ -120,29 +120,28 @@ static int cmp_lexpt(const void *a, const void *b)
     return c ? c : (p->id < q->id ? -1 : p->id > q->id);
 }
 
-/* Sets alias[i] to the first index holding the same point and writes the
- * kept ids (ascending input order) to ids[0..*nkept).                     */
-static dd_status dedup(dd_tri *t, uint32_t *ids, uint32_t *nkept)
+/* first[i] = the smallest input index holding the same point as input i;
+ * writes the kept inputs (first[i] == i, ascending) to ids[0..*nkept).    */
+static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first,
+                       uint32_t *ids, uint32_t *nkept)
 {
-    uint32_t n = t->np;
     lexpt *a = malloc((size_t)(n ? n : 1) * sizeof *a);
     if (!a) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
     for (uint32_t i = 0; i < n; i++) {
-        memcpy(a[i].x, dd_pt(t, i), sizeof a[i].x);
+        memcpy(a[i].x, pts + 3 * (size_t)i, sizeof a[i].x);
         a[i].id = i;
     }
     qsort(a, n, sizeof *a, cmp_lexpt);
     for (uint32_t k = 0; k < n; k++) {
         if (k > 0 && dd_lex_cmp(a[k].x, a[k - 1].x) == 0)
-            t->alias[a[k].id] = t->alias[a[k - 1].id];
+            first[a[k].id] = first[a[k - 1].id];
         else
-            t->alias[a[k].id] = a[k].id;
+            first[a[k].id] = a[k].id;
     }
     free(a);
     uint32_t m = 0;
     for (uint32_t i = 0; i < n; i++)
-        if (t->alias[i] == i) ids[m++] = i;
-    t->ndup = n - m;
+        if (first[i] == i) ids[m++] = i;
     *nkept = m;
     return DD_OK;
 }
@@ -150,20 +149,22 @@ static dd_status dedup(dd_tri *t, uint32_t *ids, uint32_t *nkept)
 /* ---- the first tetrahedron ----------------------------------------------- */
 
 /* Moves four affinely independent points to ids[0..3] (scanning in order). */
-static dd_status pick_simplex(dd_tri *t, uint32_t *ids, uint32_t n)
+static dd_status pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n)
 {
     if (n < 4)
         return dd_fail(t, DD_ERR_TOO_FEW, "need at least 4 distinct points, got %u", n);
     dd_pred *pr = &t->pred;
-    const double *a = dd_pt(t, ids[0]), *b = dd_pt(t, ids[1]);
+#define PT(i) (pts + 3 * (size_t)(i))
+    const double *a = PT(ids[0]), *b = PT(ids[1]);
     uint32_t k = 2;
-    while (k < n && dd_orient_coplanar(pr, a, b, dd_pt(t, ids[k])) == 0) k++;
+    while (k < n && dd_orient_coplanar(pr, a, b, PT(ids[k])) == 0) k++;
     if (k == n)
         return dd_fail(t, DD_ERR_COLLINEAR, "all %u points are collinear", n);
     uint32_t tmp = ids[2]; ids[2] = ids[k]; ids[k] = tmp;
-    const double *c = dd_pt(t, ids[2]);
+    const double *c = PT(ids[2]);
     k = 3;
-    while (k < n && dd_orient3d(pr, a, b, c, dd_pt(t, ids[k])) == 0) k++;
+    while (k < n && dd_orient3d(pr, a, b, c, PT(ids[k])) == 0) k++;
+#undef PT
     if (k == n)
         return dd_fail(t, DD_ERR_COPLANAR, "all %u points are coplanar", n);
     tmp = ids[3]; ids[3] = ids[k]; ids[k] = tmp;
@@ -240,20 +241,31 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
             if (isinf(x))
                 return report(t, dd_fail(t, DD_ERR_INFINITE, "point %u: coordinate %c is infinite", i, "xyz"[c]), msg, msglen);
         }
-    if (n) memcpy(t->xyz, xyz, 3 * (size_t)n * sizeof *xyz);
-    t->np = n;
-    for (uint32_t i = 0; i < n; i++) t->vcell[i] = DD_NONE;
-    uint32_t *ids = malloc((size_t)(n ? n : 1) * sizeof *ids);
+    uint32_t *ids = malloc(2 * (size_t)(n ? n : 1) * sizeof *ids);
     if (!ids) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
+    uint32_t *first = ids + n;
+    /* Input order -> insertion order: drop duplicates, BRIO + Hilbert, the
+     * first tetrahedron in front.  Vertex id k is then input ids[k].      */
     uint32_t m = 0;
-    s = dedup(t, ids, &m);
-    if (s == DD_OK) s = brio_order(t, ids, m);
-    if (s == DD_OK) s = pick_simplex(t, ids, m);
+    s = dedup(t, xyz, n, first, ids, &m);
+    if (s == DD_OK) s = brio_order(xyz, ids, m);
+    if (s == DD_OK) s = pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
     if (s != DD_OK) { free(ids); return report(t, s, msg, msglen); }
-    make_first_cells(t, ids);
-    for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_vertex(t, ids[k]);
+    t->np = n;
+    t->nvid = m;
+    t->ndup = n - m;
+    for (uint32_t k = 0; k < m; k++) {
+        memcpy(t->xyz + 3 * (size_t)k, xyz + 3 * (size_t)ids[k], 3 * sizeof *xyz);
+        t->v2in[k] = ids[k];
+        t->vcell[k] = DD_NONE;
+        t->in2v[ids[k]] = k;
+    }
+    for (uint32_t i = 0; i < n; i++) t->in2v[i] = t->in2v[first[i]];
     free(ids);
+    uint32_t first4[4] = {0, 1, 2, 3};
+    make_first_cells(t, first4);
+    for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_vertex(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
     *out = t;
     return DD_OK;

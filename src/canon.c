@@ -31,18 +31,21 @@ size_t dd_num_finite_tets(const dd_tri *t) { return t->nfinite; }
 
 uint32_t dd_alias(const dd_tri *t, uint32_t i)
 {
-    return i < t->np ? t->alias[i] : UINT32_MAX;
+    return i < t->np ? t->v2in[t->in2v[i]] : UINT32_MAX;
 }
 
 int dd_is_vertex(const dd_tri *t, uint32_t i)
 {
-    return i < t->np && t->vcell[i] != DD_NONE;
+    if (i >= t->np) return 0;
+    uint32_t v = t->in2v[i];
+    return t->v2in[v] == i && t->vcell[v] != DD_NONE;
 }
 
 size_t dd_memory_bytes(const dd_tri *t)
 {
     return (size_t)t->cap_c * (9 * sizeof(uint32_t))
-         + (size_t)t->cap_p * (3 * sizeof(double) + 2 * sizeof(uint32_t));
+         + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
+         + (size_t)t->cap_in * sizeof(uint32_t);
 }
 
 void dd_get_counters(const dd_tri *t, dd_counters *c)
@@ -96,7 +99,7 @@ dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
     for (uint32_t c = 0; c < t->ncell; c++) {
         const uint32_t *v = t->tv + 4 * (size_t)c;
         if (v[0] == DD_DEAD) continue;
-        for (int i = 0; i < 4; i++) a[4 * k + (size_t)i] = v[i] == DD_INF ? -1 : (int32_t)v[i];
+        for (int i = 0; i < 4; i++) a[4 * k + (size_t)i] = dd_input_index(t, v[i]);
         sort4(a + 4 * k);
         k++;
     }

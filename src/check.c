@@ -36,8 +36,8 @@ dd_status dd_check(dd_tri *t)
         int ninf = 0;
         for (uint32_t i = 0; i < 4; i++) {
             if (v[i] == DD_INF) { ninf++; continue; }
-            if (v[i] >= t->np || t->vcell[v[i]] == DD_NONE)
-                return dd_fail(t, DD_ERR_INTERNAL, "cell %u: vertex %u is not a live vertex", c, v[i]);
+            if (v[i] >= t->nvid || t->vcell[v[i]] == DD_NONE)
+                return dd_fail(t, DD_ERR_INTERNAL, "cell %u: vertex id %u is not a live vertex", c, v[i]);
             for (uint32_t k = i + 1; k < 4; k++)
                 if (v[k] == v[i]) return dd_fail(t, DD_ERR_INTERNAL, "cell %u repeats vertex %u", c, v[i]);
         }
@@ -54,19 +54,20 @@ dd_status dd_check(dd_tri *t)
         }
         if (ninf == 0 && dd_orient3d(&t->pred, dd_pt(t, v[0]), dd_pt(t, v[1]),
                                      dd_pt(t, v[2]), dd_pt(t, v[3])) <= 0)
-            return dd_fail(t, DD_ERR_INTERNAL, "cell %u (%u %u %u %u) is not positively oriented",
-                           c, v[0], v[1], v[2], v[3]);
+            return dd_fail(t, DD_ERR_INTERNAL, "cell %u (points %d %d %d %d) is not positively oriented",
+                           c, dd_input_index(t, v[0]), dd_input_index(t, v[1]),
+                           dd_input_index(t, v[2]), dd_input_index(t, v[3]));
     }
     if (live != t->nlive || finite != t->nfinite)
         return dd_fail(t, DD_ERR_INTERNAL, "cell counts wrong: %zu live (recorded %u), %zu finite (recorded %u)",
                        live, t->nlive, finite, t->nfinite);
     uint32_t nv = 0;
-    for (uint32_t v = 0; v < t->np; v++) {
+    for (uint32_t v = 0; v < t->nvid; v++) {
         uint32_t c = t->vcell[v];
         if (c == DD_NONE) continue;
         nv++;
         if (c >= t->ncell || t->tv[4 * (size_t)c] == DD_DEAD || dd_index_of(t, c, v) < 0)
-            return dd_fail(t, DD_ERR_INTERNAL, "vertex %u: its cell link %u does not contain it", v, c);
+            return dd_fail(t, DD_ERR_INTERNAL, "point %d: its cell link %u does not contain it", dd_input_index(t, v), c);
     }
     if (nv != t->nvert)
         return dd_fail(t, DD_ERR_INTERNAL, "vertex count wrong: %u found, %u recorded", nv, t->nvert);
@@ -82,8 +83,8 @@ dd_status dd_check(dd_tri *t)
             if (w == DD_INF) continue;
             if (dd_cell_conflict(t, c, dd_pt(t, w)))
                 return dd_fail(t, DD_ERR_INTERNAL,
-                               "facet %u of cell %u is not locally Delaunay: vertex %u is in conflict",
-                               i, c, w);
+                               "facet %u of cell %u is not locally Delaunay: point %d is in conflict",
+                               i, c, dd_input_index(t, w));
         }
     }
     return DD_OK;

@@ -48,12 +48,13 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     uint32_t cap = np < 16 ? 16 : np;
     t->xyz = malloc(3 * (size_t)cap * sizeof *t->xyz);
     t->vcell = malloc((size_t)cap * sizeof *t->vcell);
-    t->alias = malloc((size_t)cap * sizeof *t->alias);
-    if (!t->xyz || !t->vcell || !t->alias) {
-        free(t->xyz); free(t->vcell); free(t->alias); free(t);
+    t->v2in = malloc((size_t)cap * sizeof *t->v2in);
+    t->in2v = malloc((size_t)cap * sizeof *t->in2v);
+    if (!t->xyz || !t->vcell || !t->v2in || !t->in2v) {
+        free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); free(t);
         return DD_ERR_NOMEM;
     }
-    t->cap_p = cap;
+    t->cap_v = t->cap_in = cap;
     t->free_head = DD_NONE;
     t->inf_cell = DD_NONE;
     t->hint = DD_NONE;
@@ -66,9 +67,10 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
 void dd_free(dd_tri *t)
 {
     if (!t) return;
-    free(t->xyz); free(t->vcell); free(t->alias);
+    free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v);
     free(t->tv); free(t->tn); free(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
+    free(t->ehash);
     dd_pred_clear(&t->pred);
     free(t);
 }
@@ -78,11 +80,8 @@ void dd_free(dd_tri *t)
 dd_status dd_reserve_cells(dd_tri *t, uint32_t k)
 {
     /* Cells on the free list count as room. */
-    uint32_t onfree = 0;
-    for (uint32_t c = t->free_head; c != DD_NONE && onfree < k; c = t->tn[4 * (size_t)c])
-        onfree++;
-    if (onfree >= k) return DD_OK;
-    uint64_t need = (uint64_t)t->ncell + (k - onfree);
+    if (t->nfree >= k) return DD_OK;
+    uint64_t need = (uint64_t)t->ncell + (k - t->nfree);
     if (need <= t->cap_c) return DD_OK;
     if (need > (UINT32_MAX - 8) / 4) return DD_ERR_NOMEM;
     uint64_t cap = t->cap_c ? t->cap_c : 64;
@@ -108,6 +107,7 @@ uint32_t dd_new_cell(dd_tri *t)
     if (t->free_head != DD_NONE) {
         c = t->free_head;
         t->free_head = t->tn[4 * (size_t)c];
+        t->nfree--;
     } else {
         c = t->ncell++;
     }
@@ -122,6 +122,7 @@ void dd_kill_cell(dd_tri *t, uint32_t c)
     t->tv[4 * (size_t)c] = DD_DEAD;
     t->tn[4 * (size_t)c] = t->free_head;
     t->free_head = c;
+    t->nfree++;
     t->nlive--;
 }
 
@@ -211,54 +212,85 @@ static dd_status find_conflicts(dd_tri *t, const double *p, uint32_t c0, uint32_
     return s;
 }
 
-/* Replaces the marked conflict cells (stamp == ep) by the star of vertex v
- * over the boundary facets.  Rooms for the new cells must be reserved.     */
-static void fill_star(dd_tri *t, uint32_t v, uint32_t ep)
+/* Makes sure the edge hash has at least 4 * nfacets slots (load <= 3/8
+ * for the 3/2 * nfacets edges of a star) and starts a new generation.     */
+static dd_status reserve_edge_hash(dd_tri *t, size_t nfacets)
 {
-    /* 1. One new cell per boundary facet: the conflict cell's vertices with
-     *    the one opposite the facet replaced by v.  Glue it to the outside
-     *    cell, then point the old facet at the new cell so the rotation in
-     *    step 2 can find it.                                               */
-    for (size_t b = 0; b < t->boundary.n; b++) {
-        uint32_t f = t->boundary.a[b], c = f >> 2, i = f & 3;
-        uint32_t n = dd_new_cell(t);
-        for (uint32_t k = 0; k < 4; k++) {
-            t->tv[4 * (size_t)n + k] = k == i ? v : t->tv[4 * (size_t)c + k];
-            t->tn[4 * (size_t)n + k] = DD_NONE;
-        }
-        dd_glue(t, 4 * n + i, t->tn[f]);
-        t->tn[f] = 4 * n + i;
+    size_t want = 64;
+    while (want < 4 * nfacets) want *= 2;
+    if (want > t->ehash_cap) {
+        dd_edge_slot *h = calloc(want, sizeof *h);
+        if (!h) return DD_ERR_NOMEM;
+        free(t->ehash);
+        t->ehash = h;
+        t->ehash_cap = (uint32_t)want;
+        t->ehash_gen = 0;
     }
-    /* 2. Glue the new cells to each other: the neighbour of new cell n
-     *    (from conflict facet c,i) across its facet j != i holds v and the
-     *    edge e = tv(c) minus {tv[c,i], tv[c,j]}.  Turn around e through
-     *    conflict cells until a boundary facet: its new cell is the one.   */
-    for (size_t b = 0; b < t->boundary.n; b++) {
-        uint32_t f = t->boundary.a[b], c = f >> 2, i = f & 3;
-        uint32_t n = t->tn[f] >> 2;
+    if (++t->ehash_gen == 0) {            /* wrapped: clear once */
+        memset(t->ehash, 0, t->ehash_cap * sizeof *t->ehash);
+        t->ehash_gen = 1;
+    }
+    return DD_OK;
+}
+
+/* Glues the facets of the new cells that contain vertex v: such a facet
+ * (cell n, opposite position j) holds v and an edge ab; the other facet
+ * holding v and ab is its neighbour.  Matched through the edge hash.     */
+static void glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v)
+{
+    /* edge_of[i][j]: the two positions other than i and j (i != j). */
+    static const uint8_t edge_of[4][4][2] = {
+        {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
+        {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+    uint32_t mask = t->ehash_cap - 1, gen = t->ehash_gen;
+    dd_edge_slot *hash = t->ehash;
+    for (size_t k = 0; k < ncells; k++) {
+        uint32_t n = cells[k];
+        const uint32_t *w = t->tv + 4 * (size_t)n;
+        uint32_t i = (uint32_t)dd_index_of(t, n, v);
         for (uint32_t j = 0; j < 4; j++) {
-            if (j == i || t->tn[4 * (size_t)n + j] != DD_NONE) continue;
-            uint32_t cur = c, fin = i, fout = j;
-            for (;;) {
-                uint32_t x = t->tn[4 * (size_t)cur + fout], nb = x >> 2;
-                if (t->stamp[nb] != ep) {            /* nb is a new cell */
-                    dd_glue(t, 4 * n + j, 4 * nb + fin);
+            if (j == i) continue;
+            uint32_t a = w[edge_of[i][j][0]], b = w[edge_of[i][j][1]];
+            uint64_t key = a < b ? ((uint64_t)a << 32 | b) : ((uint64_t)b << 32 | a);
+            uint32_t h = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+            for (;; h = (h + 1) & mask) {
+                dd_edge_slot *e = &hash[h];
+                if (e->gen != gen) {
+                    e->gen = gen; e->key = key; e->facet = 4 * n + j;
                     break;
                 }
-                uint32_t e0 = 0;
-                while (e0 == fin || e0 == fout) e0++;
-                uint32_t e1 = 6 - fin - fout - e0;
-                int p0 = dd_index_of(t, nb, t->tv[4 * (size_t)cur + e0]);
-                int p1 = dd_index_of(t, nb, t->tv[4 * (size_t)cur + e1]);
-                fin = x & 3;
-                fout = 6 - fin - (uint32_t)p0 - (uint32_t)p1;
-                cur = nb;
+                if (e->key == key && e->facet != DD_NONE) {
+                    dd_glue(t, 4 * n + j, e->facet);
+                    e->facet = DD_NONE;          /* tombstone: edge done */
+                    break;
+                }
             }
         }
     }
-    /* 3. Vertex links, then recycle the conflict cells. */
+}
+
+/* Replaces the marked conflict cells (stamp == ep) by the star of vertex v
+ * over the boundary facets.  Room for the new cells and the edge hash must
+ * be reserved: nothing here can fail.                                     */
+static void fill_star(dd_tri *t, uint32_t v)
+{
+    /* One new cell per boundary facet: the conflict cell's vertices with the
+     * one opposite the facet replaced by v, glued to the outside cell.  The
+     * boundary list then holds the new cells.                              */
     for (size_t b = 0; b < t->boundary.n; b++) {
-        uint32_t n = t->tn[t->boundary.a[b]] >> 2;
+        uint32_t f = t->boundary.a[b], c = f >> 2, i = f & 3;
+        uint32_t n = dd_new_cell(t);
+        const uint32_t *src = t->tv + 4 * (size_t)c;
+        uint32_t *dst = t->tv + 4 * (size_t)n;
+        for (uint32_t k = 0; k < 4; k++) dst[k] = src[k];
+        dst[i] = v;
+        dd_glue(t, 4 * n + i, t->tn[f]);
+        t->boundary.a[b] = n;
+    }
+    glue_new_cells(t, t->boundary.a, t->boundary.n, v);
+    /* Vertex links, then recycle the conflict cells. */
+    for (size_t b = 0; b < t->boundary.n; b++) {
+        uint32_t n = t->boundary.a[b];
         int inf = 0;
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t w = t->tv[4 * (size_t)n + k];
@@ -266,8 +298,8 @@ static void fill_star(dd_tri *t, uint32_t v, uint32_t ep)
             else t->vcell[w] = n;
         }
         if (!inf) t->nfinite++;
-        t->hint = n;
     }
+    if (t->boundary.n) t->hint = t->boundary.a[t->boundary.n - 1];
     for (size_t k = 0; k < t->conflict.n; k++) {
         uint32_t c = t->conflict.a[k];
         if (!dd_is_infinite_cell(t, c)) t->nfinite--;
@@ -286,8 +318,9 @@ dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
     uint32_t ep = dd_new_epoch(t, 2);
     s = find_conflicts(t, p, c0, ep);
     if (s == DD_OK) s = dd_reserve_cells(t, (uint32_t)t->boundary.n);
-    if (s != DD_OK) return dd_fail(t, s, "out of memory inserting vertex %u", v);
-    fill_star(t, v, ep);
+    if (s == DD_OK) s = reserve_edge_hash(t, t->boundary.n);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory inserting point %u", t->v2in[v]);
+    fill_star(t, v);
     t->nvert++;
     return DD_OK;
 }

@@ -22,9 +22,13 @@
  * iff stamp[t] equals the pass's epoch.  Passes never clear marks: they
  * take fresh epochs (dd_new_epoch), O(1).
  *
- * Vertices are input indices.  vcell[v] is a live cell containing v, or
- * DD_NONE when v is not a vertex (a duplicate, deleted, or not yet
- * inserted).  inf_cell is a live infinite cell.
+ * Vertices.  Inside the engine a vertex is a vertex id: its position in
+ * insertion order (BRIO + Hilbert), so that vertices close in space are
+ * close in memory.  The public API speaks input indices; v2in and in2v
+ * translate (a duplicate input maps to the id of its first occurrence).
+ * vcell[v] is a live cell containing vertex v, or DD_NONE when v is not in
+ * the triangulation (deleted, or not yet inserted).  inf_cell is a live
+ * infinite cell.
  */
 #ifndef DD_MESH_H
 #define DD_MESH_H
@@ -41,6 +45,13 @@
 /* Facet i's vertex positions, ordered as described above (same as the
  * order CGAL's side_of_sphere uses for an infinite vertex at i).         */
 static const int dd_facet[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
+
+/* A slot of the edge hash used to glue the cells of a star together. */
+typedef struct dd_edge_slot {
+    uint64_t key;      /* (min vertex << 32) | max vertex                 */
+    uint32_t facet;    /* 4c+j waiting for its partner                   */
+    uint32_t gen;      /* slot is used iff gen == t->ehash_gen           */
+} dd_edge_slot;
 
 /* A growable array of uint32_t (scratch; reused, never shrunk). */
 typedef struct dd_vec {
@@ -61,12 +72,15 @@ static inline dd_status dd_vec_push(dd_vec *v, uint32_t x)
 void dd_vec_free(dd_vec *v);
 
 struct dd_tri {
-    /* points and vertices, indexed by input index */
+    /* vertices, indexed by vertex id */
     double *xyz;
-    uint32_t np, cap_p;
     uint32_t *vcell;
-    uint32_t *alias;          /* input index -> kept vertex              */
-    uint32_t nvert, ndup;
+    uint32_t *v2in;           /* vertex id -> input index                */
+    uint32_t nvid, cap_v;     /* vertex ids in use, capacity             */
+    /* input points, indexed by input index */
+    uint32_t *in2v;           /* input index -> vertex id                */
+    uint32_t np, cap_in;
+    uint32_t nvert, ndup;     /* vertices in DT now, duplicates merged   */
     uint32_t inf_cell;
 
     /* cells */
@@ -74,6 +88,7 @@ struct dd_tri {
     uint32_t ncell, cap_c;    /* high-water mark and capacity            */
     uint32_t nlive, nfinite;
     uint32_t free_head;       /* free list through tn[4t], DD_NONE = empty */
+    uint32_t nfree;           /* cells on the free list                  */
     uint32_t epoch;
     uint32_t hint;            /* where the next point location starts    */
 
@@ -83,6 +98,8 @@ struct dd_tri {
 
     /* scratch for insertion */
     dd_vec stack, conflict, boundary;
+    struct dd_edge_slot *ehash;   /* edge -> facet, see glue_new_cells   */
+    uint32_t ehash_cap, ehash_gen;
 
     char err[256];
 };
@@ -147,6 +164,12 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
 /* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
  * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+
+/* Input index of vertex v, as the public API reports it (-1 for DD_INF). */
+static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
+{
+    return v == DD_INF ? -1 : (int32_t)t->v2in[v];
+}
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);

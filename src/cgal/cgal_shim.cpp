@@ -293,7 +293,7 @@ int remove_rnd(Main_dt &dt, Vertex_handle v, uint64_t seed)
             const long hf = find_hole_facet(
                 facets, sorted_key(mv[(f + 1) & 3], mv[(f + 2) & 3],
                                    mv[(f + 3) & 3]));
-            g[f] = hf;
+            g[static_cast<std::size_t>(f)] = hf;
             if (hf >= 0) {
                 if (facets[static_cast<std::size_t>(hf)].matched++ != 0)
                     return 1;
@@ -324,7 +324,7 @@ int remove_rnd(Main_dt &dt, Vertex_handle v, uint64_t seed)
     for (std::size_t i = 0; i < fill.size(); i++) {
         const Tmp_dt::Cell_handle t = fill[i];
         for (int f = 0; f < 4; f++) {
-            const long hf = glue[i][f];
+            const long hf = glue[i][static_cast<std::size_t>(f)];
             if (hf >= 0) {
                 const Hole_facet &b = facets[static_cast<std::size_t>(hf)];
                 made[i]->set_neighbor(f, b.out);
@@ -440,8 +440,8 @@ int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
         for (Main_dt::All_cells_iterator it = dt.all_cells_begin();
              it != dt.all_cells_end(); ++it) {
             std::array<int32_t, 4> t;
-            for (int k = 0; k < 4; k++) {
-                const Vertex_handle w = it->vertex(k);
+            for (std::size_t k = 0; k < 4; k++) {
+                const Vertex_handle w = it->vertex(static_cast<int>(k));
                 t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
             }
             std::sort(t.begin(), t.end());
