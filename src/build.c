@@ -171,49 +171,6 @@ static dd_status pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint3
     return DD_OK;
 }
 
-/* Five cells: the tetrahedron and one infinite cell on each of its facets. */
-static void make_first_cells(dd_tri *t, uint32_t v[4])
-{
-    if (dd_orient3d(&t->pred, dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]),
-                    dd_pt(t, v[3])) < 0) {
-        uint32_t s = v[0]; v[0] = v[1]; v[1] = s;
-    }
-    uint32_t c = dd_new_cell(t);
-    for (int k = 0; k < 4; k++) t->tv[4 * c + (uint32_t)k] = v[k];
-    uint32_t inf[4];
-    for (int i = 0; i < 4; i++) {
-        /* The infinite cell across facet i: same vertices with v[i] replaced
-         * by DD_INF and two others swapped, so it is oriented as required
-         * (DD_INF on the far side of facet i from v[i]).                   */
-        uint32_t d = inf[i] = dd_new_cell(t);
-        uint32_t w[4] = {v[0], v[1], v[2], v[3]};
-        w[i] = DD_INF;
-        int a = dd_facet[i][0], b = dd_facet[i][1];
-        uint32_t s = w[a]; w[a] = w[b]; w[b] = s;
-        for (int k = 0; k < 4; k++) t->tv[4 * d + (uint32_t)k] = w[k];
-        dd_glue(t, 4 * c + (uint32_t)i, 4 * d + (uint32_t)i);
-    }
-    /* Infinite cells meet along the infinite facets: cell across facet i,
-     * its facet opposite vertex x (x != INF) is shared with the infinite
-     * cell across the facet opposite x.                                    */
-    for (int i = 0; i < 4; i++)
-        for (int k = 0; k < 4; k++) {
-            uint32_t d = inf[i], x = t->tv[4 * d + (uint32_t)k];
-            if (x == DD_INF) continue;
-            int xi = -1;
-            for (int m = 0; m < 4; m++) if (v[m] == x) xi = m;
-            uint32_t e = inf[xi];
-            /* facet of e opposite v[i] */
-            int j = dd_index_of(t, e, v[i]);
-            t->tn[4 * d + (uint32_t)k] = 4 * e + (uint32_t)j;
-        }
-    for (int k = 0; k < 4; k++) t->vcell[v[k]] = c;
-    t->inf_cell = inf[0];
-    t->hint = c;
-    t->nfinite = 1;
-    t->nvert = 4;
-}
-
 /* ---- dd_create ------------------------------------------------------------ */
 
 static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
@@ -264,7 +221,7 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     for (uint32_t i = 0; i < n; i++) t->in2v[i] = t->in2v[first[i]];
     free(ids);
     uint32_t first4[4] = {0, 1, 2, 3};
-    make_first_cells(t, first4);
+    dd_make_first_cells(t, first4);
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_vertex(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
     *out = t;

@@ -87,6 +87,35 @@ uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets);
  * of finite cells, and the perturbed empty-sphere test on every facet.   */
 dd_status dd_check(dd_tri *t);
 
+/* ---- deletion (paper: DELETEVERTEX) ------------------------------------ */
+
+/* Deletes input vertex v with the named strategy (NULL = the default, the
+ * fastest correct one).  The result is DT(S minus v), identical to CGAL's.
+ * Refused with DD_ERR_DIMENSION when fewer than 4 or only coplanar points
+ * would remain; DD_ERR_UNKNOWN_VERTEX / DD_ERR_UNKNOWN_VARIANT for bad
+ * names.  On any failure the triangulation is unchanged.                 */
+dd_status dd_delete(dd_tri *t, uint32_t v, const char *variant);
+
+/* Inserts a new point; *index receives its input index (dd_num_input()
+ * before the call).  DD_ERR_DUPLICATE if it equals a vertex.             */
+dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
+/* Puts back input vertex v after dd_delete (same index, same point). */
+dd_status dd_reinsert(dd_tri *t, uint32_t v);
+
+/* The strategies, in registry order (i = 0, 1, ... until NULL). */
+const char *dd_variant_name(size_t i);
+const char *dd_variant_description(size_t i);
+
+/* What the last dd_delete did.  Phase times only in counting builds. */
+typedef struct dd_delete_stats {
+    uint32_t degree;          /* neighbours, the infinite vertex included  */
+    int on_hull;
+    uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
+    uint64_t fallbacks;       /* sampling fallbacks of guided strategies   */
+    double link_us, locate_us, conflict_us, sew_us;
+} dd_delete_stats;
+void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *s);
+
 /* Statistics kept by counting builds (-DDD_COUNTERS); zero otherwise. */
 typedef struct dd_counters {
     uint64_t orient_calls, orient_exact;

@@ -67,7 +67,8 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
 void dd_free(dd_tri *t)
 {
     if (!t) return;
-    free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v);
+    if (!t->borrowed) { free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); }
+    dd_delete_ctx_free(t->del);
     free(t->tv); free(t->tn); free(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
@@ -126,16 +127,65 @@ void dd_kill_cell(dd_tri *t, uint32_t c)
     t->nlive--;
 }
 
+/* Five cells: the tetrahedron and one infinite cell on each of its facets. */
+void dd_make_first_cells(dd_tri *t, uint32_t v[4])
+{
+    if (dd_orient3d(&t->pred, dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]),
+                    dd_pt(t, v[3])) < 0) {
+        uint32_t s = v[0]; v[0] = v[1]; v[1] = s;
+    }
+    uint32_t c = dd_new_cell(t);
+    for (int k = 0; k < 4; k++) t->tv[4 * c + (uint32_t)k] = v[k];
+    uint32_t inf[4];
+    for (int i = 0; i < 4; i++) {
+        /* The infinite cell across facet i: same vertices with v[i] replaced
+         * by DD_INF and two others swapped, so it is oriented as required
+         * (DD_INF on the far side of facet i from v[i]).                   */
+        uint32_t d = inf[i] = dd_new_cell(t);
+        uint32_t w[4] = {v[0], v[1], v[2], v[3]};
+        w[i] = DD_INF;
+        int a = dd_facet[i][0], b = dd_facet[i][1];
+        uint32_t s = w[a]; w[a] = w[b]; w[b] = s;
+        for (int k = 0; k < 4; k++) t->tv[4 * d + (uint32_t)k] = w[k];
+        dd_glue(t, 4 * c + (uint32_t)i, 4 * d + (uint32_t)i);
+    }
+    /* Infinite cells meet along the infinite facets: cell across facet i,
+     * its facet opposite vertex x (x != INF) is shared with the infinite
+     * cell across the facet opposite x.                                    */
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 4; k++) {
+            uint32_t d = inf[i], x = t->tv[4 * d + (uint32_t)k];
+            if (x == DD_INF) continue;
+            int xi = -1;
+            for (int m = 0; m < 4; m++) if (v[m] == x) xi = m;
+            uint32_t e = inf[xi];
+            /* facet of e opposite v[i] */
+            int j = dd_index_of(t, e, v[i]);
+            t->tn[4 * d + (uint32_t)k] = 4 * e + (uint32_t)j;
+        }
+    for (int k = 0; k < 4; k++) t->vcell[v[k]] = c;
+    t->inf_cell = inf[0];
+    t->hint = c;
+    t->nfinite = 1;
+    t->nvert = 4;
+}
+
 /* ---- predicates on cells ------------------------------------------------- */
 
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 {
     const uint32_t *v = t->tv + 4 * (size_t)c;
     const double *q[4];
-    int k = -1;
+    int k = -1, kd = -1;
     for (int i = 0; i < 4; i++) {
         if (v[i] == DD_INF) { k = i; q[i] = NULL; }
+        else if (v[i] == DD_QD) { kd = i; q[i] = t->qd_point; }
         else q[i] = dd_pt(t, v[i]);
+    }
+    if (kd >= 0) {               /* dummy cell: swap the first two others */
+        int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
+        const double *s = q[a]; q[a] = q[b]; q[b] = s;
+        if (k == a) k = b; else if (k == b) k = a;
     }
     if (k < 0) return dd_insphere_perturbed(&t->pred, q[0], q[1], q[2], q[3], p) > 0;
     return dd_inf_conflict(&t->pred, q, k, p) > 0;
@@ -156,20 +206,21 @@ static int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
  * whose closure contains p, or an infinite cell whose hull facet p sees
  * strictly.  Each step crosses a facet whose plane strictly separates the
  * cell from p; the facet tried first is random, so the walk cannot cycle.  */
-static dd_status locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
+dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
 {
     uint32_t c = start;
     uint32_t from = DD_NONE;            /* facet index we entered through */
     uint64_t steps = 0, limit = 16 + 4 * (uint64_t)t->ncell;
-    if (dd_is_infinite_cell(t, c)) {    /* start from its finite neighbour */
+    if (dd_is_outer_cell(t, c)) {       /* start from its finite neighbour */
         int k = dd_index_of(t, c, DD_INF);
+        if (k < 0) k = dd_index_of(t, c, DD_QD);
         uint32_t f = t->tn[4 * (size_t)c + (uint32_t)k];
         c = f >> 2;             /* nothing known about p yet: from stays */
     }
     for (;;) {
         if (++steps > limit)
             return dd_fail(t, DD_ERR_INTERNAL, "point location did not terminate");
-        if (dd_is_infinite_cell(t, c)) { *out = c; break; }
+        if (dd_is_outer_cell(t, c)) { *out = c; break; }
         uint32_t r = dd_rand(t) & 3, next = DD_NONE;
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t i = (r + k) & 3;
@@ -189,8 +240,9 @@ static dd_status locate(dd_tri *t, const double *p, uint32_t start, uint32_t *ou
 /* Marks the conflict region of p reachable from c0 (stamp == ep) and lists
  * its boundary facets (4c+i, c in conflict, its neighbour not).  Cells found
  * not in conflict get stamp ep+1 so they are tested once.                  */
-static dd_status find_conflicts(dd_tri *t, const double *p, uint32_t c0, uint32_t ep)
+dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
 {
+    uint32_t ep = dd_new_epoch(t, 2);
     t->stack.n = t->conflict.n = t->boundary.n = 0;
     t->stamp[c0] = ep;
     dd_status s = dd_vec_push(&t->stack, c0);
@@ -214,7 +266,7 @@ static dd_status find_conflicts(dd_tri *t, const double *p, uint32_t c0, uint32_
 
 /* Makes sure the edge hash has at least 4 * nfacets slots (load <= 3/8
  * for the 3/2 * nfacets edges of a star) and starts a new generation.     */
-static dd_status reserve_edge_hash(dd_tri *t, size_t nfacets)
+dd_status dd_reserve_edge_hash(dd_tri *t, size_t nfacets)
 {
     size_t want = 64;
     while (want < 4 * nfacets) want *= 2;
@@ -236,7 +288,7 @@ static dd_status reserve_edge_hash(dd_tri *t, size_t nfacets)
 /* Glues the facets of the new cells that contain vertex v: such a facet
  * (cell n, opposite position j) holds v and an edge ab; the other facet
  * holding v and ab is its neighbour.  Matched through the edge hash.     */
-static void glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v)
+void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v)
 {
     /* edge_of[i][j]: the two positions other than i and j (i != j). */
     static const uint8_t edge_of[4][4][2] = {
@@ -272,7 +324,7 @@ static void glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint
 /* Replaces the marked conflict cells (stamp == ep) by the star of vertex v
  * over the boundary facets.  Room for the new cells and the edge hash must
  * be reserved: nothing here can fail.                                     */
-static void fill_star(dd_tri *t, uint32_t v)
+void dd_fill_star(dd_tri *t, uint32_t v)
 {
     /* One new cell per boundary facet: the conflict cell's vertices with the
      * one opposite the facet replaced by v, glued to the outside cell.  The
@@ -287,24 +339,39 @@ static void fill_star(dd_tri *t, uint32_t v)
         dd_glue(t, 4 * n + i, t->tn[f]);
         t->boundary.a[b] = n;
     }
-    glue_new_cells(t, t->boundary.a, t->boundary.n, v);
+    dd_glue_new_cells(t, t->boundary.a, t->boundary.n, v);
     /* Vertex links, then recycle the conflict cells. */
     for (size_t b = 0; b < t->boundary.n; b++) {
         uint32_t n = t->boundary.a[b];
-        int inf = 0;
+        int outer = 0;
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t w = t->tv[4 * (size_t)n + k];
-            if (w == DD_INF) { t->inf_cell = n; inf = 1; }
+            if (w == DD_INF) { t->inf_cell = n; outer = 1; }
+            else if (w == DD_QD) outer = 1;
             else t->vcell[w] = n;
         }
-        if (!inf) t->nfinite++;
+        if (!outer) t->nfinite++;
     }
     if (t->boundary.n) t->hint = t->boundary.a[t->boundary.n - 1];
     for (size_t k = 0; k < t->conflict.n; k++) {
         uint32_t c = t->conflict.a[k];
-        if (!dd_is_infinite_cell(t, c)) t->nfinite--;
+        if (!dd_is_outer_cell(t, c)) t->nfinite--;
         dd_kill_cell(t, c);
     }
+}
+
+dd_status dd_reserve_star(dd_tri *t)
+{
+    dd_status s = dd_reserve_cells(t, (uint32_t)t->boundary.n);
+    if (s == DD_OK) s = dd_reserve_edge_hash(t, t->boundary.n);
+    return s;
+}
+
+void dd_clear_cells(dd_tri *t)
+{
+    t->ncell = t->nlive = t->nfinite = t->nfree = 0;
+    t->free_head = DD_NONE;
+    t->inf_cell = t->hint = DD_NONE;
 }
 
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
@@ -313,14 +380,18 @@ dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
     uint32_t start = t->hint;
     if (start == DD_NONE || t->tv[4 * (size_t)start] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
-    dd_status s = locate(t, p, start, &c0);
+    dd_status s = dd_locate(t, p, start, &c0);
     if (s != DD_OK) return s;
-    uint32_t ep = dd_new_epoch(t, 2);
-    s = find_conflicts(t, p, c0, ep);
-    if (s == DD_OK) s = dd_reserve_cells(t, (uint32_t)t->boundary.n);
-    if (s == DD_OK) s = reserve_edge_hash(t, t->boundary.n);
+    if (!dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
+        for (uint32_t k = 0; k < 4; k++) {
+            uint32_t w = t->tv[4 * (size_t)c0 + k];
+            if (dd_lex_cmp(dd_pt(t, w), p) == 0)
+                return dd_fail(t, DD_ERR_DUPLICATE, "point %u equals vertex %u", t->v2in[v], t->v2in[w]);
+        }
+    s = dd_find_conflicts(t, p, c0);
+    if (s == DD_OK) s = dd_reserve_star(t);
     if (s != DD_OK) return dd_fail(t, s, "out of memory inserting point %u", t->v2in[v]);
-    fill_star(t, v);
+    dd_fill_star(t, v);
     t->nvert++;
     return DD_OK;
 }

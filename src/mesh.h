@@ -41,6 +41,8 @@
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
 #define DD_DEAD (UINT32_MAX - 1)    /* tv[4t] of a dead cell               */
 #define DD_NONE UINT32_MAX          /* no cell / no facet                  */
+#define DD_QD   (UINT32_MAX - 2)    /* the dummy vertex q-boundary of a
+                                       conflict DT (delete.h)              */
 
 /* Facet i's vertex positions, ordered as described above (same as the
  * order CGAL's side_of_sphere uses for an infinite vertex at i).         */
@@ -82,6 +84,8 @@ struct dd_tri {
     uint32_t np, cap_in;
     uint32_t nvert, ndup;     /* vertices in DT now, duplicates merged   */
     uint32_t inf_cell;
+    const double *qd_point;   /* conflict DT only: q, see dd_cell_conflict */
+    int borrowed;             /* xyz, vcell, v2in belong to another dd_tri */
 
     /* cells */
     uint32_t *tv, *tn, *stamp;
@@ -95,6 +99,8 @@ struct dd_tri {
     uint64_t rng;             /* xorshift state for walks                */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
+
+    struct dd_del *del;       /* deletion context (delete.c), lazily made */
 
     /* scratch for insertion */
     dd_vec stack, conflict, boundary;
@@ -119,6 +125,15 @@ static inline int dd_is_infinite_cell(const dd_tri *t, uint32_t c)
     return v[0] == DD_INF || v[1] == DD_INF || v[2] == DD_INF || v[3] == DD_INF;
 }
 
+/* A cell with DD_INF or DD_QD: not a finite tetrahedron of the domain. */
+static inline int dd_is_outer_cell(const dd_tri *t, uint32_t c)
+{
+    const uint32_t *v = t->tv + 4 * (size_t)c;
+    for (int i = 0; i < 4; i++)
+        if (v[i] >= DD_QD) return 1;
+    return 0;
+}
+
 /* Position of vertex x in cell c, or -1. */
 static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
 {
@@ -126,6 +141,8 @@ static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
     return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : v[3] == x ? 3 : -1;
 }
 
+/* Reserves `step` fresh mark values for a pass and returns the first; the
+ * pass may use first .. first + step - 1.                                */
 static inline uint32_t dd_new_epoch(dd_tri *t, uint32_t step)
 {
     if (t->epoch > UINT32_MAX - 4 * step) {   /* wrap: clear once */
@@ -133,7 +150,7 @@ static inline uint32_t dd_new_epoch(dd_tri *t, uint32_t step)
         t->epoch = 0;
     }
     t->epoch += step;
-    return t->epoch;
+    return t->epoch - step + 1;
 }
 
 static inline uint32_t dd_rand(dd_tri *t)
@@ -158,18 +175,50 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
 
 /* Conflict test of the perturbed Delaunay triangulation: 1 when point p
  * lies inside the (perturbed) circumsphere of cell c, CGAL's rule for
- * infinite cells included.                                               */
+ * infinite cells included.  In a conflict DT, a cell with the dummy vertex
+ * DD_QD at position k is tested as the cell with q in place of DD_QD and
+ * two other vertices swapped (paper 4.1: (a,b,c,q_d) is tested as the
+ * ordinary cell (b,a,c,q)).                                               */
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+
+/* Visibility walk from cell `start` towards p; stops in a finite cell whose
+ * closure holds p, or in the first outer cell entered (which p sees).     */
+dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out);
+
+/* Bowyer-Watson in three steps, shared by construction and deletion:
+ * dd_find_conflicts marks the conflict region of p reachable from c0 (which
+ * must be in conflict) in t->conflict and its boundary facets in
+ * t->boundary; dd_reserve_star makes room so that dd_fill_star, which
+ * replaces the region by the star of vertex v, cannot fail.               */
+dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0);
+dd_status dd_reserve_star(dd_tri *t);
+void dd_fill_star(dd_tri *t, uint32_t v);
 
 /* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
  * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+
+/* The first tetrahedron v[0..3] (any orientation) and its four infinite
+ * cells, in an empty t.  Room for 5 cells must be reserved.              */
+void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
+
+/* Empties the cell arrays (keeps their capacity), O(1). */
+void dd_clear_cells(dd_tri *t);
+
+/* Glues the facets through vertex v of the given new cells to each other,
+ * by matching their edges in the edge hash (reserve it first with
+ * dd_reserve_edge_hash for at least ncells cells).  Facets without a
+ * partner keep tn == DD_NONE.                                            */
+dd_status dd_reserve_edge_hash(dd_tri *t, size_t ncells);
+void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v);
 
 /* Input index of vertex v, as the public API reports it (-1 for DD_INF). */
 static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
 {
     return v == DD_INF ? -1 : (int32_t)t->v2in[v];
 }
+
+void dd_delete_ctx_free(struct dd_del *d);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);

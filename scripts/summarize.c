@@ -1,0 +1,996 @@
+/*
+ * summarize.c -- turns the bench driver's per-dataset CSVs into the
+ * Markdown summary and the gnuplot data files (DESIGN 10).  Standalone:
+ * libc and libm only, no state outside the context passed first.
+ *
+ *   summarize OUTDIR CSV...
+ *
+ * Input.  Each CSV starts with exactly this header line:
+ *   dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,
+ *   locate_us,conflict_us,sew_us,match
+ * then one row per (deletion, variant).  Fields are separated by commas,
+ * no quoting.  tets_created and the four phase times may be empty
+ * (unknown); every other field is required.  Rows are grouped by the
+ * dataset column (not the file name) and, inside a dataset, over all its
+ * sizes n.  Blank lines are skipped; anything else malformed stops the run
+ * with "FILE:LINE: what" on stderr and exit status 1 (2 for bad usage).
+ *
+ * Degree buckets.  [0,4) [4,8), then two buckets per power of two:
+ * [2^k, 1.5*2^k) and [1.5*2^k, 2^(k+1)) for k >= 3, i.e.
+ *   [8,12) [12,16) [16,24) [24,32) [32,48) [48,64) [64,96) [96,128)
+ *   [128,192) [192,256) [256,384) [384,512) [512,768) [768,1024)
+ *   [1024,1536) [1536,2048) ...
+ * so the width is between a quarter and a half of the lower bound: even on
+ * the log axis, about 5 points per decade of degree.  Empty buckets are
+ * skipped.  A bucket's plotted x is the middle of its integer degrees,
+ * (lo + hi - 1) / 2.
+ *
+ * Statistics.  Quantiles by linear interpolation between order statistics
+ * (Hyndman-Fan type 7, R's and numpy's default): for sorted x[0..m-1] the
+ * p-quantile is x[h] interpolated at h = (m-1)p.  Median p = .5, IQR from
+ * q1 = .25 to q3 = .75.  ratio = cgal median / variant median in the same
+ * bucket of the same dataset (> 1: the variant is faster than CGAL), only
+ * when that bucket has cgal rows.  Phase and tets medians ignore empty
+ * fields.  "All datasets" pools the rows of every dataset per bucket and
+ * variant and applies the same definitions to the pool, except that a
+ * variant's cgal reference is pooled only over the datasets in which the
+ * variant has rows in that bucket.
+ *
+ * Output, all under OUTDIR:
+ *   summary.md              meta.txt's lines, then per dataset: time table
+ *                           (buckets x variants), mismatches, phase split,
+ *                           tets created; then all datasets pooled.
+ *   plotdata/datasets.txt   the datasets of this run, one per line.
+ *   plotdata/D.dat          per dataset D: one gnuplot index block per
+ *                           variant, in column order; each line
+ *                             1 bucket_center 2 median_us 3 q1_us 4 q3_us
+ *                             5 ratio_to_cgal 6 median_tets 7 median_link_us
+ *                             8 median_locate_us 9 median_conflict_us
+ *                             10 median_sew_us 11 bucket_lo 12 bucket_hi
+ *                             13 rows 14 mismatches
+ *                           NaN where a value is unknown.  A "# title: "
+ *                           line opens the file.
+ *   plotdata/D.variants     the variant of each block, one per line.
+ *   plotdata/D.phases       per variant with phase times: variant, median
+ *                           link, locate, conflict, sew, us (all rows).
+ *   plotdata/all-datasets.* the same three files for the pooled rows (the
+ *                           paper's time-vs-degree figure); "all-datasets"
+ *                           is therefore reserved as a dataset name.
+ *
+ * Mismatches (match == 0) are counted per variant and bucket, printed
+ * loudly in summary.md and on stderr; they do not change the exit status
+ * (the summary itself is valid), the bench driver decides about failing.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+#define EXIT_INPUT 1
+#define EXIT_USAGE 2
+
+#define NFIELDS 13
+#define NPHASES 4
+#define ALL_NAME "all-datasets"
+#define MAX_LISTED_MISMATCHES 20
+
+static const char *const csv_header =
+    "dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,"
+    "locate_us,conflict_us,sew_us,match";
+
+/* Column order of the variants known to the paper; others follow, sorted. */
+static const char *const variant_order[] = {
+    "cgal", "cgal-rnd", "sew-full", "dtq-only", "guide-only",
+    "grr-edge", "grr-neighbor", "grr-hashing", "grr-brio"};
+#define NKNOWN (sizeof variant_order / sizeof variant_order[0])
+
+static const char *const phase_name[NPHASES] = {"link", "locate", "conflict", "sew"};
+
+/* Which numeric field of a row a statistic is taken over. */
+enum field { F_US, F_TETS, F_LINK, F_LOCATE, F_CONFLICT, F_SEW };
+
+typedef struct row {
+    size_t ds, var;            /* indices into ctx.datasets / ctx.variants */
+    size_t file;               /* index into argv's CSV list              */
+    long line;                 /* line number in that file                */
+    long long n, vertex;
+    long long degree;
+    int on_hull, match;
+    int bucket;
+    double us, tets;           /* tets NaN when unknown                   */
+    double phase[NPHASES];     /* NaN when unknown                        */
+} row;
+
+typedef struct strtab {
+    char **s;
+    size_t n, cap;
+} strtab;
+
+/* Statistics of one (bucket, variant) cell. */
+typedef struct cell {
+    size_t first, rows;        /* its rows: idx[first .. first+rows-1]    */
+    size_t mismatches, on_hull;
+    double med, q1, q3;        /* of us                                   */
+    double ratio;              /* cgal med / med, NaN without cgal        */
+    double tets;               /* median tets_created, NaN if unknown     */
+    double phase[NPHASES];     /* median phase times, NaN if unknown      */
+} cell;
+
+/* One group of rows (a dataset, or all of them) aggregated. */
+typedef struct table {
+    size_t nvar;               /* columns: variants present, in order     */
+    size_t *var;               /* their ctx.variants indices              */
+    int nbucket;               /* buckets 0..nbucket-1 (some empty)       */
+    size_t *deletions;         /* per bucket: most rows of one variant    */
+    cell *cells;               /* nbucket x nvar                          */
+    size_t rows, total_deletions, on_hull, mismatches;
+    long long *sizes;          /* distinct n, ascending                   */
+    size_t nsizes;
+} table;
+
+typedef struct ctx {
+    const char *outdir;
+    char *const *files;
+    strtab datasets, variants;
+    row *rows;
+    size_t nrows, caprows;
+    size_t *var_rank;          /* column position of each variant         */
+    double *scratch;           /* nrows doubles                           */
+    char err[1024];
+} ctx;
+
+/* ---- errors and memory ---------------------------------------------------- */
+
+static int fail(ctx *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int fail(ctx *c, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->err, sizeof c->err, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+/* Grows *p (elements of size sz) to hold at least need; 0 or -1. */
+static int grow(void **p, size_t *cap, size_t need, size_t sz)
+{
+    if (need <= *cap) return 0;
+    size_t ncap = *cap ? *cap : 16;
+    while (ncap < need) ncap *= 2;
+    void *q = realloc(*p, ncap * sz);
+    if (!q) return -1;
+    *p = q;
+    *cap = ncap;
+    return 0;
+}
+
+/* Index of s in t, adding it if new; (size_t)-1 when out of memory. */
+static size_t intern(strtab *t, const char *s)
+{
+    for (size_t i = 0; i < t->n; i++)
+        if (!strcmp(t->s[i], s)) return i;
+    void *p = t->s;
+    if (grow(&p, &t->cap, t->n + 1, sizeof *t->s)) return (size_t)-1;
+    t->s = p;
+    size_t len = strlen(s);
+    char *copy = malloc(len + 1);
+    if (!copy) return (size_t)-1;
+    memcpy(copy, s, len + 1);
+    t->s[t->n] = copy;
+    return t->n++;
+}
+
+/* ---- degree buckets --------------------------------------------------------- */
+
+/* Bucket index of a degree (see the file top for the boundaries). */
+static int bucket_of(long long d)
+{
+    if (d < 4) return 0;
+    if (d < 8) return 1;
+    int k = 3;
+    while (k < 62 && (d >> (k + 1)) != 0) k++;     /* 2^k <= d < 2^(k+1) */
+    int upper = d >= 3LL << (k - 1);
+    return 2 + 2 * (k - 3) + upper;
+}
+
+static void bucket_bounds(int b, long long *lo, long long *hi)
+{
+    if (b == 0) { *lo = 0; *hi = 4; return; }
+    if (b == 1) { *lo = 4; *hi = 8; return; }
+    int k = 3 + (b - 2) / 2;
+    if ((b - 2) % 2) { *lo = 3LL << (k - 1); *hi = 1LL << (k + 1); }
+    else             { *lo = 1LL << k;       *hi = 3LL << (k - 1); }
+}
+
+static double bucket_center(int b)
+{
+    long long lo, hi;
+    bucket_bounds(b, &lo, &hi);
+    return (double)(lo + hi - 1) / 2.0;
+}
+
+/* ---- CSV parsing -------------------------------------------------------------- */
+
+/* Reads one line into *buf (without the newline or a trailing CR).
+ * Returns 1 on a line, 0 at end of file, -1 on a read error. */
+static int read_line(FILE *f, char **buf, size_t *cap)
+{
+    ssize_t len = getline(buf, cap, f);
+    if (len < 0) return ferror(f) ? -1 : 0;
+    while (len > 0 && ((*buf)[len - 1] == '\n' || (*buf)[len - 1] == '\r'))
+        (*buf)[--len] = '\0';
+    return 1;
+}
+
+static int parse_int(const char *s, long long lo, long long hi, long long *out)
+{
+    if (!*s) return -1;
+    char *end;
+    errno = 0;
+    long long v = strtoll(s, &end, 10);
+    if (errno || *end || v < lo || v > hi) return -1;
+    *out = v;
+    return 0;
+}
+
+/* A finite non-negative number; empty gives NaN when allow_empty. */
+static int parse_time(const char *s, int allow_empty, double *out)
+{
+    if (!*s) {
+        if (!allow_empty) return -1;
+        *out = NAN;
+        return 0;
+    }
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || *end || !isfinite(v) || v < 0) return -1;
+    *out = v;
+    return 0;
+}
+
+static int valid_dataset_name(const char *s)
+{
+    if (!*s || !strcmp(s, ALL_NAME) || s[0] == '.') return 0;
+    for (; *s; s++)
+        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') ||
+              (*s >= '0' && *s <= '9') || *s == '.' || *s == '_' || *s == '-'))
+            return 0;
+    return 1;
+}
+
+/* Printable ASCII without space or the characters that break Markdown
+ * tables, gnuplot strings or the shell: | " ' ` \ */
+static int valid_variant_name(const char *s)
+{
+    if (!*s) return 0;
+    for (; *s; s++)
+        if (*s <= ' ' || *s > '~' || strchr("|\"'`\\", *s)) return 0;
+    return 1;
+}
+
+/* Parses one data line (modified in place) into a new row. */
+static int parse_row(ctx *c, char *line, size_t file, long lineno)
+{
+    const char *where = c->files[file];
+    char *f[NFIELDS];
+    int nf = 0;
+    for (char *p = line;;) {
+        if (nf < NFIELDS) f[nf] = p;
+        nf++;
+        char *comma = strchr(p, ',');
+        if (!comma) break;
+        *comma = '\0';
+        p = comma + 1;
+    }
+    if (nf != NFIELDS)
+        return fail(c, "%s:%ld: expected %d comma-separated fields, got %d",
+                    where, lineno, NFIELDS, nf);
+
+    void *p = c->rows;
+    if (grow(&p, &c->caprows, c->nrows + 1, sizeof *c->rows))
+        return fail(c, "out of memory reading %s", where);
+    c->rows = p;
+    row *r = &c->rows[c->nrows];
+    r->file = file;
+    r->line = lineno;
+
+#define BAD(what, val) fail(c, "%s:%ld: %s must be %s, got \"%s\"", where, lineno, \
+                            what, val, f[col])
+    int col = 0;
+    if (!valid_dataset_name(f[col]))
+        return BAD("dataset", "letters, digits, '.', '_' or '-' (not \"" ALL_NAME "\")");
+    r->ds = intern(&c->datasets, f[col]);
+    col = 1;
+    if (parse_int(f[col], 1, (long long)1 << 53, &r->n)) return BAD("n", "a positive integer");
+    col = 2;
+    if (parse_int(f[col], 0, (long long)1 << 53, &r->vertex))
+        return BAD("vertex", "a non-negative integer");
+    col = 3;
+    if (parse_int(f[col], 0, (long long)1 << 53, &r->degree))
+        return BAD("degree", "a non-negative integer");
+    long long v;
+    col = 4;
+    if (parse_int(f[col], 0, 1, &v)) return BAD("on_hull", "0 or 1");
+    r->on_hull = (int)v;
+    col = 5;
+    if (!valid_variant_name(f[col]))
+        return BAD("variant", "printable, without spaces or | \" ' ` \\");
+    r->var = intern(&c->variants, f[col]);
+    col = 6;
+    if (parse_time(f[col], 0, &r->us)) return BAD("us", "a finite number >= 0");
+    col = 7;
+    if (!*f[col]) r->tets = NAN;
+    else if (parse_int(f[col], 0, (long long)1 << 53, &v))
+        return BAD("tets_created", "empty or a non-negative integer");
+    else r->tets = (double)v;
+    for (int i = 0; i < NPHASES; i++) {
+        col = 8 + i;
+        if (parse_time(f[col], 1, &r->phase[i]))
+            return fail(c, "%s:%ld: %s_us must be empty or a finite number >= 0, got \"%s\"",
+                        where, lineno, phase_name[i], f[col]);
+    }
+    col = 12;
+    if (parse_int(f[col], 0, 1, &v)) return BAD("match", "0 or 1");
+    r->match = (int)v;
+#undef BAD
+    if (r->ds == (size_t)-1 || r->var == (size_t)-1)
+        return fail(c, "out of memory reading %s", where);
+    r->bucket = bucket_of(r->degree);
+    c->nrows++;
+    return 0;
+}
+
+static int load_csv(ctx *c, size_t file)
+{
+    const char *path = c->files[file];
+    FILE *f = fopen(path, "r");
+    if (!f) return fail(c, "cannot open %s: %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t cap = 0;
+    long lineno = 0;
+    int st = 0, got;
+    while ((got = read_line(f, &buf, &cap)) == 1) {
+        lineno++;
+        if (lineno == 1) {
+            if (strcmp(buf, csv_header)) {
+                st = fail(c, "%s:1: header must be exactly \"%s\", got \"%.200s\"",
+                          path, csv_header, buf);
+                break;
+            }
+            continue;
+        }
+        if (!buf[strspn(buf, " \t")]) continue;          /* blank line */
+        if ((st = parse_row(c, buf, file, lineno))) break;
+    }
+    if (!st && got < 0) st = fail(c, "cannot read %s: %s", path, strerror(errno));
+    if (!st && lineno == 0) st = fail(c, "%s:1: empty file, expected the header \"%s\"", path, csv_header);
+    free(buf);
+    fclose(f);
+    return st;
+}
+
+/* ---- statistics ------------------------------------------------------------- */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* p-quantile of sorted x[0..m-1], m > 0, linear interpolation (type 7). */
+static double quantile(const double *x, size_t m, double p)
+{
+    double h = (double)(m - 1) * p;
+    size_t lo = (size_t)floor(h);
+    if (lo + 1 >= m) return x[m - 1];
+    return x[lo] + (h - (double)lo) * (x[lo + 1] - x[lo]);
+}
+
+static int cmp_llong(const void *a, const void *b)
+{
+    long long x = *(const long long *)a, y = *(const long long *)b;
+    return (x > y) - (x < y);
+}
+
+static double field_of(const row *r, enum field f)
+{
+    switch (f) {
+    case F_US: return r->us;
+    case F_TETS: return r->tets;
+    default: return r->phase[f - F_LINK];
+    }
+}
+
+/* Sorts the known values of field f over rows idx[0..k-1] into scratch and
+ * returns how many there are. */
+static size_t gather(const ctx *c, const size_t *idx, size_t k, enum field f)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < k; i++) {
+        double v = field_of(&c->rows[idx[i]], f);
+        if (!isnan(v)) c->scratch[m++] = v;
+    }
+    qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
+    return m;
+}
+
+static double median_of(const ctx *c, const size_t *idx, size_t k, enum field f)
+{
+    size_t m = gather(c, idx, k, f);
+    return m ? quantile(c->scratch, m, 0.5) : NAN;
+}
+
+/* Column rank of a variant: known ones in the paper's order, then the
+ * others alphabetically. */
+static int compute_var_rank(ctx *c)
+{
+    size_t nv = c->variants.n;
+    size_t *order = malloc((nv ? nv : 1) * sizeof *order);
+    c->var_rank = malloc((nv ? nv : 1) * sizeof *c->var_rank);
+    if (!order || !c->var_rank) { free(order); return fail(c, "out of memory"); }
+    size_t m = 0;
+    for (size_t k = 0; k < NKNOWN; k++)
+        for (size_t v = 0; v < nv; v++)
+            if (!strcmp(c->variants.s[v], variant_order[k])) order[m++] = v;
+    size_t first_other = m;
+    for (size_t v = 0; v < nv; v++) {
+        int known = 0;
+        for (size_t k = 0; k < NKNOWN; k++)
+            if (!strcmp(c->variants.s[v], variant_order[k])) known = 1;
+        if (known) continue;
+        size_t at = m++;                       /* insertion sort by name */
+        while (at > first_other && strcmp(c->variants.s[order[at - 1]], c->variants.s[v]) > 0) {
+            order[at] = order[at - 1];
+            at--;
+        }
+        order[at] = v;
+    }
+    for (size_t i = 0; i < nv; i++) c->var_rank[order[i]] = i;
+    free(order);
+    return 0;
+}
+
+/* qsort has no context argument: sort (key, row) pairs instead. */
+typedef struct keyed { unsigned long long k[4]; size_t row; } keyed;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    const keyed *x = a, *y = b;
+    for (int i = 0; i < 4; i++)
+        if (x->k[i] != y->k[i]) return x->k[i] < y->k[i] ? -1 : 1;
+    return (x->row > y->row) - (x->row < y->row);
+}
+
+static void free_table(table *t)
+{
+    free(t->var);
+    free(t->deletions);
+    free(t->cells);
+    free(t->sizes);
+    memset(t, 0, sizeof *t);
+}
+
+/* Aggregates the rows of dataset ds (or every row when ds == (size_t)-1)
+ * into t: cells by (bucket, variant), deletions per bucket. */
+static int build_table(ctx *c, size_t ds, table *t)
+{
+    memset(t, 0, sizeof *t);
+    size_t nv = c->variants.n, k = 0;
+    keyed *key = malloc((c->nrows ? c->nrows : 1) * sizeof *key);
+    size_t *idx = malloc((c->nrows ? c->nrows : 1) * sizeof *idx);
+    int *col = malloc((nv ? nv : 1) * sizeof *col);
+    char *present = NULL;      /* per dataset, for the ratios */
+    if (!key || !idx || !col) goto oom;
+
+    int maxb = 0;
+    for (size_t i = 0; i < c->nrows; i++) {
+        const row *r = &c->rows[i];
+        if (ds != (size_t)-1 && r->ds != ds) continue;
+        if (r->bucket > maxb) maxb = r->bucket;
+        idx[k++] = i;
+    }
+    t->rows = k;
+    t->nbucket = maxb + 1;
+
+    /* columns: the variants present, in rank order */
+    for (size_t v = 0; v < nv; v++) col[v] = -1;
+    for (size_t i = 0; i < k; i++) col[c->rows[idx[i]].var] = 0;
+    t->var = malloc((nv ? nv : 1) * sizeof *t->var);
+    if (!t->var) goto oom;
+    for (size_t r = 0; r < nv; r++)
+        for (size_t v = 0; v < nv; v++)
+            if (c->var_rank[v] == r && col[v] == 0) t->var[t->nvar++] = v;
+    for (size_t j = 0; j < t->nvar; j++) col[t->var[j]] = (int)j;
+
+    size_t ncell = (size_t)t->nbucket * t->nvar;
+    t->cells = malloc((ncell ? ncell : 1) * sizeof *t->cells);
+    t->deletions = calloc((size_t)t->nbucket, sizeof *t->deletions);
+    t->sizes = malloc((k ? k : 1) * sizeof *t->sizes);
+    present = malloc((c->datasets.n ? c->datasets.n : 1) * sizeof *present);
+    if (!t->cells || !t->deletions || !t->sizes || !present) goto oom;
+    for (size_t i = 0; i < ncell; i++)
+        t->cells[i] = (cell){.med = NAN, .q1 = NAN, .q3 = NAN, .ratio = NAN, .tets = NAN,
+                             .phase = {NAN, NAN, NAN, NAN}};
+
+    /* distinct sizes */
+    for (size_t i = 0; i < k; i++) t->sizes[i] = c->rows[idx[i]].n;
+    qsort(t->sizes, k, sizeof *t->sizes, cmp_llong);
+    for (size_t i = 0; i < k; i++)
+        if (i == 0 || t->sizes[i] != t->sizes[t->nsizes - 1]) t->sizes[t->nsizes++] = t->sizes[i];
+
+    /* cells: group by (bucket, column) */
+    for (size_t i = 0; i < k; i++) {
+        const row *r = &c->rows[idx[i]];
+        key[i] = (keyed){{(unsigned long long)r->bucket, (unsigned long long)col[r->var], 0, 0},
+                         idx[i]};
+    }
+    qsort(key, k, sizeof *key, cmp_keyed);
+    for (size_t i = 0; i < k; i++) idx[i] = key[i].row;
+    for (size_t lo = 0, hi; lo < k; lo = hi) {
+        for (hi = lo; hi < k && key[hi].k[0] == key[lo].k[0] && key[hi].k[1] == key[lo].k[1]; hi++) {}
+        cell *ce = &t->cells[key[lo].k[0] * t->nvar + key[lo].k[1]];
+        ce->first = lo;
+        ce->rows = hi - lo;
+        for (size_t i = lo; i < hi; i++) {
+            ce->mismatches += !c->rows[idx[i]].match;
+            ce->on_hull += (size_t)c->rows[idx[i]].on_hull;
+        }
+        t->mismatches += ce->mismatches;
+        size_t m = gather(c, idx + lo, hi - lo, F_US);
+        ce->med = quantile(c->scratch, m, 0.5);
+        ce->q1 = quantile(c->scratch, m, 0.25);
+        ce->q3 = quantile(c->scratch, m, 0.75);
+        ce->tets = median_of(c, idx + lo, hi - lo, F_TETS);
+        for (int p = 0; p < NPHASES; p++)
+            ce->phase[p] = median_of(c, idx + lo, hi - lo, (enum field)(F_LINK + p));
+    }
+
+    /* deletions: every variant deletes the same vertices, so count the
+     * rows of the variant with the most, per bucket and in total */
+    for (size_t j = 0; j < t->nvar; j++) {
+        size_t rows = 0, hull = 0;
+        for (int b = 0; b < t->nbucket; b++) {
+            const cell *ce = &t->cells[(size_t)b * t->nvar + j];
+            if (ce->rows > t->deletions[b]) t->deletions[b] = ce->rows;
+            rows += ce->rows;
+            hull += ce->on_hull;
+        }
+        if (rows > t->total_deletions) t->total_deletions = rows;
+        if (hull > t->on_hull) t->on_hull = hull;
+    }
+
+    /* ratios to cgal in the same bucket, over the cgal rows of the datasets
+     * in which the variant has rows in that bucket (when pooling datasets,
+     * a variant run on only some of them is compared on those only) */
+    int cg = -1;
+    for (size_t j = 0; j < t->nvar; j++)
+        if (!strcmp(c->variants.s[t->var[j]], "cgal")) cg = (int)j;
+    for (int b = 0; b < t->nbucket; b++)
+        for (size_t j = 0; j < t->nvar; j++) {
+            cell *ce = &t->cells[(size_t)b * t->nvar + j];
+            const cell *ref = cg >= 0 ? &t->cells[(size_t)b * t->nvar + (size_t)cg] : NULL;
+            if (!ce->rows || !ref || !ref->rows || !(ce->med > 0)) continue;
+            for (size_t i = 0; i < c->datasets.n; i++) present[i] = 0;
+            for (size_t i = ce->first; i < ce->first + ce->rows; i++) present[c->rows[idx[i]].ds] = 1;
+            size_t m = 0;
+            for (size_t i = ref->first; i < ref->first + ref->rows; i++)
+                if (present[c->rows[idx[i]].ds]) c->scratch[m++] = c->rows[idx[i]].us;
+            if (!m) continue;
+            qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
+            ce->ratio = quantile(c->scratch, m, 0.5) / ce->med;
+        }
+    free(key);
+    free(idx);
+    free(col);
+    free(present);
+    return 0;
+oom:
+    free(key);
+    free(idx);
+    free(col);
+    free(present);
+    free_table(t);
+    return fail(c, "out of memory");
+}
+
+/* ---- formatting ------------------------------------------------------------- */
+
+/* A time in µs with 3-4 significant digits: 1234, 123.4 -> "123", 12.3, 1.23. */
+static const char *fmt_us(double v, char buf[32])
+{
+    if (isnan(v)) snprintf(buf, 32, "—");
+    else if (v >= 100) snprintf(buf, 32, "%.0f", v);
+    else if (v >= 10) snprintf(buf, 32, "%.1f", v);
+    else snprintf(buf, 32, "%.2f", v);
+    return buf;
+}
+
+/* A median count: integral, or .5 for an even number of values. */
+static const char *fmt_count(double v, char buf[32])
+{
+    if (isnan(v)) snprintf(buf, 32, "—");
+    else if (v == floor(v)) snprintf(buf, 32, "%.0f", v);
+    else snprintf(buf, 32, "%.1f", v);
+    return buf;
+}
+
+static const char *fmt_bucket(int b, char buf[48])
+{
+    long long lo, hi;
+    bucket_bounds(b, &lo, &hi);
+    snprintf(buf, 48, "[%lld,%lld)", lo, hi);
+    return buf;
+}
+
+/* Writes "NaN" for unknown values so gnuplot skips them. */
+static void put_num(FILE *f, double v)
+{
+    if (isnan(v)) fputs(" NaN", f);
+    else fprintf(f, " %.6g", v);
+}
+
+/* ---- summary.md ----------------------------------------------------------------- */
+
+static void write_meta(const ctx *c, FILE *out)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/meta.txt", c->outdir);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(out, "_No meta.txt in %s: machine, compiler, flags, CGAL version and date unknown._\n\n",
+                c->outdir);
+        return;
+    }
+    char *buf = NULL;
+    size_t cap = 0;
+    while (read_line(f, &buf, &cap) == 1) {
+        if (!buf[strspn(buf, " \t")]) continue;
+        char *colon = strchr(buf, ':');
+        if (colon) {
+            *colon = '\0';
+            const char *val = colon + 1 + strspn(colon + 1, " \t");
+            fprintf(out, "- **%s**: %s\n", buf, val);
+        } else {
+            fprintf(out, "- %s\n", buf);
+        }
+    }
+    free(buf);
+    fclose(f);
+    fputc('\n', out);
+}
+
+static void write_time_table(const ctx *c, const table *t, FILE *out)
+{
+    char b1[32], b2[32], b3[32], bb[48];
+    fprintf(out, "Time per deletion in µs: median (IQR q1–q3) ×ratio, ratio = cgal median / "
+                 "variant median in the same bucket (> 1: faster than CGAL).\n\n");
+    fprintf(out, "| degree | deletions |");
+    for (size_t j = 0; j < t->nvar; j++) fprintf(out, " %s |", c->variants.s[t->var[j]]);
+    fprintf(out, "\n|---|---:|");
+    for (size_t j = 0; j < t->nvar; j++) fprintf(out, "---:|");
+    fputc('\n', out);
+    for (int b = 0; b < t->nbucket; b++) {
+        if (!t->deletions[b]) continue;
+        fprintf(out, "| %s | %zu |", fmt_bucket(b, bb), t->deletions[b]);
+        for (size_t j = 0; j < t->nvar; j++) {
+            const cell *ce = &t->cells[(size_t)b * t->nvar + j];
+            if (!ce->rows) { fprintf(out, " — |"); continue; }
+            fprintf(out, " %s (%s–%s)", fmt_us(ce->med, b1), fmt_us(ce->q1, b2), fmt_us(ce->q3, b3));
+            if (!isnan(ce->ratio) && strcmp(c->variants.s[t->var[j]], "cgal"))
+                fprintf(out, " ×%.2f", ce->ratio);
+            if (ce->rows != t->deletions[b]) fprintf(out, " [%zu rows]", ce->rows);
+            fprintf(out, " |");
+        }
+        fputc('\n', out);
+    }
+    fprintf(out, "| **mismatches** | %zu |", t->mismatches);
+    for (size_t j = 0; j < t->nvar; j++) {
+        size_t m = 0;
+        for (int b = 0; b < t->nbucket; b++) m += t->cells[(size_t)b * t->nvar + j].mismatches;
+        fprintf(out, m ? " **%zu** |" : " %zu |", m);
+    }
+    fprintf(out, "\n\n");
+}
+
+/* The mismatch line: "mismatches: 0", or loud, with the rows listed. */
+static void write_mismatches(const ctx *c, const table *t, size_t ds, FILE *out)
+{
+    if (!t->mismatches) {
+        fprintf(out, "mismatches: 0\n\n");
+        return;
+    }
+    fprintf(out, "**MISMATCHES: %zu** deletions differ from CGAL's canonical form (a bug):",
+            t->mismatches);
+    for (size_t j = 0; j < t->nvar; j++) {
+        size_t m = 0;
+        for (int b = 0; b < t->nbucket; b++) m += t->cells[(size_t)b * t->nvar + j].mismatches;
+        if (m) fprintf(out, " %s %zu;", c->variants.s[t->var[j]], m);
+    }
+    fprintf(out, "\n\n");
+    size_t listed = 0;
+    for (size_t i = 0; i < c->nrows && listed < MAX_LISTED_MISMATCHES; i++) {
+        const row *r = &c->rows[i];
+        if (r->match || (ds != (size_t)-1 && r->ds != ds)) continue;
+        fprintf(out, "- MISMATCH %s n=%lld vertex=%lld degree=%lld variant=%s (%s:%ld)\n",
+                c->datasets.s[r->ds], r->n, r->vertex, r->degree, c->variants.s[r->var],
+                c->files[r->file], r->line);
+        listed++;
+    }
+    if (t->mismatches > listed) fprintf(out, "- ... and %zu more\n", t->mismatches - listed);
+    fputc('\n', out);
+}
+
+/* Medians over all rows of column j of t (dataset ds, or all): the four
+ * phases into med[0..3], us into med[4]; returns whether any phase time is
+ * known.  idx is scratch for nrows indices. */
+static int phase_medians(const ctx *c, const table *t, size_t ds, size_t j, size_t *idx,
+                         double med[NPHASES + 1], size_t *rows)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < c->nrows; i++)
+        if (c->rows[i].var == t->var[j] && (ds == (size_t)-1 || c->rows[i].ds == ds))
+            idx[k++] = i;
+    int any = 0;
+    for (int p = 0; p < NPHASES; p++) {
+        med[p] = median_of(c, idx, k, (enum field)(F_LINK + p));
+        any |= !isnan(med[p]);
+    }
+    med[NPHASES] = median_of(c, idx, k, F_US);
+    *rows = k;
+    return any;
+}
+
+/* The phase split in Markdown (out) or as plot data (dat), one of them. */
+static int write_phases(ctx *c, const table *t, size_t ds, FILE *out, FILE *dat)
+{
+    size_t *idx = malloc((c->nrows ? c->nrows : 1) * sizeof *idx);
+    if (!idx) return fail(c, "out of memory");
+    int header = 0;
+    char b[32];
+    for (size_t j = 0; j < t->nvar; j++) {
+        double med[NPHASES + 1];
+        size_t k;
+        if (!phase_medians(c, t, ds, j, idx, med, &k)) continue;
+        if (dat) {
+            fprintf(dat, "%s", c->variants.s[t->var[j]]);
+            for (int p = 0; p <= NPHASES; p++) put_num(dat, med[p]);
+            fputc('\n', dat);
+            continue;
+        }
+        if (!header) {
+            fprintf(out, "Phase split: median µs of each phase over all deletions of the variant "
+                         "(medians do not add up to the median total).\n\n"
+                         "| variant | rows | link | locate | conflict | sew | total |\n"
+                         "|---|---:|---:|---:|---:|---:|---:|\n");
+            header = 1;
+        }
+        fprintf(out, "| %s | %zu |", c->variants.s[t->var[j]], k);
+        for (int p = 0; p <= NPHASES; p++) fprintf(out, " %s |", fmt_us(med[p], b));
+        fputc('\n', out);
+    }
+    if (out && !header) fprintf(out, "Phase split: no phase times recorded.\n");
+    if (out) fputc('\n', out);
+    free(idx);
+    return 0;
+}
+
+static void write_tets_table(const ctx *c, const table *t, FILE *out)
+{
+    char b1[32], bb[48];
+    int *has = calloc(t->nvar ? t->nvar : 1, sizeof *has);
+    int any = 0;
+    if (!has) return;
+    for (size_t j = 0; j < t->nvar; j++)
+        for (int b = 0; b < t->nbucket; b++)
+            if (!isnan(t->cells[(size_t)b * t->nvar + j].tets)) has[j] = any = 1;
+    if (!any) {
+        fprintf(out, "Tetrahedra created: not recorded in this dataset.\n\n");
+        free(has);
+        return;
+    }
+    fprintf(out, "Tetrahedra created per deletion (median):\n\n| degree |");
+    for (size_t j = 0; j < t->nvar; j++)
+        if (has[j]) fprintf(out, " %s |", c->variants.s[t->var[j]]);
+    fprintf(out, "\n|---|");
+    for (size_t j = 0; j < t->nvar; j++)
+        if (has[j]) fprintf(out, "---:|");
+    fputc('\n', out);
+    for (int b = 0; b < t->nbucket; b++) {
+        if (!t->deletions[b]) continue;
+        fprintf(out, "| %s |", fmt_bucket(b, bb));
+        for (size_t j = 0; j < t->nvar; j++)
+            if (has[j]) fprintf(out, " %s |", fmt_count(t->cells[(size_t)b * t->nvar + j].tets, b1));
+        fputc('\n', out);
+    }
+    fputc('\n', out);
+    free(has);
+}
+
+/* ---- plot data ------------------------------------------------------------------ */
+
+static FILE *open_out(ctx *c, const char *name, const char *suffix)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/plotdata/%s%s", c->outdir, name, suffix);
+    FILE *f = fopen(path, "w");
+    if (!f) fail(c, "cannot write %s: %s", path, strerror(errno));
+    return f;
+}
+
+static int close_out(ctx *c, FILE *f, const char *name, const char *suffix)
+{
+    int bad = ferror(f);
+    if (fclose(f) || bad)
+        return fail(c, "cannot write %s/plotdata/%s%s", c->outdir, name, suffix);
+    return 0;
+}
+
+static void write_title(const ctx *c, const table *t, const char *name, FILE *f)
+{
+    fprintf(f, "# title: %s", name);
+    if (!strcmp(name, ALL_NAME)) {
+        fprintf(f, ", %zu dataset%s", c->datasets.n, c->datasets.n == 1 ? "" : "s");
+    } else if (t->nsizes) {
+        fprintf(f, " (n = ");
+        for (size_t i = 0; i < t->nsizes; i++) fprintf(f, "%s%lld", i ? ", " : "", t->sizes[i]);
+        fprintf(f, ")");
+    }
+    fprintf(f, ", %zu deletion%s\n", t->total_deletions, t->total_deletions == 1 ? "" : "s");
+}
+
+/* name.dat, name.variants, name.phases for one table. */
+static int write_plotdata(ctx *c, const table *t, size_t ds, const char *name)
+{
+    FILE *dat = open_out(c, name, ".dat");
+    if (!dat) return -1;
+    write_title(c, t, name, dat);
+    fprintf(dat, "# columns: 1 bucket_center 2 median_us 3 q1_us 4 q3_us 5 ratio_to_cgal "
+                 "6 median_tets 7 median_link_us 8 median_locate_us 9 median_conflict_us "
+                 "10 median_sew_us 11 bucket_lo 12 bucket_hi 13 rows 14 mismatches\n"
+                 "# one index block per variant (see %s.variants); NaN = unknown\n", name);
+    for (size_t j = 0; j < t->nvar; j++) {
+        if (j) fputs("\n\n", dat);
+        fprintf(dat, "# variant %s\n", c->variants.s[t->var[j]]);
+        for (int b = 0; b < t->nbucket; b++) {
+            const cell *ce = &t->cells[(size_t)b * t->nvar + j];
+            if (!ce->rows) continue;
+            long long lo, hi;
+            bucket_bounds(b, &lo, &hi);
+            fprintf(dat, "%.6g", bucket_center(b));
+            put_num(dat, ce->med);
+            put_num(dat, ce->q1);
+            put_num(dat, ce->q3);
+            put_num(dat, ce->ratio);
+            put_num(dat, ce->tets);
+            for (int p = 0; p < NPHASES; p++) put_num(dat, ce->phase[p]);
+            fprintf(dat, " %lld %lld %zu %zu\n", lo, hi, ce->rows, ce->mismatches);
+        }
+    }
+    if (close_out(c, dat, name, ".dat")) return -1;
+
+    FILE *vf = open_out(c, name, ".variants");
+    if (!vf) return -1;
+    for (size_t j = 0; j < t->nvar; j++) fprintf(vf, "%s\n", c->variants.s[t->var[j]]);
+    if (close_out(c, vf, name, ".variants")) return -1;
+
+    FILE *ph = open_out(c, name, ".phases");
+    if (!ph) return -1;
+    fprintf(ph, "# variant median_link_us median_locate_us median_conflict_us median_sew_us median_us\n");
+    int st = write_phases(c, t, ds, NULL, ph);
+    if (close_out(c, ph, name, ".phases") || st) return -1;
+    return 0;
+}
+
+/* ---- driver ------------------------------------------------------------------------ */
+
+static int make_dir(ctx *c, const char *path)
+{
+    if (mkdir(path, 0777) && errno != EEXIST)
+        return fail(c, "cannot create directory %s: %s", path, strerror(errno));
+    return 0;
+}
+
+static int write_all(ctx *c)
+{
+    char path[4096];
+    if (make_dir(c, c->outdir)) return -1;
+    snprintf(path, sizeof path, "%s/plotdata", c->outdir);
+    if (make_dir(c, path)) return -1;
+
+    snprintf(path, sizeof path, "%s/summary.md", c->outdir);
+    FILE *md = fopen(path, "w");
+    if (!md) return fail(c, "cannot write %s: %s", path, strerror(errno));
+    FILE *list = open_out(c, "datasets", ".txt");
+    if (!list) { fclose(md); return -1; }
+
+    fprintf(md, "# Vertex deletion benchmark: dtdel variants against CGAL\n\n");
+    write_meta(c, md);
+    table all;
+    if (build_table(c, (size_t)-1, &all)) { fclose(md); fclose(list); return -1; }
+    if (all.mismatches)
+        fprintf(md, "**MISMATCHES: %zu in total** -- see the datasets below.\n\n", all.mismatches);
+    else
+        fprintf(md, "mismatches: 0 (every deletion of every variant equals CGAL's result)\n\n");
+    fprintf(md, "Degree buckets [lo,hi): [4,8), then [2^k, 1.5·2^k) and [1.5·2^k, 2^(k+1)); "
+                "empty buckets omitted. Median and quartiles by linear interpolation "
+                "(type 7). \"deletions\": rows of the variant with the most rows in the "
+                "bucket (all variants delete the same vertices); a cell marked [k rows] "
+                "has fewer.\n\n");
+
+    int st = 0;
+    for (size_t d = 0; d < c->datasets.n && !st; d++) {
+        table t;
+        if ((st = build_table(c, d, &t))) break;
+        const char *name = c->datasets.s[d];
+        fprintf(md, "## %s\n\nn = ", name);
+        for (size_t i = 0; i < t.nsizes; i++) fprintf(md, "%s%lld", i ? ", " : "", t.sizes[i]);
+        fprintf(md, "; %zu deletions (%zu on the hull), %zu rows.\n\n", t.total_deletions,
+                t.on_hull, t.rows);
+        write_time_table(c, &t, md);
+        write_mismatches(c, &t, d, md);
+        st = write_phases(c, &t, d, md, NULL);
+        if (!st) write_tets_table(c, &t, md);
+        if (!st) st = write_plotdata(c, &t, d, name);
+        fprintf(list, "%s\n", name);
+        if (t.mismatches)
+            fprintf(stderr, "summarize: MISMATCHES in %s: %zu deletions differ from CGAL\n", name,
+                    t.mismatches);
+        free_table(&t);
+    }
+    if (!st) {
+        fprintf(md, "## All datasets\n\nRows of every dataset pooled per bucket and variant "
+                    "(a variant's ratio uses only the cgal rows of the datasets in which it "
+                    "has rows in that bucket); %zu deletions, %zu rows.\n\n",
+                all.total_deletions, all.rows);
+        write_time_table(c, &all, md);
+        write_mismatches(c, &all, (size_t)-1, md);
+        st = write_phases(c, &all, (size_t)-1, md, NULL);
+        if (!st) write_tets_table(c, &all, md);
+        if (!st) st = write_plotdata(c, &all, (size_t)-1, ALL_NAME);
+    }
+    free_table(&all);
+    int bad = ferror(md);
+    if (fclose(md) || bad) st = st ? st : fail(c, "cannot write %s", path);
+    if (close_out(c, list, "datasets", ".txt")) st = -1;
+    return st;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+        FILE *o = argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) ? stdout : stderr;
+        fprintf(o, "usage: summarize OUTDIR CSV...\n"
+                   "Aggregates bench CSVs by degree bucket and variant into OUTDIR/summary.md\n"
+                   "and OUTDIR/plotdata/ (gnuplot input for scripts/plots.sh).\n");
+        return o == stdout ? 0 : EXIT_USAGE;
+    }
+    ctx c;
+    memset(&c, 0, sizeof c);
+    c.outdir = argv[1];
+    c.files = argv + 2;
+    int st = 0;
+    for (int i = 2; i < argc && !st; i++) st = load_csv(&c, (size_t)(i - 2));
+    if (!st && c.nrows == 0) st = fail(&c, "no data rows in the CSV files given");
+    if (!st) {
+        c.scratch = malloc(c.nrows * sizeof *c.scratch);
+        st = c.scratch ? compute_var_rank(&c) : fail(&c, "out of memory");
+    }
+    if (!st) st = write_all(&c);
+    if (st) fprintf(stderr, "summarize: %s\n", c.err);
+
+    for (size_t i = 0; i < c.datasets.n; i++) free(c.datasets.s[i]);
+    for (size_t i = 0; i < c.variants.n; i++) free(c.variants.s[i]);
+    free(c.datasets.s);
+    free(c.variants.s);
+    free(c.rows);
+    free(c.var_rank);
+    free(c.scratch);
+    return st ? EXIT_INPUT : 0;
+}

@@ -1,0 +1,640 @@
+/*
+ * delete.c -- DELETEVERTEX, the conflict DT and the sewing (paper 3-4,
+ * DESIGN 6; the framework is described in delete.h).
+ *
+ * Owns: the deletion context (scratch reused across deletions, so the hot
+ * path does not allocate once warm), star and link collection, the
+ * all-or-nothing sewing, CREATEQCONFLICTDT and QCONFLICTDTINSERT, and the
+ * public dd_delete / dd_insert / dd_reinsert.
+ *
+ * Invariant kept between deletions: the main triangulation is a valid
+ * perturbed DT; d->qdt holds whatever the last strategy left (garbage).
+ */
+#include "delete.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- context ------------------------------------------------------------- */
+
+void dd_delete_ctx_free(dd_del *d)
+{
+    if (!d) return;
+    dd_vec_free(&d->star); dd_vec_free(&d->nbr); dd_vec_free(&d->fill);
+    dd_vec_free(&d->order); dd_vec_free(&d->sew_out); dd_vec_free(&d->cellmap);
+    free(d->lhash);
+    free(d->vmark);
+    free(d->qdt_vcell);
+    dd_free(d->qdt);
+    free(d);
+}
+
+/* The scratch triangulation: its own cells, the main one's points. */
+static dd_status new_qdt(dd_tri **out)
+{
+    dd_tri *q = calloc(1, sizeof *q);
+    if (!q) return DD_ERR_NOMEM;
+    q->borrowed = 1;
+    q->free_head = q->inf_cell = q->hint = DD_NONE;
+    q->rng = 0x2545F4914F6CDD1Dull;
+    dd_pred_init(&q->pred);
+    *out = q;
+    return DD_OK;
+}
+
+/* Makes t->del exist and fit the current vertex arrays. */
+static dd_status get_ctx(dd_tri *t, dd_del **out)
+{
+    dd_del *d = t->del;
+    if (!d) {
+        d = calloc(1, sizeof *d);
+        if (!d) return DD_ERR_NOMEM;
+        d->t = t;
+        d->rng = 0x853C49E6748FEA9Bull;
+        if (new_qdt(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
+        t->del = d;
+    }
+    if (d->vmark_cap < t->cap_v) {
+        uint32_t *m = realloc(d->vmark, (size_t)t->cap_v * sizeof *m);
+        if (!m) return DD_ERR_NOMEM;
+        d->vmark = m;
+        uint32_t *c = realloc(d->qdt_vcell, (size_t)t->cap_v * sizeof *c);
+        if (!c) return DD_ERR_NOMEM;
+        d->qdt_vcell = c;
+        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *m);
+        d->vmark_cap = t->cap_v;
+    }
+    d->qdt->xyz = t->xyz;
+    d->qdt->v2in = t->v2in;
+    d->qdt->vcell = d->qdt_vcell;
+    *out = d;
+    return DD_OK;
+}
+
+uint32_t dd_del_rand(dd_del *d)
+{
+    uint64_t x = d->rng;
+    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+    d->rng = x;
+    return (uint32_t)(x >> 32);
+}
+
+void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n)
+{
+    for (size_t k = n; k > 1; k--) {
+        size_t j = dd_del_rand(d) % k;
+        uint32_t s = a[k - 1]; a[k - 1] = a[j]; a[j] = s;
+    }
+}
+
+#ifdef DD_COUNTERS
+void dd_phase_begin(dd_del *d) { clock_gettime(CLOCK_MONOTONIC, &d->ph_t0); }
+void dd_phase_end(dd_del *d, int phase)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    d->phase[phase] += (double)(now.tv_sec - d->ph_t0.tv_sec) + 1e-9 * (double)(now.tv_nsec - d->ph_t0.tv_nsec);
+    d->ph_t0 = now;
+}
+#endif
+
+/* ---- the link-triangle hash ---------------------------------------------- */
+
+static void sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
+{
+    uint32_t s;
+    if (*a > *b) { s = *a; *a = *b; *b = s; }
+    if (*b > *c) { s = *b; *b = *c; *c = s; }
+    if (*a > *b) { s = *a; *a = *b; *b = s; }
+}
+
+static uint32_t tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
+{
+    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
+               ^ (uint64_t)c * 0x165667B19E3779F9ull;
+    return (uint32_t)(h >> 40) & mask;
+}
+
+static dd_status reserve_link_hash(dd_del *d, size_t n)
+{
+    size_t want = 64;
+    while (want < 2 * n) want *= 2;
+    if (want > d->lhash_cap) {
+        dd_tri_slot *h = calloc(want, sizeof *h);
+        if (!h) return DD_ERR_NOMEM;
+        free(d->lhash);
+        d->lhash = h;
+        d->lhash_cap = (uint32_t)want;
+        d->lhash_gen = 0;
+    }
+    if (++d->lhash_gen == 0) {
+        memset(d->lhash, 0, d->lhash_cap * sizeof *d->lhash);
+        d->lhash_gen = 1;
+    }
+    return DD_OK;
+}
+
+static void link_hash_put(dd_del *d, uint32_t a, uint32_t b, uint32_t c, uint32_t slot)
+{
+    sort3u(&a, &b, &c);
+    uint32_t mask = d->lhash_cap - 1;
+    for (uint32_t h = tri_hash(a, b, c, mask);; h = (h + 1) & mask) {
+        dd_tri_slot *e = &d->lhash[h];
+        if (e->gen != d->lhash_gen) {
+            e->a = a; e->b = b; e->c = c; e->slot = slot; e->gen = d->lhash_gen;
+            return;
+        }
+    }
+}
+
+/* Star slot of the link triangle abc, or DD_NONE. */
+static uint32_t link_hash_get(const dd_del *d, uint32_t a, uint32_t b, uint32_t c)
+{
+    sort3u(&a, &b, &c);
+    uint32_t mask = d->lhash_cap - 1;
+    for (uint32_t h = tri_hash(a, b, c, mask);; h = (h + 1) & mask) {
+        const dd_tri_slot *e = &d->lhash[h];
+        if (e->gen != d->lhash_gen) return DD_NONE;
+        if (e->a == a && e->b == b && e->c == c) return e->slot;
+    }
+}
+
+/* ---- step 1: star, link, neighbours -------------------------------------- */
+
+static dd_status collect_star(dd_del *d)
+{
+    dd_tri *t = d->t;
+    uint32_t q = d->q, ep = dd_new_epoch(t, 1);
+    if (++d->vepoch == 0) {
+        memset(d->vmark, 0, (size_t)d->vmark_cap * sizeof *d->vmark);
+        d->vepoch = 1;
+    }
+    uint32_t vep = d->vepoch;
+    d->star.n = d->nbr.n = 0;
+    d->on_hull = 0;
+    uint32_t c0 = t->vcell[q];
+    t->stamp[c0] = ep;
+    dd_status s = dd_vec_push(&d->star, c0);
+    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+        uint32_t c = d->star.a[k];
+        const uint32_t *v = t->tv + 4 * (size_t)c;
+        for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
+            uint32_t w = v[j];
+            if (w == q) continue;
+            if (w == DD_INF) d->on_hull = 1;
+            else if (d->vmark[w] != vep) {
+                d->vmark[w] = vep;
+                s = dd_vec_push(&d->nbr, w);
+            }
+            uint32_t nb = t->tn[4 * (size_t)c + j] >> 2;
+            if (s == DD_OK && t->stamp[nb] != ep) {
+                t->stamp[nb] = ep;
+                s = dd_vec_push(&d->star, nb);
+            }
+        }
+    }
+    if (s == DD_OK) s = reserve_link_hash(d, d->star.n);
+    if (s != DD_OK) return s;
+    for (size_t k = 0; k < d->star.n; k++) {
+        uint32_t c = d->star.a[k];
+        const uint32_t *v = t->tv + 4 * (size_t)c;
+        int i = dd_index_of(t, c, q);
+        link_hash_put(d, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
+    }
+    d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
+    return DD_OK;
+}
+
+/* Moves four affinely independent points of a[0..n) to a[0..3] (first
+ * found in a's order) and records them in d->base.  DD_ERR_COPLANAR when
+ * there are none.                                                        */
+static dd_status pick_base(dd_del *d, uint32_t *a, size_t n)
+{
+    dd_tri *t = d->t;
+    if (n < 4) return DD_ERR_COPLANAR;
+    const double *p0 = dd_pt(t, a[0]), *p1 = dd_pt(t, a[1]);
+    size_t k = 2;
+    while (k < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, a[k])) == 0) k++;
+    if (k == n) return DD_ERR_COPLANAR;
+    uint32_t s = a[2]; a[2] = a[k]; a[k] = s;
+    const double *p2 = dd_pt(t, a[2]);
+    k = 3;
+    while (k < n && dd_orient3d(&t->pred, p0, p1, p2, dd_pt(t, a[k])) == 0) k++;
+    if (k == n) return DD_ERR_COPLANAR;
+    s = a[3]; a[3] = a[k]; a[k] = s;
+    memcpy(d->base, a, sizeof d->base);
+    return DD_OK;
+}
+
+dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
+{
+    return pick_base(d, a, n);
+}
+
+/* ---- the conflict DT ----------------------------------------------------- */
+
+void dd_qdt_reset(dd_del *d, int qd)
+{
+    dd_clear_cells(d->qdt);
+    d->qdt->qd_point = qd ? d->qp : NULL;
+    d->qdt->tets_created = 0;
+    d->fill.n = 0;
+}
+
+/* CREATEQCONFLICTDT: DT of the four base points, then the cells not in
+ * conflict with q are replaced by the star of the dummy vertex: exactly a
+ * Bowyer-Watson step whose "conflict region" is the complement.           */
+dd_status dd_qdt_create(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_reserve_cells(x, 16);
+    if (s != DD_OK) return s;
+    uint32_t b[4];
+    memcpy(b, d->base, sizeof b);
+    dd_make_first_cells(x, b);
+    uint32_t ep = dd_new_epoch(x, 2);
+    x->conflict.n = x->boundary.n = 0;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (!dd_cell_conflict(x, c, d->qp)) {
+            x->stamp[c] = ep;
+            s = dd_vec_push(&x->conflict, c);
+        }
+    for (size_t k = 0; k < x->conflict.n && s == DD_OK; k++) {
+        uint32_t c = x->conflict.a[k];
+        for (uint32_t i = 0; i < 4 && s == DD_OK; i++)
+            if (x->stamp[x->tn[4 * (size_t)c + i] >> 2] != ep)
+                s = dd_vec_push(&x->boundary, 4 * c + i);
+    }
+    if (s == DD_OK) s = dd_reserve_star(x);
+    if (s != DD_OK) return s;
+    dd_fill_star(x, DD_QD);
+    return DD_OK;
+}
+
+/* QCONFLICTDTINSERT */
+dd_status dd_qdt_insert(dd_del *d, uint32_t v, uint32_t start)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_find_conflicts(x, dd_pt(x, v), start);
+    if (s == DD_OK) s = dd_reserve_star(x);
+    if (s != DD_OK) return s;
+    dd_fill_star(x, v);
+    return DD_OK;
+}
+
+static int has_qd(const dd_tri *x, uint32_t c)
+{
+    return dd_index_of(x, c, DD_QD) >= 0;
+}
+
+dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell)
+{
+    dd_tri *x = d->qdt;
+    const double *p = dd_pt(x, v);
+    for (uint32_t c = 0; c < x->ncell; c++) {
+        if (x->tv[4 * (size_t)c] == DD_DEAD || !has_qd(x, c)) continue;
+        if (dd_cell_conflict(x, c, p)) { *cell = c; return DD_OK; }
+    }
+    return dd_fail(d->t, DD_ERR_INTERNAL, "no dummy cell of the conflict DT conflicts with point %u",
+                   d->t->v2in[v]);
+}
+
+dd_status dd_qdt_collect_fill(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    d->fill.n = 0;
+    dd_status s = DD_OK;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (x->tv[4 * (size_t)c] != DD_DEAD && !has_qd(x, c)) s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+dd_status dd_full_build(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_reserve_cells(x, (uint32_t)(8 * d->nbr.n + 16));
+    if (s != DD_OK) return s;
+    uint32_t b[4];
+    memcpy(b, d->base, sizeof b);
+    dd_make_first_cells(x, b);
+    for (size_t k = 0; k < d->order.n && s == DD_OK; k++) {
+        uint32_t v = d->order.a[k];
+        if (v == d->base[0] || v == d->base[1] || v == d->base[2] || v == d->base[3]) continue;
+        s = dd_insert_vertex(x, v);
+    }
+    return s;
+}
+
+dd_status dd_full_collect_fill(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    d->fill.n = 0;
+    dd_status s = DD_OK;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_cell_conflict(x, c, d->qp))
+            s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+/* The forced fill of a hull vertex whose finite neighbours are coplanar:
+ * every finite star cell with q replaced by DD_INF.                       */
+static dd_status fill_coplanar_hull(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    dd_qdt_reset(d, 0);
+    dd_status s = dd_reserve_cells(x, (uint32_t)d->star.n);
+    if (s == DD_OK) s = dd_reserve_edge_hash(x, d->star.n);
+    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+        uint32_t c = d->star.a[k];
+        if (dd_is_infinite_cell(t, c)) continue;
+        uint32_t n = dd_new_cell(x);
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t w = t->tv[4 * (size_t)c + i];
+            x->tv[4 * (size_t)n + i] = w == d->q ? DD_INF : w;
+            x->tn[4 * (size_t)n + i] = DD_NONE;
+        }
+        s = dd_vec_push(&d->fill, n);
+    }
+    if (s == DD_OK) dd_glue_new_cells(x, d->fill.a, d->fill.n, DD_INF);
+    return s;
+}
+
+/* ---- step 3: sewing ------------------------------------------------------ */
+
+static dd_status sew(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    size_t nf = d->fill.n;
+    uint32_t epx = dd_new_epoch(x, 1);
+    for (size_t k = 0; k < nf; k++) x->stamp[d->fill.a[k]] = epx;
+    dd_status s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
+    if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
+    if (s != DD_OK) return s;
+    /* Match every boundary facet of the fill with its link triangle; check
+     * that each link triangle is met exactly once.  No change yet.        */
+    uint32_t ep = dd_new_epoch(t, 1);
+    size_t matched = 0;
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k];
+        const uint32_t *v = x->tv + 4 * (size_t)r;
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t f = x->tn[4 * (size_t)r + j];
+            if (f != DD_NONE && x->stamp[f >> 2] == epx) {
+                d->sew_out.a[4 * k + j] = DD_NONE;
+                continue;
+            }
+            uint32_t slot = link_hash_get(d, v[dd_facet[j][0]], v[dd_facet[j][1]], v[dd_facet[j][2]]);
+            if (slot == DD_NONE)
+                return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a cavity facet matches no link triangle",
+                               t->v2in[d->q]);
+            uint32_t c = d->star.a[slot];
+            if (t->stamp[c] == ep)
+                return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a link triangle is covered twice",
+                               t->v2in[d->q]);
+            t->stamp[c] = ep;
+            d->sew_out.a[4 * k + j] = t->tn[4 * (size_t)c + (uint32_t)dd_index_of(t, c, d->q)];
+            matched++;
+        }
+    }
+    if (matched != d->star.n)
+        return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: the cavity fill covers %zu of %zu link triangles",
+                       t->v2in[d->q], matched, d->star.n);
+    s = dd_reserve_cells(t, (uint32_t)nf);
+    if (s != DD_OK) return s;
+
+    /* Point of no return: copy, glue, recycle. */
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k], m = dd_new_cell(t);
+        memcpy(t->tv + 4 * (size_t)m, x->tv + 4 * (size_t)r, 4 * sizeof *t->tv);
+        d->cellmap.a[r] = m;
+    }
+    int finite_star = 0;
+    for (size_t k = 0; k < d->star.n; k++) {
+        uint32_t c = d->star.a[k];
+        if (!dd_is_infinite_cell(t, c)) finite_star++;
+        dd_kill_cell(t, c);
+    }
+    t->nfinite -= (uint32_t)finite_star;
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k], m = d->cellmap.a[r];
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t o = d->sew_out.a[4 * k + j];
+            if (o != DD_NONE) {
+                dd_glue(t, 4 * m + j, o);
+            } else {
+                uint32_t f = x->tn[4 * (size_t)r + j];
+                t->tn[4 * (size_t)m + j] = 4 * d->cellmap.a[f >> 2] + (f & 3);
+            }
+        }
+        int inf = 0;
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t w = t->tv[4 * (size_t)m + j];
+            if (w == DD_INF) { inf = 1; t->inf_cell = m; }
+            else t->vcell[w] = m;
+        }
+        if (!inf) t->nfinite++;
+        t->hint = m;
+    }
+    t->vcell[d->q] = DD_NONE;
+    t->nvert--;
+    return DD_OK;
+}
+
+/* ---- DELETEVERTEX -------------------------------------------------------- */
+
+static dd_status resolve_vertex(dd_tri *t, uint32_t input, uint32_t *v)
+{
+    if (input >= t->np)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
+    uint32_t id = t->in2v[input];
+    if (t->v2in[id] != input)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is a duplicate of point %u, not a vertex",
+                       input, t->v2in[id]);
+    if (t->vcell[id] == DD_NONE)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is not a vertex (it was deleted)", input);
+    *v = id;
+    return DD_OK;
+}
+
+/* DELETEVERTEX(q) with strategy var; q a vertex id. */
+static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
+{
+    if (t->nvert <= 4)
+        return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave %u points: at least 4 are needed",
+                       t->v2in[q], t->nvert - 1);
+    dd_del *d;
+    dd_status s = get_ctx(t, &d);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    d->q = q;
+    d->qp = dd_pt(t, q);
+    d->fallbacks = 0;
+    d->qdt_created = 0;
+    for (int i = 0; i < DD_NPHASES; i++) d->phase[i] = 0;
+    DD_PHASE_BEGIN(d);
+    s = collect_star(d);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    /* Four independent neighbours, or the forced coplanar-hull fill. */
+    d->order.n = 0;
+    for (size_t k = 0; k < d->nbr.n && s == DD_OK; k++) s = dd_vec_push(&d->order, d->nbr.a[k]);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    DD_PHASE_END(d, DD_PH_LINK);
+    if (pick_base(d, d->order.a, d->order.n) != DD_OK) {
+        /* Coplanar finite neighbours: q is on the hull.  If every finite
+         * cell holds q, every other point is a neighbour: all coplanar.   */
+        size_t finite_star = 0;
+        for (size_t k = 0; k < d->star.n; k++) finite_star += !dd_is_infinite_cell(t, d->star.a[k]);
+        if (finite_star == t->nfinite)
+            return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points",
+                           t->v2in[q]);
+        if (!d->on_hull)
+            return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
+        s = fill_coplanar_hull(d);
+    } else {
+        s = var->fill_cavity(d);
+    }
+    if (s != DD_OK) {
+        if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
+        if (!t->err[0]) dd_fail(t, s, "the %s strategy failed on point %u", var->name, t->v2in[q]);
+        return s;
+    }
+    d->qdt_created = d->qdt->tets_created;
+    DD_PHASE_BEGIN(d);
+    s = sew(d);
+    DD_PHASE_END(d, DD_PH_SEW);
+    if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
+    return s;
+}
+
+dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
+{
+    t->err[0] = 0;
+    const dd_variant *var = dd_find_variant(variant);
+    if (!var)
+        return dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
+    uint32_t q = 0;
+    dd_status s = resolve_vertex(t, input, &q);
+    if (s != DD_OK) return s;
+    return delete_vertex(t, q, var);
+}
+
+/* Collects the star of input vertex v for the queries below. */
+static dd_status star_of(dd_tri *t, uint32_t input, dd_del **out)
+{
+    uint32_t v = 0;
+    dd_status s = resolve_vertex(t, input, &v);
+    if (s == DD_OK) s = get_ctx(t, out);
+    if (s != DD_OK) return s;
+    (*out)->q = v;
+    (*out)->qp = dd_pt(t, v);
+    return collect_star(*out);
+}
+
+uint32_t dd_degree(dd_tri *t, uint32_t v)
+{
+    dd_del *d;
+    return star_of(t, v, &d) == DD_OK ? d->degree : 0;
+}
+
+int dd_on_hull(dd_tri *t, uint32_t v)
+{
+    dd_del *d;
+    return star_of(t, v, &d) == DD_OK ? d->on_hull : 0;
+}
+
+void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
+{
+    memset(st, 0, sizeof *st);
+    const dd_del *d = t->del;
+    if (!d) return;
+    st->degree = d->degree;
+    st->on_hull = d->on_hull;
+    st->tets_created = d->qdt_created;
+    st->fallbacks = d->fallbacks;
+    st->link_us = 1e6 * d->phase[DD_PH_LINK];
+    st->locate_us = 1e6 * d->phase[DD_PH_LOCATE];
+    st->conflict_us = 1e6 * d->phase[DD_PH_CONFLICT];
+    st->sew_us = 1e6 * d->phase[DD_PH_SEW];
+}
+
+/* ---- insertion ----------------------------------------------------------- */
+
+dd_status dd_reinsert(dd_tri *t, uint32_t input)
+{
+    t->err[0] = 0;
+    if (input >= t->np)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
+    uint32_t v = t->in2v[input];
+    if (t->v2in[v] != input)
+        return dd_fail(t, DD_ERR_DUPLICATE, "point %u is a duplicate of point %u", input, t->v2in[v]);
+    if (t->vcell[v] != DD_NONE)
+        return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
+    return dd_insert_vertex(t, v);
+}
+
+static dd_status grow_u32(uint32_t **a, size_t n)
+{
+    uint32_t *b = realloc(*a, n * sizeof **a);
+    if (!b) return DD_ERR_NOMEM;
+    *a = b;
+    return DD_OK;
+}
+
+dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+{
+    t->err[0] = 0;
+    for (int c = 0; c < 3; c++) {
+        if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
+        if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
+    }
+    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8)
+        return dd_fail(t, DD_ERR_NOMEM, "too many points");
+    if (t->nvid == t->cap_v) {
+        size_t cap = (size_t)t->cap_v * 2;
+        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
+        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->xyz = xyz;
+        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap))
+            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_v = (uint32_t)cap;
+    }
+    if (t->np == t->cap_in) {
+        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_in *= 2;
+    }
+    uint32_t v = t->nvid;
+    memcpy(t->xyz + 3 * (size_t)v, p, 3 * sizeof *p);
+    t->vcell[v] = DD_NONE;
+    t->v2in[v] = t->np;
+    t->in2v[t->np] = v;
+    dd_status s = dd_insert_vertex(t, v);
+    if (s != DD_OK) return s;   /* nvid, np unchanged: the slot is unused */
+    t->nvid++;
+    *index = t->np++;
+    return DD_OK;
+}
+
+/* ---- the registry -------------------------------------------------------- */
+
+const dd_variant *dd_find_variant(const char *name)
+{
+    if (!name) return dd_variant_table[0];
+    for (const dd_variant *const *v = dd_variant_table; *v; v++)
+        if (!strcmp((*v)->name, name)) return *v;
+    return NULL;
+}
+
+const char *dd_variant_name(size_t i)
+{
+    for (size_t k = 0; k <= i; k++)
+        if (!dd_variant_table[k]) return NULL;
+    return dd_variant_table[i]->name;
+}
+
+const char *dd_variant_description(size_t i)
+{
+    for (size_t k = 0; k <= i; k++)
+        if (!dd_variant_table[k]) return NULL;
+    return dd_variant_table[i]->description;
+}

@@ -1,0 +1,136 @@
+/*
+ * delete.h -- the deletion framework shared by every variant (paper 3-4,
+ * DESIGN 6) and the strategy interface of variants/.
+ *
+ * DELETEVERTEX(q) (delete.c):
+ *   1. collect the star of q, its link (one triangle per star cell, the
+ *      facet opposite q) and P, q's neighbours (DD_INF among them when q is
+ *      on the hull); refuse when the result would not be 3-dimensional;
+ *   2. let the strategy fill d->qdt, a scratch triangulation that borrows
+ *      the points of the main one, and list in d->fill the cells of d->qdt
+ *      that fill the cavity;
+ *   3. sew: match each fill facet that has no fill neighbour to its link
+ *      triangle, copy the fill cells into the mesh glued to the outside,
+ *      recycle the star.  Steps 1-2 never touch the mesh and step 3 starts
+ *      only once every boundary facet is matched: all or nothing.
+ *
+ * The conflict DT DT(x)_q(P_i) lives in d->qdt closed by the dummy vertex
+ * DD_QD: each boundary triangle abc of DT(x) carries a dummy cell
+ * (a,b,c,DD_QD), tested for conflict as the ordinary cell (b,a,c,q) (paper
+ * 4.1, done by dd_cell_conflict).  Its dummy cells mirror the link DT
+ * DT^l(Q_i): dummy (a,b,c,DD_QD) <-> link tetrahedron (a,b,c,q).  With that
+ * rule, inserting into DT(x) is ordinary Bowyer-Watson: QCONFLICTDTINSERT.
+ *
+ * Special case handled by the framework before any strategy runs: a hull
+ * vertex whose finite neighbours are all coplanar.  Then no finite cell
+ * can fill the cavity and the fill is forced: each finite link triangle
+ * becomes a hull facet, the cell (a,b,c,DD_INF).
+ */
+#ifndef DD_DELETE_H
+#define DD_DELETE_H
+
+#include "mesh.h"
+
+#ifdef DD_COUNTERS
+#include <time.h>
+#endif
+
+/* A slot of the link-triangle hash: sorted vertex triple -> star slot. */
+typedef struct dd_tri_slot {
+    uint32_t a, b, c;     /* a <= b <= c (DD_INF sorts last)              */
+    uint32_t slot;        /* index into d->star                           */
+    uint32_t gen;
+} dd_tri_slot;
+
+/* Phases of one deletion (seconds), measured in counting builds only. */
+enum { DD_PH_LINK, DD_PH_LOCATE, DD_PH_CONFLICT, DD_PH_SEW, DD_NPHASES };
+
+typedef struct dd_del {
+    dd_tri *t;            /* the triangulation being edited               */
+    uint32_t q;           /* vertex id being deleted                      */
+    const double *qp;     /* its point                                    */
+    int on_hull;          /* DD_INF is a neighbour of q                   */
+
+    dd_vec star;          /* cells incident to q                          */
+    dd_vec nbr;           /* P minus DD_INF: the finite neighbours of q   */
+    uint32_t base[4];     /* 4 affinely independent points of nbr         */
+
+    dd_tri_slot *lhash;   /* link triangles by vertex triple              */
+    uint32_t lhash_cap, lhash_gen;
+    uint32_t *vmark;      /* per vertex id, epoch marks (cap t->cap_v)    */
+    uint32_t vmark_cap, vepoch;
+
+    dd_tri *qdt;          /* the conflict DT, or the full DT of P         */
+    uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
+    dd_vec fill;          /* cells of qdt that fill the cavity            */
+    dd_vec order;         /* scratch: the strategy's insertion order      */
+    dd_vec sew_out;       /* scratch: per fill facet, its outside facet   */
+    dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
+    uint64_t rng;
+
+    /* statistics of the last deletion */
+    uint32_t degree;
+    uint64_t qdt_created;         /* cells created in qdt                  */
+    uint64_t fallbacks;           /* sampling fallbacks (guided variants)  */
+    double phase[DD_NPHASES];
+#ifdef DD_COUNTERS
+    struct timespec ph_t0;
+#endif
+} dd_del;
+
+/* Phase timing: compiled in for counting builds only. */
+#ifdef DD_COUNTERS
+void dd_phase_begin(dd_del *d);
+void dd_phase_end(dd_del *d, int phase);
+#define DD_PHASE_BEGIN(d) dd_phase_begin(d)
+#define DD_PHASE_END(d, ph) dd_phase_end(d, ph)
+#else
+#define DD_PHASE_BEGIN(d) ((void)0)
+#define DD_PHASE_END(d, ph) ((void)0)
+#endif
+
+/* A deletion strategy: one const struct per file in variants/. */
+typedef struct dd_variant {
+    const char *name;
+    const char *description;
+    /* Fills d->qdt and d->fill for the cavity of d->q.  d->base holds four
+     * affinely independent neighbours; d->nbr all finite neighbours.      */
+    dd_status (*fill_cavity)(dd_del *d);
+} dd_variant;
+
+/* The registry (variants/registry.c): NULL-terminated, first = default. */
+extern const dd_variant *const dd_variant_table[];
+const dd_variant *dd_find_variant(const char *name);
+
+/* ---- services for strategies -------------------------------------------- */
+
+uint32_t dd_del_rand(dd_del *d);
+/* Shuffles a[0..n) with d's generator. */
+void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n);
+
+/* Moves four affinely independent points of a[0..n) to a[0..3] (the first
+ * found in a's order) and records them in d->base; DD_ERR_COPLANAR if
+ * there are none (the framework has already excluded that case).        */
+dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n);
+
+/* Starts d->qdt as an empty conflict DT (qd = 1) or full DT (qd = 0). */
+void dd_qdt_reset(dd_del *d, int qd);
+
+/* CREATEQCONFLICTDT(P_4): DT(x)_q of the four points d->base, closed by
+ * dummy cells.                                                           */
+dd_status dd_qdt_create(dd_del *d);
+/* QCONFLICTDTINSERT: inserts vertex v into the conflict DT (or the full
+ * DT) by Bowyer-Watson from `start`, a cell in conflict with v.          */
+dd_status dd_qdt_insert(dd_del *d, uint32_t v, uint32_t start);
+/* Unguided point location in a conflict DT: the first live cell found in
+ * conflict with v by scanning the dummy cells (one always is).           */
+dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell);
+/* Lists every live non-dummy cell of the conflict DT in d->fill. */
+dd_status dd_qdt_collect_fill(dd_del *d);
+/* Lists in d->fill the cells of a full DT(P) in d->qdt in conflict with q. */
+dd_status dd_full_collect_fill(dd_del *d);
+/* Builds the full DT of d->nbr in d->qdt, inserting d->base first and then
+ * the rest in the order of d->order (a permutation of d->nbr).           */
+dd_status dd_full_build(dd_del *d);
+
+#endif

@@ -1,0 +1,64 @@
+/*
+ * expansion.h -- exact orient3d / insphere signs in floating-point
+ * expansion arithmetic (Shewchuk 1997, "Adaptive precision floating-point
+ * arithmetic and fast robust geometric predicates"), a faster exact stage
+ * for pred.c than its GMP integers.
+ *
+ * Owns: dd_orient3d_exp and dd_insphere_exp.  Same signs as pred.c's
+ * exact stage (and so as CGAL), no perturbation:
+ *   dd_orient3d_exp(p,q,r,s)    = sign det[q-p; r-p; s-p].
+ *   dd_insphere_exp(p,q,r,s,t)  = sign det of the rows p-t, r-t, q-t, s-t
+ *                                 (note r, q swapped), each lifted with its
+ *                                 squared norm: +1 when t is inside the
+ *                                 sphere of the positively oriented pqrs.
+ *
+ * Invariant: a result in {-1, 0, +1} is the exact sign, for every input;
+ * DD_EXP_UNSAFE means "not decided here, ask the GMP stage".  The
+ * functions are pure: no allocation, no global state, no FP-environment
+ * changes.  They assume IEEE binary64 with round-to-nearest-even (the
+ * default mode) and no x87 excess precision; hardware FMA is neither
+ * needed nor assumed (used only when the compiler targets it, where it
+ * also makes the code safe against FP contraction).
+ *
+ * Safe range.  DD_EXP_UNSAFE is returned exactly when some coordinate of
+ * the input points is NaN, infinite, or has a magnitude outside the
+ * predicate's range (zero is always allowed):
+ *   orient3d:  2^-260 <= |x| <= 2^260   (about 5.4e-79 .. 1.9e78)
+ *   insphere:  2^-140 <= |x| <= 2^140   (about 7.2e-43 .. 1.4e42)
+ * The derivation is at the top of expansion.c.  [1e-30, 1e30] is inside
+ * both; 1e-200 and 1e200 are not.
+ *
+ * Cost: the adaptive stages (float filter with a dynamic bound, exact
+ * determinant of the rounded differences, first-order correction for the
+ * rounding tails, exact determinant of the raw coordinates) make the cost
+ * depend on how degenerate the input is, not on its range.  The last
+ * stage (only when the differences are inexact AND the determinant is
+ * within ~2^-99 of zero relative to its permanent) uses about 110 KB of
+ * stack for insphere; everything else uses under 32 KB.
+ */
+#ifndef DD_EXPANSION_H
+#define DD_EXPANSION_H
+
+#define DD_EXP_UNSAFE 2
+
+/* Stage that decided, reported by the _staged variants (tests, counting). */
+enum {
+    DD_EXP_STAGE_UNSAFE = 0,   /* out of the safe range                     */
+    DD_EXP_STAGE_A = 1,        /* doubles with a dynamic error bound        */
+    DD_EXP_STAGE_B = 2,        /* exact det of the rounded differences      */
+    DD_EXP_STAGE_C = 3,        /* B plus the first-order tail correction    */
+    DD_EXP_STAGE_D = 4         /* exact det of the raw coordinates          */
+};
+
+int dd_orient3d_exp(const double *p, const double *q, const double *r,
+                    const double *s);
+int dd_insphere_exp(const double *p, const double *q, const double *r,
+                    const double *s, const double *t);
+
+/* The same, also storing the deciding stage in *stage (never NULL). */
+int dd_orient3d_exp_staged(const double *p, const double *q, const double *r,
+                           const double *s, int *stage);
+int dd_insphere_exp_staged(const double *p, const double *q, const double *r,
+                           const double *s, const double *t, int *stage);
+
+#endif

@@ -1,0 +1,312 @@
+/*
+ * test_delete.c -- every deletion strategy equals CGAL after every deletion
+ * (DESIGN 6 and 8): single deletions from DT(S) on every dataset, hull and
+ * degenerate cases included, long sequences, delete-then-reinsert, refused
+ * deletions that must leave the triangulation unchanged, and cgal-rnd
+ * against CGAL's own remove().  The validator runs after each deletion.
+ */
+#include "testlib.h"
+#include <math.h>
+#include "dtdel.h"
+#include "cgal/cgal_shim.h"
+#include "../datasets/datasets.h"
+
+typedef struct canon { int32_t *a; size_t n; } canon;
+
+static canon ours(const dd_tri *t)
+{
+    canon c = {NULL, 0};
+    if (dd_canonical(t, &c.a, &c.n) != DD_OK) c.n = (size_t)-1;
+    return c;
+}
+
+static canon theirs(const dd_cgal *g)
+{
+    canon c = {NULL, 0};
+    if (dd_cgal_canonical(g, &c.a, &c.n)) c.n = (size_t)-1;
+    return c;
+}
+
+static int same(canon x, canon y)
+{
+    return x.n == y.n && x.n != (size_t)-1 && !memcmp(x.a, y.a, 4 * x.n * sizeof *x.a);
+}
+
+/* Per-variant tallies over many deletions, reported once per dataset. */
+typedef struct tally { long total, bad; char why[200]; } tally;
+
+static void fail_once(tally *t, const char *fmt, uint32_t v, const char *extra)
+{
+    if (t->bad++ == 0) snprintf(t->why, sizeof t->why, fmt, v, extra);
+}
+
+#define MAXVAR 16
+
+/* Deletes k sampled vertices (hull ones first, then random), each from
+ * DT(S), with every variant, comparing with CGAL; reinserting restores. */
+static void single_deletions(tl_state *st, const char *name, const double *pts, uint32_t n,
+                             uint32_t k, uint64_t seed, int check_every)
+{
+    char msg[256];
+    dd_tri *t;
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    canon orig = ours(t);
+    tally tv[MAXVAR + 1];
+    memset(tv, 0, sizeof tv);
+    tally rnd = {0, 0, ""}, reins = {0, 0, ""};
+    tl_rng r = {seed};
+    uint32_t hull_seen = 0;
+    for (uint32_t it = 0; it < k; it++) {
+        uint32_t v = (uint32_t)tl_int(&r, 0, n - 1);
+        if (!dd_is_vertex(t, v)) continue;
+        if (it < k / 4) {   /* prefer hull vertices for a quarter of the sample */
+            for (int tries = 0; tries < 50 && !dd_on_hull(t, v); tries++) {
+                v = (uint32_t)tl_int(&r, 0, n - 1);
+                while (!dd_is_vertex(t, v)) v = (v + 1) % n;
+            }
+        }
+        hull_seen += (uint32_t)dd_on_hull(t, v);
+        int cg = dd_cgal_remove(g, v);
+        canon ref = theirs(g);
+        int refused = cg != 0;
+        if (!refused) dd_cgal_reinsert(g, v);
+        if (!refused) {
+            dd_cgal_remove_rnd(g, v, seed + it);
+            canon c2 = theirs(g);
+            rnd.total++;
+            if (!same(ref, c2)) fail_once(&rnd, "cgal-rnd differs from cgal deleting %u%s", v, "");
+            free(c2.a);
+            dd_cgal_reinsert(g, v);
+        }
+        for (size_t vi = 0; dd_variant_name(vi) && vi < MAXVAR; vi++) {
+            const char *var = dd_variant_name(vi);
+            tally *ta = &tv[vi];
+            ta->total++;
+            dd_status s = dd_delete(t, v, var);
+            if (refused) {
+                canon now = ours(t);
+                if (s != DD_ERR_DIMENSION || !same(now, orig))
+                    fail_once(ta, "CGAL refuses deleting %u but we did not (or changed the DT): %s", v, dd_errmsg(t));
+                free(now.a);
+                continue;
+            }
+            if (s != DD_OK) {
+                fail_once(ta, "deleting %u failed: %s", v, dd_errmsg(t));
+                continue;
+            }
+            canon now = ours(t);
+            if (!same(now, ref)) fail_once(ta, "deleting %u: result differs from CGAL's%s", v, "");
+            free(now.a);
+            if (check_every && dd_check(t) != DD_OK) fail_once(ta, "deleting %u: validator: %s", v, dd_errmsg(t));
+            reins.total++;
+            if (dd_reinsert(t, v) != DD_OK) {
+                fail_once(&reins, "reinserting %u failed: %s", v, dd_errmsg(t));
+                continue;
+            }
+            canon back = ours(t);
+            if (!same(back, orig)) fail_once(&reins, "delete + reinsert of %u does not restore DT(S)%s", v, "");
+            free(back.a);
+        }
+        free(ref.a);
+    }
+    char tn[160];
+    for (size_t vi = 0; dd_variant_name(vi) && vi < MAXVAR; vi++) {
+        snprintf(tn, sizeof tn, "delete/%s/%s", name, dd_variant_name(vi));
+        tl_check(st, tv[vi].bad == 0 && tv[vi].total > 0, tn, "%ld of %ld deletions wrong; first: %s",
+                 tv[vi].bad, tv[vi].total, tv[vi].why);
+    }
+    snprintf(tn, sizeof tn, "delete/%s/cgal-rnd-equals-cgal", name);
+    tl_check(st, rnd.bad == 0, tn, "%ld of %ld differ; first: %s", rnd.bad, rnd.total, rnd.why);
+    snprintf(tn, sizeof tn, "delete/%s/reinsert-restores", name);
+    tl_check(st, reins.bad == 0 && reins.total > 0, tn, "%ld of %ld; first: %s", reins.bad, reins.total, reins.why);
+    printf("# %s: %u hull vertices among the sampled\n", name, hull_seen);
+    free(orig.a);
+    dd_cgal_free(g);
+    dd_free(t);
+}
+
+/* Deletes `count` vertices one after another (no reinsertion) with one
+ * variant, comparing with CGAL every `every` deletions and at the end.   */
+static void sequence(tl_state *st, const char *name, const double *pts, uint32_t n, uint32_t count,
+                     uint32_t every, const char *var, uint64_t seed)
+{
+    char msg[256], tn[160];
+    dd_tri *t;
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    uint32_t *perm = malloc(n * sizeof *perm);
+    for (uint32_t i = 0; i < n; i++) perm[i] = i;
+    tl_rng r = {seed};
+    for (uint32_t i = n; i > 1; i--) {
+        uint32_t j = (uint32_t)tl_int(&r, 0, i - 1), s = perm[i - 1];
+        perm[i - 1] = perm[j]; perm[j] = s;
+    }
+    uint32_t done = 0, compared = 0;
+    char why[200] = "";
+    int ok = 1;
+    for (uint32_t pass = 0; pass < 3 * n && done < count && ok; pass++) {
+        uint32_t v = perm[pass % n];  /* several passes: refused ones get retried */
+        if (!dd_is_vertex(t, v)) continue;
+        int cg = dd_cgal_remove(g, v);
+        dd_status s = dd_delete(t, v, var);
+        if (cg != 0) {   /* CGAL refuses: we must refuse too, and change nothing */
+            if (s != DD_ERR_DIMENSION) { ok = 0; snprintf(why, sizeof why, "vertex %u: CGAL refuses, we say %s", v, dd_status_name(s)); }
+            continue;
+        }
+        if (s != DD_OK) { ok = 0; snprintf(why, sizeof why, "vertex %u: %s", v, dd_errmsg(t)); break; }
+        done++;
+        if (done % every == 0 || done == count) {
+            canon a = ours(t), b = theirs(g);
+            compared++;
+            if (!same(a, b)) { ok = 0; snprintf(why, sizeof why, "after %u deletions (last %u): differs from CGAL", done, v); }
+            if (ok && dd_check(t) != DD_OK) { ok = 0; snprintf(why, sizeof why, "after %u deletions: %s", done, dd_errmsg(t)); }
+            free(a.a); free(b.a);
+        }
+    }
+    snprintf(tn, sizeof tn, "sequence/%s/%s", name, var);
+    tl_check(st, ok && done == count && compared > 0, tn, "%s (%u of %u deleted, %u comparisons)", why, done, count, compared);
+    free(perm);
+    dd_cgal_free(g);
+    dd_free(t);
+}
+
+static double *gen(const char *ds, uint32_t n, uint32_t *np)
+{
+    double *p = NULL;
+    char msg[256];
+    if (dd_gen(ds, n, 5, &p, np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dd_gen %s: %s\n", ds, msg);
+        exit(1);
+    }
+    return p;
+}
+
+static void refusals(tl_state *st)
+{
+    /* a square pyramid: deleting the apex leaves coplanar points */
+    double pyr[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0.5, 0.5, 1, 1, 0, 0};
+    char msg[256];
+    dd_tri *t;
+    dd_create(&t, pyr, 6, msg, sizeof msg);   /* point 5 duplicates point 1 */
+    canon before = ours(t);
+    dd_status s = dd_delete(t, 4, NULL);
+    canon after = ours(t);
+    tl_check(st, s == DD_ERR_DIMENSION && same(before, after), "refuse/apex-leaves-coplanar",
+             "status %s, unchanged %d", dd_status_name(s), same(before, after));
+    free(after.a);
+    s = dd_delete(t, 5, NULL);
+    after = ours(t);
+    tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && same(before, after) && strstr(dd_errmsg(t), "duplicate"),
+             "refuse/duplicate-index", "status %s: %s", dd_status_name(s), dd_errmsg(t));
+    free(after.a);
+    s = dd_delete(t, 77, NULL);
+    tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && strstr(dd_errmsg(t), "77"), "refuse/unknown-index",
+             "status %s: %s", dd_status_name(s), dd_errmsg(t));
+    s = dd_delete(t, 0, "no-such-variant");
+    after = ours(t);
+    tl_check(st, s == DD_ERR_UNKNOWN_VARIANT && same(before, after), "refuse/unknown-variant",
+             "status %s", dd_status_name(s));
+    free(after.a);
+    dd_free(t);
+
+    /* a tetrahedron: no deletion possible */
+    double tet[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    dd_create(&t, tet, 4, msg, sizeof msg);
+    s = dd_delete(t, 2, NULL);
+    tl_check(st, s == DD_ERR_DIMENSION, "refuse/four-points", "status %s", dd_status_name(s));
+    dd_free(t);
+
+    /* deleted twice; reinserting a vertex that exists; inserting a duplicate */
+    uint32_t np;
+    double *p = gen("uniform", 200, &np);
+    dd_create(&t, p, np, msg, sizeof msg);
+    dd_delete(t, 10, NULL);
+    canon b2 = ours(t);
+    s = dd_delete(t, 10, NULL);
+    canon a2 = ours(t);
+    tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && same(a2, b2), "refuse/deleted-twice", "status %s", dd_status_name(s));
+    free(a2.a);
+    s = dd_reinsert(t, 11);
+    a2 = ours(t);
+    tl_check(st, s == DD_ERR_DUPLICATE && same(a2, b2), "refuse/reinsert-existing", "status %s", dd_status_name(s));
+    free(a2.a);
+    uint32_t idx;
+    s = dd_insert(t, p + 3 * 20, &idx);
+    a2 = ours(t);
+    tl_check(st, s == DD_ERR_DUPLICATE && same(a2, b2) && dd_num_input(t) == np, "refuse/insert-duplicate",
+             "status %s", dd_status_name(s));
+    free(a2.a);
+    double nanp[3] = {0.5, NAN, 0.5};
+    s = dd_insert(t, nanp, &idx);
+    tl_check(st, s == DD_ERR_NAN, "refuse/insert-nan", "status %s", dd_status_name(s));
+    /* a fresh point: inserted, then deleted again, equals CGAL */
+    double fresh[3] = {0.123, 0.456, 0.789};
+    s = dd_insert(t, fresh, &idx);
+    tl_check(st, s == DD_OK && idx == np && dd_is_vertex(t, idx) && dd_check(t) == DD_OK,
+             "insert/new-point", "status %s, index %u", dd_status_name(s), idx);
+    free(b2.a);
+    dd_free(t);
+    free(p);
+}
+
+int main(int argc, char **argv)
+{
+    tl_state st = {0, 0};
+    int small = argc > 1 && !strcmp(argv[1], "small");
+    uint32_t k = small ? 15 : 60;
+    struct { const char *ds; uint32_t n; } sets[] = {
+        {"uniform", 2000}, {"sphere", 1000}, {"moment", 64}, {"moment", 200}, {"helix", 1500},
+        {"grid", 216}, {"grid", 1000}, {"cosphere", 300}, {"layers", 128}, {"grid-perturbed", 512},
+        {"bunny", 2000}, {"cow", 0}};
+    for (size_t i = 0; i < sizeof sets / sizeof *sets; i++) {
+        uint32_t np;
+        double *p = gen(sets[i].ds, sets[i].n, &np);
+        char name[64];
+        snprintf(name, sizeof name, "%s-%u", sets[i].ds, np);
+        single_deletions(&st, name, p, np, k, 1000 + i, 1);
+        free(p);
+    }
+    /* scaled inputs */
+    {
+        uint32_t np;
+        double *p = gen("grid", 343, &np);
+        for (uint32_t i = 0; i < 3 * np; i++) p[i] *= 1e-200;
+        single_deletions(&st, "grid-343-x1e-200", p, np, k, 77, 1);
+        for (uint32_t i = 0; i < 3 * np; i++) p[i] *= 1e216;
+        single_deletions(&st, "grid-343-x1e16", p, np, k, 78, 1);
+        free(p);
+    }
+    /* hull vertex with coplanar finite neighbours: a 5x5 grid, one point
+     * above its centre, one below a corner                                 */
+    {
+        double p[3 * 27];
+        uint32_t n = 0;
+        for (int x = 0; x < 5; x++)
+            for (int y = 0; y < 5; y++) { p[3 * n] = x; p[3 * n + 1] = y; p[3 * n + 2] = 0; n++; }
+        p[3 * n] = 2; p[3 * n + 1] = 2; p[3 * n + 2] = 3; n++;
+        p[3 * n] = 0.5; p[3 * n + 1] = 0.5; p[3 * n + 2] = -1; n++;
+        single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1);
+    }
+    const char *var[] = {"dtq-only", "sew-full"};
+    for (size_t vi = 0; vi < sizeof var / sizeof *var; vi++) {
+        uint32_t np;
+        double *p = gen("uniform", small ? 600 : 5000, &np);
+        sequence(&st, small ? "uniform-600-half" : "uniform-5000-half", p, np, np / 2, small ? 50 : 250, var[vi], 11);
+        free(p);
+        p = gen("grid", 216, &np);
+        sequence(&st, "grid-216-all-but-4", p, np, np - 4, 20, var[vi], 12);
+        free(p);
+        p = gen("cosphere", 200, &np);
+        sequence(&st, "cosphere-200-all-but-4", p, np, np - 4, 10, var[vi], 13);
+        free(p);
+    }
+    refusals(&st);
+    return tl_finish(&st);
+}

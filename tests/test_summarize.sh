@@ -1,0 +1,151 @@
+#!/bin/sh
+# build/summarize on a small CSV whose statistics are worked out by hand:
+# exact medians, quartiles (linear interpolation), ratios to cgal, mismatch
+# counts, bucket boundaries, column order, the gnuplot data lines, and the
+# exit codes and messages on malformed input.  Prints ok/FAIL lines.
+SUM=${1:-build/summarize}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+
+ok() { echo "ok summarize/$1"; }
+bad() { echo "FAIL summarize/$1: $2"; failed=1; }
+
+# has NAME FILE LINE: FILE holds LINE exactly, as a whole line
+has() {
+    if grep -qxF -- "$3" "$2" 2>/dev/null; then ok "$1"; else
+        bad "$1" "no line \"$3\" in $(basename "$2")"; fi
+}
+
+# expect NAME CODE PATTERN CMD...: exit code CODE, stderr matching PATTERN
+expect() {
+    name=$1; code=$2; pat=$3; shift 3
+    "$@" >"$tmp/out" 2>"$tmp/err"
+    rc=$?
+    if [ $rc -ne "$code" ]; then
+        bad "$name" "exit $rc, expected $code; stderr: $(head -c 300 "$tmp/err")"
+    elif [ -n "$pat" ] && ! grep -qE -- "$pat" "$tmp/err"; then
+        bad "$name" "stderr does not match /$pat/: $(head -c 300 "$tmp/err")"
+    else
+        ok "$name"
+    fi
+}
+
+H=dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,locate_us,conflict_us,sew_us,match
+
+# Dataset toy, bucket [4,8):
+#   cgal     us 10 20 30 40 50   -> median 30, q1 20, q3 40
+#   grr-edge us 4 8 12 16 20     -> 12 (8-16), ratio 30/12 = 2.50,
+#            tets 10..50 -> 30, link 1..5 -> 3, conflict 2, sew 1.5
+#   sew-full us 6 9 15 (3 rows)  -> 9 (7.5-12), ratio 30/9 = 3.33
+# bucket [16,24):
+#   cgal 100 300 -> 200 (150-250); grr-edge 50 150 -> 100 (75-125) x2.00,
+#   tets 7 8 -> 7.5, one mismatch; zeta-x 400 400 -> x0.50, one mismatch.
+# grr-edge over all 7 rows: link 1..7 -> 4, us median 16.
+# Dataset other: cgal 1000 and grr-edge 500 at degree 20, no mismatch.
+# Pooled [16,24): grr-edge 50 150 500 -> 150 against cgal 100 300 1000
+# -> 300: x2.00; zeta-x (toy only) against toy's cgal 200: x0.50.
+# Dataset edges: cgal only, one row per bucket boundary.
+cat >"$tmp/toy.csv" <<EOF
+$H
+toy,1000,1,5,0,cgal,10,,,,,,1
+toy,1000,2,6,0,cgal,20,,,,,,1
+toy,1000,3,7,1,cgal,30,,,,,,1
+toy,1000,4,5,0,cgal,40,,,,,,1
+toy,1000,5,4,0,cgal,50,,,,,,1
+toy,1000,1,5,0,grr-edge,4,10,1,,2,1.5,1
+toy,1000,2,6,0,grr-edge,8,20,2,,2,1.5,1
+toy,1000,3,7,1,grr-edge,12,30,3,,2,1.5,1
+toy,1000,4,5,0,grr-edge,16,40,4,,2,1.5,1
+toy,1000,5,4,0,grr-edge,20,50,5,,2,1.5,1
+toy,1000,1,5,0,sew-full,6,,,,,,1
+toy,1000,2,6,0,sew-full,9,,,,,,1
+toy,1000,3,7,1,sew-full,15,,,,,,1
+toy,1000,6,20,0,cgal,100,,,,,,1
+toy,1000,7,23,0,cgal,300,,,,,,1
+toy,1000,6,20,0,grr-edge,50,7,6,,2,1.5,0
+toy,1000,7,23,0,grr-edge,150,8,7,,2,1.5,1
+toy,1000,6,20,0,zeta-x,400,,,,,,1
+toy,1000,7,23,0,zeta-x,400,,,,,,0
+EOF
+printf '%s\r\nother,50,9,20,1,grr-edge,500,9,,,,,1\r\nother,50,9,20,1,cgal,1000,,,,,,1\r\n\r\n' "$H" >"$tmp/other.csv"
+cat >"$tmp/edges.csv" <<EOF
+$H
+edges,2000,1,3,0,cgal,1,,,,,,1
+edges,2000,2,11,0,cgal,1,,,,,,1
+edges,2000,3,12,0,cgal,1,,,,,,1
+edges,2000,4,1100,0,cgal,1,,,,,,1
+edges,2000,5,1536,0,cgal,1,,,,,,1
+EOF
+mkdir "$tmp/out1"
+printf 'machine: testbox\ncgal: 9.9\n' >"$tmp/out1/meta.txt"
+
+expect runs 0 "MISMATCHES in toy: 2" "$SUM" "$tmp/out1" "$tmp/toy.csv" "$tmp/other.csv" "$tmp/edges.csv"
+md=$tmp/out1/summary.md
+has meta-line "$md" "- **machine**: testbox"
+has column-order "$md" "| degree | deletions | cgal | sew-full | grr-edge | zeta-x |"
+has bucket-4-8 "$md" "| [4,8) | 5 | 30.0 (20.0–40.0) | 9.00 (7.50–12.0) ×3.33 [3 rows] | 12.0 (8.00–16.0) ×2.50 | — |"
+has bucket-16-24 "$md" "| [16,24) | 2 | 200 (150–250) | — | 100 (75.0–125) ×2.00 | 400 (400–400) ×0.50 |"
+has mismatch-row "$md" "| **mismatches** | 2 | 0 | 0 | **1** | **1** |"
+has mismatch-loud "$md" "**MISMATCHES: 2** deletions differ from CGAL's canonical form (a bug): grr-edge 1; zeta-x 1;"
+has mismatch-listed "$md" "- MISMATCH toy n=1000 vertex=7 degree=23 variant=zeta-x ($tmp/toy.csv:20)"
+has mismatch-zero "$md" "mismatches: 0"
+has mismatch-total "$md" "**MISMATCHES: 2 in total** -- see the datasets below."
+has phase-row "$md" "| grr-edge | 7 | 4.00 | — | 2.00 | 1.50 | 16.0 |"
+has tets-header "$md" "| degree | grr-edge |"
+has tets-row "$md" "| [16,24) | 7.5 |"
+has crlf-dataset "$md" "| [16,24) | 1 | 1000 (1000–1000) | 500 (500–500) ×2.00 |"
+has pooled-ratio "$md" "| [16,24) | 3 | 300 (200–650) | — | 150 (100–325) ×2.00 | 400 (400–400) ×0.50 [2 rows] |"
+for b in "[0,4)" "[8,12)" "[12,16)" "[1024,1536)" "[1536,2048)"; do
+    has "bucket-$b" "$md" "| $b | 1 | 1.00 (1.00–1.00) |"
+done
+rows=$(awk '/^## /{ on = ($2 == "edges") } on && /^\| \[/{ n++ } END { print n + 0 }' "$md")
+if [ "$rows" -eq 5 ]; then ok no-empty-buckets; else
+    bad no-empty-buckets "edges has $rows bucket rows, expected 5"; fi
+
+pd=$tmp/out1/plotdata
+has dat-title "$pd/toy.dat" "# title: toy (n = 1000), 7 deletions"
+has dat-grr-edge-4-8 "$pd/toy.dat" "5.5 12 8 16 2.5 30 3 NaN 2 1.5 4 8 5 0"
+has dat-grr-edge-16-24 "$pd/toy.dat" "19.5 100 75 125 2 7.5 6.5 NaN 2 1.5 16 24 2 1"
+has dat-cgal "$pd/toy.dat" "5.5 30 20 40 1 NaN NaN NaN NaN NaN 4 8 5 0"
+has dat-pooled-zeta "$pd/all-datasets.dat" "19.5 400 400 400 0.5 NaN NaN NaN NaN NaN 16 24 2 1"
+# block i of toy.dat is variant i of toy.variants
+blocks=$(awk '/^# variant /{ printf "%s ", $3 }' "$pd/toy.dat")
+if [ "$blocks" = "cgal sew-full grr-edge zeta-x " ] &&
+   [ "$(tr '\n' ' ' <"$pd/toy.variants")" = "$blocks" ]; then ok variants-file; else
+    bad variants-file "blocks \"$blocks\", variants \"$(tr '\n' ' ' <"$pd/toy.variants")\""; fi
+nblank=$(awk 'prev == "" && $0 == "" { n++ } { prev = $0 } END { print n + 0 }' "$pd/toy.dat")
+if [ "$nblank" -eq 3 ]; then ok block-separators; else
+    bad block-separators "$nblank double blank lines, expected 3"; fi
+has phases-file "$pd/toy.phases" "grr-edge 4 NaN 2 1.5 16"
+if [ "$(cat "$pd/datasets.txt" | tr '\n' ' ')" = "toy other edges " ]; then ok datasets-list; else
+    bad datasets-list "got $(tr '\n' ' ' <"$pd/datasets.txt")"; fi
+
+# Malformed input: exit 1, FILE:LINE and what is wrong.
+printf '%s\ntoy,10,1,5,0,cgal,1,,,,,,1\ntoy,10,2,5,0,cgal,1,,,,,1\n' "$H" >"$tmp/fields.csv"
+printf '%s\ntoy,10,1,5,0,cgal,fast,,,,,,1\n' "$H" >"$tmp/us.csv"
+printf '%s\ntoy,10,1,5,0,cgal,1,,,,,,1\ntoy,10,1,5,0,cgal,1,,,,,,2\n' "$H" >"$tmp/match.csv"
+printf '%s\ntoy,10,1,5,0,cgal,nan,,,,,,1\n' "$H" >"$tmp/nan.csv"
+printf '%s\ntoy,10,1,5,0,grr-edge,1,x,,,,,1\n' "$H" >"$tmp/tets.csv"
+printf '%s\ntoy,10,1,5,0,grr-edge,1,3,1,-2,,,1\n' "$H" >"$tmp/phase.csv"
+printf '%s\n../x,10,1,5,0,cgal,1,,,,,,1\n' "$H" >"$tmp/name.csv"
+printf 'dataset,n,vertex,degree,variant,us\ntoy,10,1,5,cgal,1\n' >"$tmp/header.csv"
+printf '%s\n' "$H" >"$tmp/empty.csv"
+: >"$tmp/nothing.csv"
+mkdir "$tmp/out2"
+expect bad-field-count 1 "fields\.csv:3: expected 13 comma-separated fields, got 12" "$SUM" "$tmp/out2" "$tmp/fields.csv"
+expect bad-us 1 "us\.csv:2: us must be" "$SUM" "$tmp/out2" "$tmp/us.csv"
+expect bad-match 1 "match\.csv:3: match must be 0 or 1" "$SUM" "$tmp/out2" "$tmp/match.csv"
+expect bad-nan 1 "nan\.csv:2: us must be" "$SUM" "$tmp/out2" "$tmp/nan.csv"
+expect bad-tets 1 "tets\.csv:2: tets_created" "$SUM" "$tmp/out2" "$tmp/tets.csv"
+expect bad-phase 1 "phase\.csv:2: locate_us" "$SUM" "$tmp/out2" "$tmp/phase.csv"
+expect bad-dataset-name 1 "name\.csv:2: dataset must be" "$SUM" "$tmp/out2" "$tmp/name.csv"
+expect bad-header 1 "header\.csv:1: header must be" "$SUM" "$tmp/out2" "$tmp/header.csv"
+expect second-file-line 1 "us\.csv:2" "$SUM" "$tmp/out2" "$tmp/toy.csv" "$tmp/us.csv"
+expect no-rows 1 "no data rows" "$SUM" "$tmp/out2" "$tmp/empty.csv"
+expect empty-file 1 "nothing\.csv:1: empty file" "$SUM" "$tmp/out2" "$tmp/nothing.csv"
+expect missing-file 1 "cannot open .*nope\.csv" "$SUM" "$tmp/out2" "$tmp/nope.csv"
+expect usage 2 "usage: summarize OUTDIR CSV" "$SUM" "$tmp/out2"
+if [ -e "$tmp/out2/summary.md" ]; then bad no-output-on-error "summary.md written"; else
+    ok no-output-on-error; fi
+exit $failed

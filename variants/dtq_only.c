@@ -1,0 +1,38 @@
+/*
+ * dtq_only.c -- DT(x)-only (paper 5, variants table): the conflict DT of
+ * q's neighbours built in random order, without a guide.
+ *
+ * Point location: no guide means no idea where the next point lands, so
+ * each point is located by scanning the dummy cells of the conflict DT for
+ * one in conflict with it (there always is one: the point becomes a link
+ * vertex, so it destroys at least one link triangle).  Robust (only the
+ * exact conflict test is used) and O(size of the link) per point.
+ */
+#include "../src/delete.h"
+
+static dd_status dtq_only_fill(dd_del *d)
+{
+    dd_status s = DD_OK;
+    dd_del_shuffle(d, d->order.a, d->order.n);
+    s = dd_del_pick_base(d, d->order.a, d->order.n);
+    if (s != DD_OK) return s;
+    dd_qdt_reset(d, 1);
+    DD_PHASE_BEGIN(d);
+    s = dd_qdt_create(d);
+    DD_PHASE_END(d, DD_PH_CONFLICT);
+    for (size_t k = 4; k < d->order.n && s == DD_OK; k++) {
+        uint32_t v = d->order.a[k], c = 0;
+        s = dd_qdt_scan(d, v, &c);
+        DD_PHASE_END(d, DD_PH_LOCATE);
+        if (s == DD_OK) s = dd_qdt_insert(d, v, c);
+        DD_PHASE_END(d, DD_PH_CONFLICT);
+    }
+    if (s == DD_OK) s = dd_qdt_collect_fill(d);
+    return s;
+}
+
+const dd_variant dd_variant_dtq_only = {
+    "dtq-only",
+    "conflict DT of the neighbours in random order, no guide (scan location)",
+    dtq_only_fill,
+};
