@@ -28,7 +28,8 @@ CXXFLAGS_A = -std=c++17 -O1 -g -frounding-math -Wall -Wextra -fsanitize=address,
 LIBS     = -lgmp -lmpfr -lm
 
 LIB_SRC  = $(wildcard src/*.c) $(wildcard variants/*.c)
-LIB_SRC := $(filter-out src/cli.c,$(LIB_SRC))
+LIB_SRC := $(filter-out src/cli%,$(LIB_SRC))
+CLI_SRC  = $(wildcard src/cli*.c)
 DATA_SRC = datasets/datasets.c
 SHIM_SRC = src/cgal/cgal_shim.cpp
 TEST_C   = $(wildcard tests/test_*.c)
@@ -63,7 +64,7 @@ $(B)/obj/%.o: %.cpp $(HDRS)
 $(B)/libdtdel.a: $(LIB_OBJ_R)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(B)/obj/src/cli.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 $(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
@@ -80,7 +81,7 @@ $(A)/obj/%.o: %.cpp $(HDRS)
 $(A)/libdtdel.a: $(LIB_OBJ_A)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(A)/obj/src/cli.o $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
 $(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(A)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
@@ -97,14 +98,22 @@ $(K)/obj/%.o: %.cpp $(HDRS)
 $(K)/libdtdel.a: $(LIB_OBJ_K)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(K)/obj/src/cli.o $(K)/obj/datasets/datasets.o $(K)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(K)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
+
+# ---- bench summary and plots ----------------------------------------------------
+$(B)/summarize: scripts/summarize.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) $< -o $@ -lm
+$(A)/summarize: scripts/summarize.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_A) $< -o $@ -lm
 
 # ---- tests --------------------------------------------------------------------
 # Both suites run; the runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
-	@$(MAKE) --no-print-directory $(B)/dtdel $(TESTS_R) $(A)/dtdel $(TESTS_A)
+	@$(MAKE) --no-print-directory $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
 	@sh tests/run.sh $(B) $(A)
 
 # ---- bench --------------------------------------------------------------------
@@ -114,8 +123,8 @@ bench: deps $(B)/dtdel
 bench-quick: deps $(B)/dtdel
 	@sh scripts/bench.sh quick
 
-plots:
-	@sh scripts/plots.sh
+plots: $(B)/summarize
+	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include

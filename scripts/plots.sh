@@ -100,7 +100,6 @@ set bmargin 6
 set label 1 $(gq "$footer") at screen 0.01, screen 0.02 left noenhanced $small tc rgb '#555555'
 set datafile missing 'NaN'
 set logscale x 2
-set offsets 0, 0, graph 0.04, graph 0.04
 set xtics (4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384) nomirror
 set xtics add ("" 6 1, "" 12 1, "" 24 1, "" 48 1, "" 96 1, "" 192 1, "" 384 1, "" 768 1, "" 1536 1, "" 3072 1, "" 6144 1)
 EOF
@@ -115,18 +114,23 @@ log125() {
     echo ') nomirror'
 }
 
-# ranges NAME COL...: when the data of NAME.dat in columns COL... spans
-# less than a factor 2.6 (one bucket, or one value), widen the log axes so
-# that they show at least one labelled tic; otherwise leave autoscaling.
+# ranges NAME COL...: axis ranges for NAME.dat: x spans the degree buckets
+# shown, y the values in columns COL... (and 1 when COL is "1"); each axis
+# spans at least a factor 2.6 so that it shows a labelled tic, with a
+# margin so that no point sits on the border.
 ranges() {
     f=$pd/$1.dat; shift
     awk -v cols="$*" 'BEGIN { nc = split(cols, c, " ") }
+        function widen(lo, hi, axis,   r, m) {
+            lo /= 1.25; hi *= 1.25; r = hi / lo
+            if (r < 2.6) { m = sqrt(2.6 / r); lo /= m; hi *= m }
+            printf "set %srange [%g:%g]\n", axis, lo, hi }
         /^#/ || NF < 12 { next }
         { lo = $11 < 1 ? 1 : $11; if (!xl || lo < xl) xl = lo; if ($12 > xh) xh = $12
-          for (i = 1; i <= nc; i++) { v = $(c[i]); if (v == "NaN" || v <= 0) continue
+          for (i = 1; i <= nc; i++) { v = c[i] == "1" ? 1 : $(c[i])
+              if (v == "NaN" || v <= 0) continue
               if (!yl || v < yl) yl = v; if (v > yh) yh = v } }
-        END { if (xl && xh / xl < 2.6) printf "set xrange [%g:%g]\n", xl / 1.5, xh * 1.5
-              if (yl && yh / yl < 2.6) printf "set yrange [%g:%g]\n", yl / 1.6, yh * 1.6 }' "$f"
+        END { if (xl) widen(xl * 1.25, xh / 1.25, "x"); if (yl) widen(yl, yh, "y") }' "$f"
 }
 
 failed=0
@@ -180,10 +184,10 @@ ratio_plot() {
         echo "set logscale y 2"
         echo "set format y '%g'"
         echo "set ytics (0.125, 0.25, 0.5, 0.75, 1, 1.5, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128, 256, 512, 1024)"
-        ranges "$1" 5
+        ranges "$1" 5 1
         printf "plot 1 with lines lc rgb '#000000' lw 2 dt 1 title 'CGAL (ratio 1)'"
         blocks "$1" | while read -r i v t r tk; do
-            [ "$r" = 1 ] && [ "$v" != cgal ] || continue
+            if [ "$r" != 1 ] || [ "$v" = cgal ]; then continue; fi
             printf ", \\\\\n  %s index %s using 1:5 with linespoints %s ps 1.3 title %s" \
                 "$(gq "$pd/$1.dat")" "$i" "$(style "$v" "$i")" "$(gq "$v")"
         done

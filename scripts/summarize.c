@@ -12,18 +12,25 @@
  * no quoting.  tets_created and the four phase times may be empty
  * (unknown); every other field is required.  Rows are grouped by the
  * dataset column (not the file name) and, inside a dataset, over all its
- * sizes n.  Blank lines are skipped; anything else malformed stops the run
- * with "FILE:LINE: what" on stderr and exit status 1 (2 for bad usage).
+ * sizes n.  A dataset name is made of letters, digits, '.', '_', '-' (it
+ * names files); a variant name is any printable ASCII without spaces or
+ * | " ' ` \ (it goes into Markdown tables and gnuplot strings).  Blank
+ * lines are skipped; anything else malformed stops the run with
+ * "FILE:LINE: what" on stderr and exit status 1 (2 for bad usage), before
+ * any output is written.
  *
  * Degree buckets.  [0,4) [4,8), then two buckets per power of two:
  * [2^k, 1.5*2^k) and [1.5*2^k, 2^(k+1)) for k >= 3, i.e.
  *   [8,12) [12,16) [16,24) [24,32) [32,48) [48,64) [64,96) [96,128)
  *   [128,192) [192,256) [256,384) [384,512) [512,768) [768,1024)
  *   [1024,1536) [1536,2048) ...
- * so the width is between a quarter and a half of the lower bound: even on
- * the log axis, about 5 points per decade of degree.  Empty buckets are
- * skipped.  A bucket's plotted x is the middle of its integer degrees,
- * (lo + hi - 1) / 2.
+ * so each is a half or a third of its lower bound wide: nearly even steps
+ * on the log axis, about 6.6 buckets per decade of degree, with the paper's
+ * 64, 128 and 256 as boundaries.  Empty buckets are skipped.  A bucket's
+ * plotted x is the middle of its integer degrees, (lo + hi - 1) / 2.
+ * "deletions" in a bucket is the row count of the variant with the most
+ * rows there (every variant deletes the same vertices); a variant with
+ * fewer rows has its count shown in its cell, "[k rows]".
  *
  * Statistics.  Quantiles by linear interpolation between order statistics
  * (Hyndman-Fan type 7, R's and numpy's default): for sorted x[0..m-1] the
@@ -114,7 +121,8 @@ typedef struct strtab {
 
 /* Statistics of one (bucket, variant) cell. */
 typedef struct cell {
-    size_t first, rows;        /* its rows: idx[first .. first+rows-1]    */
+    size_t first, rows;        /* rows idx[first..first+rows-1] of
+                                  build_table's sorted index array        */
     size_t mismatches, on_hull;
     double med, q1, q3;        /* of us                                   */
     double ratio;              /* cgal med / med, NaN without cgal        */

@@ -37,33 +37,37 @@
  *   (C) else c_l (the end on the v1 side).
  * parent(v2) = v1.
  *
- * Why nobody gets a third child.  Call an addition with w = c_r a left
- * event at w, one with w = c_l a right event at w.  The contour neighbour
- * of w on a side changes only at an event on that side, and then becomes
- * vk, newer than w; when w is added both its contour neighbours are older.
- * So "w's left neighbour is older than w" <=> no left event at w yet, and
- * likewise on the right.  While on the contour w gains children only at
- * its own events; covered, it never gains any again (it has no later
- * neighbours), except at the covering step by (B), and only if it has < 2.
- *   Left events give w at most one child: only (A) gives a child to c_r,
- *   and only at w's first left event is w the newer end.
- *   Right events: (A) gives w a child only at the first right event (after
- *   it the right neighbour is newer); (B) gives none; (C) gives one.
- *   Lemma: (C) never happens at a w whose right neighbour x = c_{l+1} is
- *   newer than w.  Take the first such event.  x is covered, so by (C) it
- *   has 2 children.  x's left neighbour w is older than x, so x has had no
- *   left event, and its children came from right events: at most one from
- *   its first right event, the rest from (C) at x with x's right neighbour
- *   newer than x -- an earlier event of the kind we took as first.
- * Hence w gains at most one child from each side while on the contour, and
- * (B) only tops a covered vertex up to two: every vertex has <= 2 children
- * and so degree <= 3.  v1's right neighbour is always newer than v1 (v2,
- * then later vertices) and v1 is never c_r, so v1 has the single child v2.
- * The rule relies on c_l meaning the v1 side consistently: with (C) taking
- * c_r instead the mirrored proof holds, but a mixture of the two, or (A)
- * taking the older end, breaks it (see tests/test_bdst.c's notes).  The
- * forward pass still checks the bound and returns DD_BDST_EINTERNAL if it
- * ever broke.
+ * Why nobody gets a third child.  Call the addition of vk an event at
+ * each end of its path: a left event at c_r, a right event at c_l.  The
+ * contour neighbour of w on a side changes only at an event of w on that
+ * side, and then becomes vk, newer than w; when w is added both its
+ * contour neighbours are older.  So w's neighbour on a side is older than
+ * w exactly while w has had no event on that side.  A covered vertex has
+ * no later neighbours and never gains a child after the covering step.
+ * Invariant: a contour vertex has gained at most one child per side, and
+ * only at its first event on that side.
+ *   (A) at w's first event on a side gives w the child (w is the newer
+ *       end); at a later one the other end, vk's predecessor there, is
+ *       newer than w and takes it.
+ *   (C) needs every covered vertex to have 2 children, hence (invariant)
+ *       events on both sides, hence both contour neighbours newer than
+ *       itself.  Two adjacent vertices cannot each be newer than the
+ *       other, so there is exactly one covered vertex x, older than both
+ *       c_l and c_r.  The end w that takes the child thus has x, older, as
+ *       neighbour on that side: it is w's first event there.
+ *   (B) gives the child to a covered vertex, which then has <= 2 and
+ *       leaves the contour.
+ * So every vertex has <= 2 children and degree <= 3.  v1 has only v2: v1
+ * is never c_r, (A) with v1 = c_l gives the child to the newer end, and
+ * (C) with w = v1 would need the covered x older than v1, impossible.
+ * What the proof needs: (A) must take the NEWER end (taking the older one
+ * lets an old vertex collect a child at every event on a side: degree 4+
+ * within small tests); (B) must prefer covered vertices.  Which end (C)
+ * takes does not matter (c_l here, as in DESIGN 6; c_r or any mixture
+ * also passes the tests).  (C) is rare: it never occurred with the LIFO
+ * peeling below on the test inputs; dd_bdst_ws_set_seed draws other
+ * canonical orderings, under which it does occur, to test it.  The forward
+ * pass still checks the bound and returns DD_BDST_EINTERNAL if it broke.
  */
 #include "bdst.h"
 
@@ -77,9 +81,14 @@ enum { ST_INNER = 0, ST_CONTOUR = 1, ST_GONE = 2, ST_MASK = 3, ST_STACKED = 4 };
 
 struct dd_bdst_ws {
     uint32_t cap_v;       /* vertex capacity; half-edge capacity 6*cap_v  */
+    uint64_t seed;        /* 0: LIFO peeling; else pseudo-random picks    */
+    uint64_t rng;         /* this call's generator state, from seed       */
+    uint32_t rule[3];     /* parents given by (A), (B), (C), last call    */
     void *block;          /* one allocation carved into the arrays below  */
     /* per half-edge */
     uint32_t *oh;         /* half-edges sorted by origin (CSR)            */
+    uint32_t *odst;       /* odst[e] = dst(oh[e]): the adjacency lists    */
+    uint32_t *othird;     /* the third corner of oh[e]'s triangle         */
     uint32_t *twin;       /* reverse half-edge                            */
     /* per vertex */
     uint32_t *ostart;     /* oh[ostart[v] .. ostart[v+1]) leave v (nv+1)  */
@@ -131,9 +140,9 @@ static int grow_ws(dd_bdst_ws *ws, uint32_t nv)
     if (cap < (size_t)ws->cap_v + ws->cap_v / 2) cap = (size_t)ws->cap_v + ws->cap_v / 2;
     if (cap > DD_BDST_MAX_NV) cap = DD_BDST_MAX_NV;
     size_t nh = 6 * cap;
-    /* 2 half-edge arrays, 17 vertex arrays + ostart's extra slot + child's
-     * second half, then 2 byte arrays                                      */
-    size_t n32 = 2 * nh + 18 * cap + 1;
+    /* 4 half-edge arrays; 16 vertex arrays (ostart one longer) and child
+     * (two per vertex); then the 2 byte arrays: about 170 bytes a vertex  */
+    size_t n32 = 4 * nh + 18 * cap + 1;
     void *b = malloc(n32 * sizeof(uint32_t) + 2 * cap);
     if (!b) return DD_BDST_ENOMEM;
     free(ws->block);
@@ -141,6 +150,8 @@ static int grow_ws(dd_bdst_ws *ws, uint32_t nv)
     ws->cap_v = (uint32_t)cap;
     uint32_t *p = b;
     ws->oh = p;     p += nh;
+    ws->odst = p;   p += nh;
+    ws->othird = p; p += nh;
     ws->twin = p;   p += nh;
     ws->ostart = p; p += cap + 1;
     ws->stamp = p;  p += cap;
@@ -179,11 +190,16 @@ static int sort_by_origin(dd_bdst_ws *ws, const uint32_t *tri, uint32_t nh, uint
         ostart[a + 1]++; ostart[b + 1]++; ostart[c + 1]++;
     }
     for (uint32_t v = 0; v < nv; v++) {
-        if (ostart[v + 1] < 3) return DD_BDST_ELINK;  /* isolated or pinched */
+        if (ostart[v + 1] < 3) return DD_BDST_ELINK;  /* isolated vertex */
         ostart[v + 1] += ostart[v];
     }
     /* place h at ostart[org]++, then shift the offsets back by one vertex */
-    for (uint32_t h = 0; h < nh; h++) ws->oh[ostart[tri[h]]++] = h;
+    for (uint32_t t = 0; t < nh; t += 3) {
+        uint32_t a = tri[t], b = tri[t + 1], c = tri[t + 2], e;
+        e = ostart[a]++; ws->oh[e] = t;     ws->odst[e] = b; ws->othird[e] = c;
+        e = ostart[b]++; ws->oh[e] = t + 1; ws->odst[e] = c; ws->othird[e] = a;
+        e = ostart[c]++; ws->oh[e] = t + 2; ws->odst[e] = a; ws->othird[e] = b;
+    }
     for (uint32_t v = nv; v > 0; v--) ostart[v] = ostart[v - 1];
     ostart[0] = 0;
     return DD_BDST_OK;
@@ -193,22 +209,22 @@ static int sort_by_origin(dd_bdst_ws *ws, const uint32_t *tri, uint32_t nh, uint
  * stamped; the incoming c->a are exactly prev(h) for h leaving a, each
  * paired with the stamped a->c.  A repeated a->b or a missing a->c is
  * DD_BDST_EEDGE.  O(nv + ntri).                                           */
-static int pair_twins(dd_bdst_ws *ws, const uint32_t *tri, uint32_t nv)
+static int pair_twins(dd_bdst_ws *ws, uint32_t nv)
 {
     uint32_t *stamp = ws->stamp, *slot = ws->slot;
     memset(stamp, 0, (size_t)nv * sizeof *stamp);
     for (uint32_t a = 0; a < nv; a++) {
         uint32_t e0 = ws->ostart[a], e1 = ws->ostart[a + 1];
         for (uint32_t e = e0; e < e1; e++) {
-            uint32_t h = ws->oh[e], b = he_dst(tri, h);
+            uint32_t b = ws->odst[e];
             if (stamp[b] == a + 1) return DD_BDST_EEDGE;
             stamp[b] = a + 1;
-            slot[b] = h;
+            slot[b] = ws->oh[e];
         }
         for (uint32_t e = e0; e < e1; e++) {
-            uint32_t g = he_prev(ws->oh[e]), c = tri[g];
+            uint32_t c = ws->othird[e];
             if (stamp[c] != a + 1) return DD_BDST_EEDGE;
-            ws->twin[g] = slot[c];
+            ws->twin[he_prev(ws->oh[e])] = slot[c];
         }
     }
     return DD_BDST_OK;
@@ -245,6 +261,14 @@ static inline void push_candidate(dd_bdst_ws *ws, uint32_t *sp, uint32_t v)
 static inline uint32_t pop_candidate(dd_bdst_ws *ws, uint32_t *sp)
 {
     while (*sp > 0) {
+        if (ws->seed) {                       /* move a random entry on top */
+            uint64_t z = (ws->rng += 0x9E3779B97F4A7C15ull);
+            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+            uint32_t j = (uint32_t)((z ^ (z >> 31)) % *sp), t = ws->stack[j];
+            ws->stack[j] = ws->stack[*sp - 1];
+            ws->stack[*sp - 1] = t;
+        }
         uint32_t v = ws->stack[--*sp];
         ws->state[v] &= (uint8_t)~ST_STACKED;
         if (ws->state[v] == ST_CONTOUR && ws->chord[v] == 0) return v;
@@ -256,20 +280,23 @@ static inline uint32_t pop_candidate(dd_bdst_ws *ws, uint32_t *sp)
  * not on the contour yet), reached by g = x->u around the peeled vertex x,
  * and counts u's chords: its edges to contour vertices other than last and
  * nxt.  Every chord is counted by its end that joins the contour last.    */
-static void expose(dd_bdst_ws *ws, const uint32_t *tri, uint32_t u, uint32_t g,
+static void expose(dd_bdst_ws *ws, uint32_t u, uint32_t g,
                    uint32_t last, uint32_t nxt)
 {
     ws->state[u] = ST_CONTOUR;
     ws->prev[u] = last;
     ws->next[last] = u;
     ws->eprev[u] = he_next(g);                /* u -> last, in face (x,u,last) */
-    for (uint32_t e = ws->ostart[u]; e < ws->ostart[u + 1]; e++) {
-        uint32_t y = he_dst(tri, ws->oh[e]);
-        if ((ws->state[y] & ST_MASK) == ST_CONTOUR && y != last && y != nxt) {
-            ws->chord[u]++;
-            ws->chord[y]++;
-        }
+    const uint32_t *adj = ws->odst;
+    const uint8_t *state = ws->state;
+    uint32_t *chord = ws->chord, e1 = ws->ostart[u + 1], cu = 0;
+    for (uint32_t e = ws->ostart[u]; e < e1; e++) {   /* branch-free: the  */
+        uint32_t y = adj[e];                          /* test is a coin toss */
+        uint32_t c = ((state[y] & ST_MASK) == ST_CONTOUR) & (y != last) & (y != nxt);
+        cu += c;
+        chord[y] += c;
     }
+    chord[u] += cu;
 }
 
 /* Computes the canonical ordering with v1 = root: ord, rank, and per vertex
@@ -304,7 +331,7 @@ static int canonical_order(dd_bdst_ws *ws, const uint32_t *tri, uint32_t nv, uin
         while (u != r) {
             if (++steps >= deg || ws->state[u] != ST_INNER) return DD_BDST_ETOPO;
             uint32_t gn = rot_prev(ws, g), un = he_dst(tri, gn);
-            expose(ws, tri, u, g, last, un);
+            expose(ws, u, g, last, un);
             ws->cov[ncov++] = u;
             last = u;
             g = gn;
@@ -349,18 +376,22 @@ static int assign_parents(dd_bdst_ws *ws, uint32_t nv)
 {
     uint32_t v1 = ws->ord[0], v2 = ws->ord[1];
     memset(ws->nchild, 0, nv);
+    ws->rule[0] = ws->rule[1] = ws->rule[2] = 0;
     ws->par[v1] = NONE;
     attach(ws, v2, v1);
     for (uint32_t k = 3; k <= nv; k++) {
         uint32_t x = ws->ord[k - 1], l = ws->cl[x], r = ws->cr[x], p;
+        int rule = 0;
         if (ws->covn[x] == 0) {
             p = ws->rank[l] > ws->rank[r] ? l : r;                  /* (A) */
         } else {
             p = l;                                                  /* (C) */
+            rule = 2;
             const uint32_t *c = ws->cov + ws->covs[x];
             for (uint32_t i = 0; i < ws->covn[x]; i++)
-                if (ws->nchild[c[i]] < 2) { p = c[i]; break; }      /* (B) */
+                if (ws->nchild[c[i]] < 2) { p = c[i]; rule = 1; break; } /* (B) */
         }
+        ws->rule[rule]++;
         if (ws->nchild[p] >= 2) return DD_BDST_EINTERNAL;
         attach(ws, x, p);
     }
@@ -390,14 +421,25 @@ int dd_bdst(dd_bdst_ws *ws, const uint32_t *tri, uint32_t ntri, uint32_t nv,
     if (s) return s;
     uint32_t nh = 3 * ntri;
     if ((s = sort_by_origin(ws, tri, nh, nv))) return s;
-    if ((s = pair_twins(ws, tri, nv))) return s;
+    if ((s = pair_twins(ws, nv))) return s;
     if ((s = check_links(ws, nv))) return s;
     uint32_t root = root_hint == NONE ? tri[0] : root_hint;
+    ws->rng = ws->seed ^ ((uint64_t)nv << 32 | root);
     if ((s = canonical_order(ws, tri, nv, root))) return s;
     if ((s = assign_parents(ws, nv))) return s;
     memcpy(parent, ws->par, (size_t)nv * sizeof *parent);
     if (order) bfs_order(ws, nv, order);
     return DD_BDST_OK;
+}
+
+void dd_bdst_ws_set_seed(dd_bdst_ws *ws, uint64_t seed)
+{
+    ws->seed = seed;
+}
+
+void dd_bdst_ws_rule_counts(const dd_bdst_ws *ws, uint32_t counts[3])
+{
+    for (int i = 0; i < 3; i++) counts[i] = ws->rule[i];
 }
 
 const char *dd_bdst_status_name(int status)

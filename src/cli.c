@@ -7,9 +7,7 @@
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
  */
-#include "dtdel.h"
-#include "cgal/cgal_shim.h"
-#include "../datasets/datasets.h"
+#include "cli.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -18,19 +16,9 @@
 #include <string.h>
 #include <time.h>
 
-#define EXIT_INPUT 1
-#define EXIT_USAGE 2
-
-typedef struct command {
-    const char *name;
-    const char *usage;
-    const char *help;
-    int (*run)(int argc, char **argv);
-} command;
-
 static const command *find_command(const char *name);
 
-static int usage_error(const char *cmd, const char *fmt, const char *arg)
+int usage_error(const char *cmd, const char *fmt, const char *arg)
 {
     fprintf(stderr, "dtdel %s: ", cmd);
     fprintf(stderr, fmt, arg);
@@ -39,14 +27,14 @@ static int usage_error(const char *cmd, const char *fmt, const char *arg)
     return EXIT_USAGE;
 }
 
-static int wants_help(int argc, char **argv)
+int wants_help(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
     return 0;
 }
 
-static int print_help(const char *cmd)
+int print_help(const char *cmd)
 {
     const command *c = find_command(cmd);
     printf("usage: dtdel %s\n\n%s\n", c->usage, c->help);
@@ -54,7 +42,7 @@ static int print_help(const char *cmd)
 }
 
 /* Parses a non-negative integer; returns 0 on success. */
-static int parse_u64(const char *s, uint64_t *out)
+int parse_u64(const char *s, uint64_t *out)
 {
     if (!s || !*s || *s == '-') return -1;
     char *end;
@@ -65,7 +53,7 @@ static int parse_u64(const char *s, uint64_t *out)
     return 0;
 }
 
-static double now_seconds(void)
+double now_seconds(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -106,7 +94,7 @@ static int cmd_gen(int argc, char **argv)
 
 /* ---- tets ----------------------------------------------------------------- */
 
-static int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
+int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
 {
     char msg[512];
     dd_status s = dd_read_points(path, xyz, np, msg, sizeof msg);
@@ -117,7 +105,7 @@ static int load_file(const char *cmd, const char *path, double **xyz, uint32_t *
     return 0;
 }
 
-static void write_tets(const int32_t *tets, size_t n)
+void write_tets(const int32_t *tets, size_t n)
 {
     for (size_t k = 0; k < n; k++)
         printf("%d %d %d %d\n", tets[4 * k], tets[4 * k + 1], tets[4 * k + 2], tets[4 * k + 3]);
@@ -238,6 +226,16 @@ static int cmd_build_bench(int argc, char **argv)
     return same ? 0 : EXIT_INPUT;
 }
 
+static int cmd_variants(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("variants");
+    for (size_t i = 0; dd_variant_name(i); i++)
+        printf("%-14s %s%s\n", dd_variant_name(i), dd_variant_description(i), i == 0 ? " [default]" : "");
+    printf("%-14s %s\n", "cgal", "CGAL's own remove() (triangulate and sew), the reference");
+    printf("%-14s %s\n", "cgal-rnd", "CGAL's temporary DT of the neighbours in random order, sewn in the shim");
+    return 0;
+}
+
 /* ---- dispatch ------------------------------------------------------------- */
 
 static const command commands[] = {
@@ -253,6 +251,22 @@ static const command commands[] = {
      ".off; input index = 0-based order of the points in the file.", cmd_tets},
     {"cgal-tets", "cgal-tets FILE",
      "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
+    {"delete", "delete FILE --vertex I[,J,...] [--variant NAME]",
+     "Deletes the input vertices I, J, ... in that order from DT(points in\n"
+     "FILE) and writes the canonical form (as tets).  NAME: an engine\n"
+     "strategy (dtdel variants), cgal or cgal-rnd; default: the fastest.", cmd_delete},
+    {"time", "time FILE --vertex I --variant NAME [--repeat R]",
+     "Prints one number: the median microseconds of deleting vertex I alone\n"
+     "over R repetitions (default 5); the vertex is re-inserted, untimed,\n"
+     "between repetitions, so each starts from DT(S).", cmd_time},
+    {"check", "check FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]",
+     "Deletes K sampled vertices (default 20), each from DT(S), with each\n"
+     "variant (default all, cgal-rnd included), and compares every result\n"
+     "with CGAL's canonical form; --sequence deletes them one after another\n"
+     "without re-inserting.  Prints matched/total per variant; exit 1 on any\n"
+     "mismatch.", cmd_check},
+    {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
+     "two CGAL rows.", cmd_variants},
     {"build-bench", "build-bench [N] [--dataset NAME] [--seed S]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
      "range insert in the same run; prints points/s, the ratio, bytes per\n"

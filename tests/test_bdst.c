@@ -9,7 +9,7 @@
  *     to 2000; hulls of the integer points of spheres x^2+y^2+z^2 = r2
  *     (many coplanar, cocircular points: coplanar hull triangles);
  *   - the same after random edge flips, and after flips that pile edges
- *     onto one or two vertices ("hubs" of degree up to n-1);
+ *     onto one or two vertices (hubs of degree in the hundreds);
  *   - bipyramids (two vertices of degree n-2), double cones (two adjacent
  *     vertices of degree n-1), stacked triangulations (many separating
  *     triangles), the tetrahedron and octahedron with every root.
@@ -19,8 +19,13 @@
  * order[] is a permutation starting at the root in which parents' positions
  * never decrease (so it is a BFS order, and parent[] is a spanning tree);
  * the result does not depend on the workspace's history or on order being
- * NULL.  Invalid inputs return their exact codes and leave the outputs
- * untouched.  Prints the time per vertex at n = 1000.
+ * NULL.  Half the runs peel in a seeded random order (other canonical
+ * orderings): only there does the fallback rule (C) occur, and the suite
+ * checks that it did.  Invalid inputs (sizes, indices, a reversed or
+ * repeated triangle, an edge in 4 triangles, pinched and isolated
+ * vertices, a sphere plus a torus) return their exact codes and leave the
+ * outputs untouched.  Prints the time per vertex at n = 1000 (and 10^5; labels
+ * and triangle order are random, the worst case for the caches).
  *
  * Argument "small" (the sanitizer run): fewer and smaller cases.
  */
@@ -150,8 +155,7 @@ static int hull(const int64_t *p, uint32_t n, mesh *out)
                 by_end[b] = id;
                 newf[nnew++] = id;
             }
-            f[k].alive = 0;
-            f[k].vis = 0;
+            f[k].alive = 0;                      /* vis stays set this round */
         }
         for (size_t j = 0; j < nnew; j++) {
             hface *h = &f[newf[j]];
@@ -380,7 +384,11 @@ static uint32_t max_degree_vertex(const mesh *m, uint32_t *deg_out)
 
 /* Checking a result ---------------------------------------------------------- */
 
-typedef struct stats { long cases, vertices, deg3; uint32_t max_input_deg; } stats;
+typedef struct stats {
+    long cases, vertices, deg3;
+    long rule[2][3];             /* parents by rule (A),(B),(C); [seeded]  */
+    uint32_t max_input_deg;
+} stats;
 
 /* Checks parent/order against the mesh (see the file comment); writes the
  * reason to why on failure.                                             */
@@ -452,8 +460,9 @@ out:
     return ok;
 }
 
-/* One case: relabel, pick a root, run twice (order NULL the second time,
- * in a fresh workspace), check.                                          */
+/* One case: run with the given root, LIFO peeling or (half of the time)
+ * a seeded one, check; now and then run again in a fresh workspace with
+ * order NULL and compare.                                               */
 typedef struct family { const char *name; long fails; char first[300]; stats st; } family;
 
 static void fail_case(family *f, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -476,6 +485,8 @@ static void run_case(tl_rng *r, dd_bdst_ws *ws, mesh *m, uint32_t root, family *
         fail_case(f, "generator: nv %u, nt %u", m->nv, m->nt);
         goto out;
     }
+    uint64_t seed = tl_next(r) & 1 ? 0 : tl_next(r) | 1;
+    dd_bdst_ws_set_seed(ws, seed);
     int rc = dd_bdst(ws, m->tri, m->nt, m->nv, root, parent, order);
     if (rc) {
         fail_case(f, "nv %u root %u: status %s", m->nv, root, dd_bdst_status_name(rc));
@@ -483,12 +494,18 @@ static void run_case(tl_rng *r, dd_bdst_ws *ws, mesh *m, uint32_t root, family *
     }
     char why[200];
     if (!check_tree(m, root, parent, order, &f->st, why, sizeof why)) {
-        fail_case(f, "nv %u root %u: %s", m->nv, root, why);
+        fail_case(f, "nv %u root %u seed %llx: %s", m->nv, root, (unsigned long long)seed, why);
         goto out;
     }
+    uint32_t cnt[3];
+    dd_bdst_ws_rule_counts(ws, cnt);
+    for (int i = 0; i < 3; i++) f->st.rule[seed != 0][i] += cnt[i];
+    if (cnt[0] + cnt[1] + cnt[2] != m->nv - 2)
+        fail_case(f, "nv %u: rule counts %u+%u+%u, not nv-2", m->nv, cnt[0], cnt[1], cnt[2]);
     /* determinism: a fresh workspace, order NULL, same tree */
     if (tl_next(r) % 8 == 0) {
         dd_bdst_ws *w2 = dd_bdst_ws_new();
+        if (w2) dd_bdst_ws_set_seed(w2, seed);
         rc = w2 ? dd_bdst(w2, m->tri, m->nt, m->nv, root, parent2, NULL) : DD_BDST_ENOMEM;
         dd_bdst_ws_free(w2);
         if (rc || memcmp(parent, parent2, m->nv * sizeof *parent))
@@ -504,13 +521,18 @@ static uint32_t pick_root(tl_rng *r, const mesh *m)
     return (uint32_t)tl_int(r, 0, m->nv - 1);
 }
 
-static void report(tl_state *ts, const family *f)
+static void report(tl_state *ts, const family *f, stats *total)
 {
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++) total->rule[i][j] += f->st.rule[i][j];
     tl_check(ts, f->fails == 0 && f->st.cases > 0, f->name, "%ld failed cases, first: %s",
              f->fails, f->first);
-    fprintf(stderr, "  %-26s %6ld cases %8ld vertices, input degree <= %u, tree degree-3 share %.3f\n",
+    fprintf(stderr, "  %-26s %6ld cases %8ld vertices, input degree <= %4u, tree degree 3: %.3f;"
+            " rules A/B/C: LIFO %ld/%ld/%ld, seeded %ld/%ld/%ld\n",
             f->name, f->st.cases, f->st.vertices, f->st.max_input_deg,
-            f->st.vertices ? (double)f->st.deg3 / (double)f->st.vertices : 0.0);
+            f->st.vertices ? (double)f->st.deg3 / (double)f->st.vertices : 0.0,
+            f->st.rule[0][0], f->st.rule[0][1], f->st.rule[0][2],
+            f->st.rule[1][0], f->st.rule[1][1], f->st.rule[1][2]);
 }
 
 /* Invalid input --------------------------------------------------------------- */
@@ -663,19 +685,26 @@ static void time_mesh(dd_bdst_ws *ws, tl_rng *r, mesh *m, int reps, const char *
     relabel(r, m, 0);
     uint32_t *parent = malloc(m->nv * sizeof *parent), *order = malloc(m->nv * sizeof *order);
     if (!parent || !order) exit(2);
-    dd_bdst(ws, m->tri, m->nt, m->nv, 0, parent, order);   /* warm up, grow */
-    double best = 1e30, total = 0;
+    dd_bdst_ws_set_seed(ws, 0);
+    if (dd_bdst(ws, m->tri, m->nt, m->nv, 0, parent, order)) {   /* warm up, grow */
+        fprintf(stderr, "  timing %s: dd_bdst failed\n", what);
+        free(parent); free(order);
+        return;
+    }
+    double *dt = malloc((size_t)reps * sizeof *dt);
+    if (!dt) exit(2);
     uint64_t sink = 0;
     for (int k = 0; k < reps; k++) {
         double t0 = now();
         dd_bdst(ws, m->tri, m->nt, m->nv, (uint32_t)k % m->nv, parent, order);
-        double dt = now() - t0;
-        total += dt;
-        if (dt < best) best = dt;
+        dt[k] = now() - t0;
         sink += order[m->nv - 1];
     }
-    fprintf(stderr, "  timing %-8s nv = %7u, %5d runs: %6.1f ns/vertex best, %6.1f mean%s\n",
-            what, m->nv, reps, 1e9 * best / m->nv, 1e9 * total / reps / m->nv, sink == 1 ? " " : "");
+    for (int i = 1; i < reps; i++)                      /* insertion sort */
+        for (int j = i; j > 0 && dt[j - 1] > dt[j]; j--) { double x = dt[j]; dt[j] = dt[j - 1]; dt[j - 1] = x; }
+    fprintf(stderr, "  timing %-8s nv = %7u, %5d runs: %6.1f ns/vertex median, %6.1f best%s\n",
+            what, m->nv, reps, 1e9 * dt[reps / 2] / m->nv, 1e9 * dt[0] / m->nv, sink == 1 ? " " : "");
+    free(dt);
     free(parent); free(order);
 }
 
@@ -684,12 +713,13 @@ static void time_mesh(dd_bdst_ws *ws, tl_rng *r, mesh *m, int reps, const char *
 int main(int argc, char **argv)
 {
     int small = argc > 1 && !strcmp(argv[1], "small");
-    int scale = small ? 8 : 1;
+    int scale = small ? 4 : 1;
     tl_state ts = {0};
     tl_rng rng = {12345};
     dd_bdst_ws *ws = dd_bdst_ws_new();
     if (!ws) { printf("FAIL bdst_ws_new: out of memory\n"); return 1; }
     mesh m = {0};
+    stats total = {0};
 
     {   /* every root of the tetrahedron and octahedron, both orientations */
         family f = {.name = "bdst_tiny_every_root"};
@@ -700,7 +730,7 @@ int main(int argc, char **argv)
                 for (uint32_t v = 0; v < m.nv; v++) run_case(&rng, ws, &m, v, &f);
             }
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* small hulls, every root */
         family f = {.name = "bdst_hull_small_every_root"};
@@ -711,7 +741,7 @@ int main(int argc, char **argv)
             for (uint32_t v = 0; v < m.nv; v++) run_case(&rng, ws, &m, v, &f);
             run_case(&rng, ws, &m, NONE, &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* larger hulls */
         family f = {.name = "bdst_hull_large"};
@@ -721,7 +751,7 @@ int main(int argc, char **argv)
             relabel(&rng, &m, k & 1);
             for (int j = 0; j < 4; j++) run_case(&rng, ws, &m, pick_root(&rng, &m), &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* lattice points of spheres: coplanar, cocircular hull facets */
         family f = {.name = "bdst_hull_lattice_sphere"};
@@ -730,7 +760,7 @@ int main(int argc, char **argv)
             relabel(&rng, &m, (int)(r2 & 1));
             for (int j = 0; j < 4; j++) run_case(&rng, ws, &m, pick_root(&rng, &m), &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* random flips on hulls */
         family f = {.name = "bdst_flipped"};
@@ -742,7 +772,7 @@ int main(int argc, char **argv)
             relabel(&rng, &m, k & 1);
             for (int j = 0; j < 4; j++) run_case(&rng, ws, &m, pick_root(&rng, &m), &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* one or two hubs piled up by flips; roots at and next to them */
         family f = {.name = "bdst_hubs"};
@@ -760,7 +790,7 @@ int main(int argc, char **argv)
                 if (m.tri[3 * t] == hub) { run_case(&rng, ws, &m, m.tri[3 * t + 1], &f); break; }
             for (int j = 0; j < 2; j++) run_case(&rng, ws, &m, pick_root(&rng, &m), &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* bipyramids and double cones, every root for small ones */
         family f = {.name = "bdst_bipyramid_double_cone"};
@@ -773,7 +803,7 @@ int main(int argc, char **argv)
                 run_case(&rng, ws, &m, max_degree_vertex(&m, NULL), &f);
             }
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
     {   /* stacked triangulations, some flipped */
         family f = {.name = "bdst_stacked"};
@@ -785,8 +815,12 @@ int main(int argc, char **argv)
             relabel(&rng, &m, k & 1);
             for (int j = 0; j < 4; j++) run_case(&rng, ws, &m, pick_root(&rng, &m), &f);
         }
-        report(&ts, &f);
+        report(&ts, &f, &total);
     }
+
+    /* the fallback (C) is rare; make sure the seeded orderings reached it */
+    tl_check(&ts, total.rule[1][2] > 0, "bdst_rule_c_exercised",
+             "no vertex got its parent by rule (C) in the seeded runs");
 
     test_invalid(&ts, ws, &rng);
 
@@ -795,8 +829,8 @@ int main(int argc, char **argv)
         if (gen_hull(&tr, 1000, &m)) time_mesh(ws, &tr, &m, 3000, "hull");
         gen_bipyramid(1000, &m);
         time_mesh(ws, &tr, &m, 3000, "bipyr");
-        gen_stacked(&tr, 1000000, &m);
-        time_mesh(ws, &tr, &m, 10, "stacked");
+        gen_stacked(&tr, 100000, &m);
+        time_mesh(ws, &tr, &m, 5, "stacked");
     }
     free(m.tri);
     dd_bdst_ws_free(ws);

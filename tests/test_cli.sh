@@ -86,3 +86,34 @@ for spec in "grid 343" "cosphere 200" "layers 72" "moment 64" "helix 400" "spher
     if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then echo "ok cli/tets-equals-cgal-$1-$2"; else
         echo "FAIL cli/tets-equals-cgal-$1-$2: $(wc -l <"$tmp/a") vs $(wc -l <"$tmp/b") lines"; fi
 done
+
+# ---- deletion commands ----------------------------------------------------
+"$DTDEL" gen cosphere 120 --seed 2 >"$tmp/cs.xyz"
+"$DTDEL" gen moment 40 >"$tmp/m.xyz"
+expect delete-help 0 "" "$DTDEL" delete --help
+expect time-help 0 "" "$DTDEL" time --help
+expect check-help 0 "" "$DTDEL" check --help
+expect delete-no-vertex 2 "usage" "$DTDEL" delete "$tmp/cs.xyz"
+expect delete-bad-list 2 "comma" "$DTDEL" delete "$tmp/cs.xyz" --vertex 1,,2
+expect delete-unknown-vertex 1 "vertex 500.*no point 500" "$DTDEL" delete "$tmp/cs.xyz" --vertex 500
+expect delete-unknown-variant 1 "unknown variant 'nope'" "$DTDEL" delete "$tmp/cs.xyz" --vertex 1 --variant nope
+expect delete-twice 1 "was deleted" "$DTDEL" delete "$tmp/cs.xyz" --vertex 3,3
+expect delete-tetrahedron 1 "at least 4" "$DTDEL" delete "$tmp/good.xyz" --vertex 0,1
+expect time-unknown-variant 1 "unknown variant" "$DTDEL" time "$tmp/cs.xyz" --vertex 1 --variant nope
+expect check-unknown-variant 1 "unknown variant" "$DTDEL" check "$tmp/cs.xyz" --variant nope
+# every row's deletion result equals CGAL's through the CLI
+for v in $("$DTDEL" variants | awk '{print $1}'); do
+    "$DTDEL" delete "$tmp/cs.xyz" --vertex 5,17,40 --variant "$v" >"$tmp/d.$v" 2>"$tmp/err"
+    "$DTDEL" delete "$tmp/cs.xyz" --vertex 5,17,40 --variant cgal >"$tmp/d.ref" 2>/dev/null
+    if [ -s "$tmp/d.$v" ] && cmp -s "$tmp/d.$v" "$tmp/d.ref"; then echo "ok cli/delete-equals-cgal-$v"; else
+        echo "FAIL cli/delete-equals-cgal-$v: $(head -c 200 "$tmp/err")"; fi
+    out=$("$DTDEL" time "$tmp/m.xyz" --vertex 7 --variant "$v" --repeat 3 2>"$tmp/err")
+    if echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli/time-$v"; else
+        echo "FAIL cli/time-$v: printed '$out' $(head -c 200 "$tmp/err")"; fi
+done
+out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 8 --seed 4 2>&1); rc=$?
+if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ' 8/8 matched')" -eq "$("$DTDEL" variants | wc -l)" ]; then
+    echo "ok cli/check-all"; else echo "FAIL cli/check-all: rc $rc: $out"; fi
+out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 60 --sequence --variant dtq-only 2>&1); rc=$?
+if [ $rc -eq 0 ] && echo "$out" | grep -q '60/60 matched'; then echo "ok cli/check-sequence"; else
+    echo "FAIL cli/check-sequence: rc $rc: $out"; fi

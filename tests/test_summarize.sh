@@ -118,7 +118,7 @@ nblank=$(awk 'prev == "" && $0 == "" { n++ } { prev = $0 } END { print n + 0 }' 
 if [ "$nblank" -eq 3 ]; then ok block-separators; else
     bad block-separators "$nblank double blank lines, expected 3"; fi
 has phases-file "$pd/toy.phases" "grr-edge 4 NaN 2 1.5 16"
-if [ "$(cat "$pd/datasets.txt" | tr '\n' ' ')" = "toy other edges " ]; then ok datasets-list; else
+if [ "$(tr '\n' ' ' <"$pd/datasets.txt")" = "toy other edges " ]; then ok datasets-list; else
     bad datasets-list "got $(tr '\n' ' ' <"$pd/datasets.txt")"; fi
 
 # Malformed input: exit 1, FILE:LINE and what is wrong.

@@ -1,0 +1,57 @@
+/*
+ * cli.h -- what the dtdel subcommands share: exit codes, argument parsing,
+ * file loading, output, timing, and the "rows" of a comparison (the
+ * engine's strategies plus CGAL's remove() and CGAL-rnd through the shim).
+ */
+#ifndef DD_CLI_H
+#define DD_CLI_H
+
+#include "dtdel.h"
+#include "cgal/cgal_shim.h"
+#include "../datasets/datasets.h"
+
+#include <stdint.h>
+#include <stdio.h>
+
+#define EXIT_INPUT 1
+#define EXIT_USAGE 2
+
+typedef struct command {
+    const char *name;
+    const char *usage;
+    const char *help;
+    int (*run)(int argc, char **argv);
+} command;
+
+int usage_error(const char *cmd, const char *fmt, const char *arg);
+int wants_help(int argc, char **argv);
+int print_help(const char *cmd);
+int parse_u64(const char *s, uint64_t *out);
+double now_seconds(void);
+int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np);
+void write_tets(const int32_t *tets, size_t n);
+
+/* A row of a comparison: an engine strategy, "cgal" or "cgal-rnd". */
+typedef struct row {
+    const char *name;
+    int kind;            /* ROW_ENGINE, ROW_CGAL, ROW_CGAL_RND */
+} row;
+enum { ROW_ENGINE, ROW_CGAL, ROW_CGAL_RND };
+
+/* Fills rows[] with every engine strategy then cgal, cgal-rnd; returns
+ * the count (at most max).                                               */
+size_t all_rows(row *rows, size_t max);
+/* Looks a row up by name; 0 if unknown. */
+int find_row(const char *name, row *out);
+/* Deletes input vertex v in the row's triangulation (t for the engine, g
+ * for CGAL); returns 0 on success.  Reinsert undoes it.                  */
+int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed);
+int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
+
+/* Subcommands living in other files. */
+int cmd_delete(int argc, char **argv);
+int cmd_time(int argc, char **argv);
+int cmd_check(int argc, char **argv);
+
+
+#endif

@@ -1,0 +1,343 @@
+/*
+ * cli_delete.c -- the deletion subcommands and the comparison rows.
+ *
+ *   dtdel delete FILE --vertex I[,J,...] [--variant NAME]
+ *   dtdel time   FILE --vertex I --variant NAME [--repeat R]
+ *   dtdel check  FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]
+ *
+ * A row is one way to delete: an engine strategy (variants/), "cgal"
+ * (CGAL's remove() through the shim) or "cgal-rnd" (the shim's
+ * triangulate-and-sew in random order).  Every row's result is compared
+ * with CGAL's canonical form.
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+size_t all_rows(row *rows, size_t max)
+{
+    size_t n = 0;
+    for (size_t i = 0; dd_variant_name(i) && n < max; i++) {
+        rows[n].name = dd_variant_name(i);
+        rows[n].kind = ROW_ENGINE;
+        n++;
+    }
+    if (n < max) { rows[n].name = "cgal"; rows[n].kind = ROW_CGAL; n++; }
+    if (n < max) { rows[n].name = "cgal-rnd"; rows[n].kind = ROW_CGAL_RND; n++; }
+    return n;
+}
+
+int find_row(const char *name, row *out)
+{
+    row rows[32];
+    size_t n = all_rows(rows, 32);
+    for (size_t i = 0; i < n; i++)
+        if (!strcmp(rows[i].name, name)) { *out = rows[i]; return 1; }
+    return 0;
+}
+
+int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed)
+{
+    switch (r->kind) {
+    case ROW_ENGINE: return dd_delete(t, v, r->name) != DD_OK;
+    case ROW_CGAL: return dd_cgal_remove(g, v);
+    default: return dd_cgal_remove_rnd(g, v, seed);
+    }
+}
+
+int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v)
+{
+    return r->kind == ROW_ENGINE ? dd_reinsert(t, v) != DD_OK : dd_cgal_reinsert(g, v);
+}
+
+/* Parses "I,J,K" into a malloc'd list. */
+static int parse_list(const char *s, uint32_t **out, size_t *n)
+{
+    size_t cap = 8, k = 0;
+    uint32_t *a = malloc(cap * sizeof *a);
+    if (!a) return -1;
+    const char *p = s;
+    for (;;) {
+        char buf[32];
+        size_t len = strcspn(p, ",");
+        uint64_t x;
+        if (len == 0 || len >= sizeof buf) { free(a); return -1; }
+        memcpy(buf, p, len);
+        buf[len] = 0;
+        if (parse_u64(buf, &x) || x >= UINT32_MAX) { free(a); return -1; }
+        if (k == cap) {
+            uint32_t *b = realloc(a, 2 * cap * sizeof *a);
+            if (!b) { free(a); return -1; }
+            a = b;
+            cap *= 2;
+        }
+        a[k++] = (uint32_t)x;
+        if (!p[len]) break;
+        p += len + 1;
+    }
+    *out = a;
+    *n = k;
+    return 0;
+}
+
+/* Loads FILE and builds the engine's DT (and CGAL's if want_cgal). */
+static int load_both(const char *cmd, const char *path, int want_cgal, dd_tri **t, dd_cgal **g,
+                     double **pts, uint32_t *np)
+{
+    int rc = load_file(cmd, path, pts, np);
+    if (rc) return rc;
+    char msg[512];
+    if (dd_create(t, *pts, *np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel %s: %s: %s\n", cmd, path, msg);
+        free(*pts);
+        return EXIT_INPUT;
+    }
+    *g = NULL;
+    if (want_cgal && !(*g = dd_cgal_build(*pts, *np))) {
+        fprintf(stderr, "dtdel %s: %s: CGAL cannot triangulate these points\n", cmd, path);
+        dd_free(*t);
+        free(*pts);
+        return EXIT_INPUT;
+    }
+    return 0;
+}
+
+static int canonical_of(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n)
+{
+    return r->kind == ROW_ENGINE ? dd_canonical(t, a, n) != DD_OK : dd_cgal_canonical(g, a, n);
+}
+
+static int same_canon(const int32_t *a, size_t na, const int32_t *b, size_t nb)
+{
+    return na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+}
+
+/* ---- delete --------------------------------------------------------------- */
+
+int cmd_delete(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("delete");
+    const char *file = NULL, *vlist = NULL, *var = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--vertex")) {
+            if (++i >= argc) return usage_error("delete", "--vertex needs a list I[,J,...]%s", "");
+            vlist = argv[i];
+        } else if (!strcmp(argv[i], "--variant")) {
+            if (++i >= argc) return usage_error("delete", "--variant needs a name%s", "");
+            var = argv[i];
+        } else if (!file) file = argv[i];
+        else return usage_error("delete", "unexpected argument '%s'", argv[i]);
+    }
+    if (!file || !vlist) return usage_error("delete", "missing FILE or --vertex%s", "");
+    uint32_t *vs;
+    size_t nv;
+    if (parse_list(vlist, &vs, &nv))
+        return usage_error("delete", "--vertex wants non-negative integers separated by commas, got '%s'", vlist);
+    row r = {dd_variant_name(0), ROW_ENGINE};
+    if (var && !find_row(var, &r)) {
+        fprintf(stderr, "dtdel delete: unknown variant '%s' (see dtdel variants)\n", var);
+        free(vs);
+        return EXIT_INPUT;
+    }
+    dd_tri *t;
+    dd_cgal *g;
+    double *pts;
+    uint32_t np;
+    int rc = load_both("delete", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
+    if (rc) { free(vs); return rc; }
+    for (size_t k = 0; k < nv && !rc; k++) {
+        if (r.kind == ROW_ENGINE) {
+            if (dd_delete(t, vs[k], r.name) != DD_OK) {
+                fprintf(stderr, "dtdel delete: cannot delete vertex %u: %s\n", vs[k], dd_errmsg(t));
+                rc = EXIT_INPUT;
+            }
+        } else if (row_delete(&r, t, g, vs[k], 1 + k)) {
+            fprintf(stderr, "dtdel delete: CGAL cannot delete vertex %u (unknown, or it would leave "
+                            "fewer than 4 or only coplanar points)\n", vs[k]);
+            rc = EXIT_INPUT;
+        }
+    }
+    if (!rc) {
+        int32_t *a;
+        size_t n;
+        if (canonical_of(&r, t, g, &a, &n)) rc = EXIT_INPUT;
+        else { write_tets(a, n); free(a); }
+    }
+    free(vs);
+    free(pts);
+    dd_free(t);
+    dd_cgal_free(g);
+    return rc;
+}
+
+/* ---- time ------------------------------------------------------------------ */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+int cmd_time(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("time");
+    const char *file = NULL, *var = NULL;
+    uint64_t v = UINT64_MAX, repeat = 5;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--vertex")) {
+            if (++i >= argc || parse_u64(argv[i], &v) || v >= UINT32_MAX)
+                return usage_error("time", "--vertex needs a non-negative integer%s", "");
+        } else if (!strcmp(argv[i], "--variant")) {
+            if (++i >= argc) return usage_error("time", "--variant needs a name%s", "");
+            var = argv[i];
+        } else if (!strcmp(argv[i], "--repeat")) {
+            if (++i >= argc || parse_u64(argv[i], &repeat) || repeat == 0 || repeat > 1000000)
+                return usage_error("time", "--repeat needs a positive integer%s", "");
+        } else if (!file) file = argv[i];
+        else return usage_error("time", "unexpected argument '%s'", argv[i]);
+    }
+    if (!file || v == UINT64_MAX || !var) return usage_error("time", "missing FILE, --vertex or --variant%s", "");
+    row r;
+    if (!find_row(var, &r)) {
+        fprintf(stderr, "dtdel time: unknown variant '%s' (see dtdel variants)\n", var);
+        return EXIT_INPUT;
+    }
+    dd_tri *t;
+    dd_cgal *g;
+    double *pts;
+    uint32_t np;
+    int rc = load_both("time", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
+    if (rc) return rc;
+    double *us = malloc(repeat * sizeof *us);
+    for (uint64_t k = 0; k < repeat && !rc && us; k++) {
+        double t0 = now_seconds();
+        int bad = row_delete(&r, t, g, (uint32_t)v, k + 1);
+        double t1 = now_seconds();
+        if (bad) {
+            fprintf(stderr, "dtdel time: cannot delete vertex %u%s%s\n", (uint32_t)v,
+                    r.kind == ROW_ENGINE ? ": " : "", r.kind == ROW_ENGINE ? dd_errmsg(t) : "");
+            rc = EXIT_INPUT;
+            break;
+        }
+        us[k] = 1e6 * (t1 - t0);
+        if (row_reinsert(&r, t, g, (uint32_t)v)) {
+            fprintf(stderr, "dtdel time: reinserting vertex %u failed\n", (uint32_t)v);
+            rc = EXIT_INPUT;
+        }
+    }
+    if (!rc && us) {
+        qsort(us, repeat, sizeof *us, cmp_double);
+        double med = repeat % 2 ? us[repeat / 2] : 0.5 * (us[repeat / 2 - 1] + us[repeat / 2]);
+        printf("%.3f\n", med);
+    }
+    free(us);
+    free(pts);
+    dd_free(t);
+    dd_cgal_free(g);
+    return rc;
+}
+
+/* ---- check ----------------------------------------------------------------- */
+
+int cmd_check(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("check");
+    const char *file = NULL, *var = "all";
+    uint64_t k = 20, seed = 1;
+    int sequence = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--variant")) {
+            if (++i >= argc) return usage_error("check", "--variant needs a name or 'all'%s", "");
+            var = argv[i];
+        } else if (!strcmp(argv[i], "--deletions")) {
+            if (++i >= argc || parse_u64(argv[i], &k) || k > UINT32_MAX)
+                return usage_error("check", "--deletions needs a non-negative integer%s", "");
+        } else if (!strcmp(argv[i], "--seed")) {
+            if (++i >= argc || parse_u64(argv[i], &seed))
+                return usage_error("check", "--seed needs a non-negative integer%s", "");
+        } else if (!strcmp(argv[i], "--sequence")) {
+            sequence = 1;
+        } else if (!file) file = argv[i];
+        else return usage_error("check", "unexpected argument '%s'", argv[i]);
+    }
+    if (!file) return usage_error("check", "missing FILE%s", "");
+    row rows[32];
+    size_t nr;
+    if (!strcmp(var, "all")) nr = all_rows(rows, 32);
+    else if (find_row(var, &rows[0])) nr = 1;
+    else {
+        fprintf(stderr, "dtdel check: unknown variant '%s' (see dtdel variants)\n", var);
+        return EXIT_INPUT;
+    }
+    double *pts;
+    uint32_t np;
+    int rc = load_file("check", file, &pts, &np);
+    if (rc) return rc;
+    /* The sample: K distinct vertices drawn with a seeded generator. */
+    uint32_t *sample = malloc((k ? k : 1) * sizeof *sample);
+    uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
+    dd_tri *probe;
+    char msg[512];
+    if (!sample || dd_create(&probe, pts, np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel check: %s: %s\n", file, sample ? msg : "out of memory");
+        free(sample);
+        free(pts);
+        return EXIT_INPUT;
+    }
+    uint32_t nvert = dd_num_vertices(probe);
+    if (k > nvert) k = nvert;
+    unsigned char *chosen = calloc(np ? np : 1, 1);
+    for (uint64_t i = 0; i < k && chosen; i++) {
+        uint32_t v;
+        do {
+            x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+            v = (uint32_t)((x >> 11) % np);
+        } while (!dd_is_vertex(probe, v) || chosen[v]);
+        chosen[v] = 1;
+        sample[i] = v;
+    }
+    free(chosen);
+    dd_free(probe);
+    int any_bad = 0;
+    for (size_t ri = 0; ri < nr; ri++) {
+        dd_tri *t = NULL;
+        dd_cgal *g = NULL, *ref = NULL;
+        dd_create(&t, pts, np, msg, sizeof msg);
+        if (rows[ri].kind != ROW_ENGINE) g = dd_cgal_build(pts, np);
+        ref = dd_cgal_build(pts, np);
+        uint64_t matched = 0, total = 0, refused = 0;
+        for (uint64_t i = 0; i < k; i++) {
+            uint32_t v = sample[i];
+            int cref = dd_cgal_remove(ref, v);
+            int bad = row_delete(&rows[ri], t, g, v, seed + i);
+            total++;
+            if (cref || bad) {   /* both must refuse */
+                if (cref && bad) { matched++; refused++; }
+                else if (!bad) row_reinsert(&rows[ri], t, g, v);
+                if (!cref && !sequence) dd_cgal_reinsert(ref, v);
+                continue;
+            }
+            int32_t *a = NULL, *b = NULL;
+            size_t na = 0, nb = 0;
+            if (!canonical_of(&rows[ri], t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) &&
+                same_canon(a, na, b, nb))
+                matched++;
+            free(a);
+            free(b);
+            if (!sequence) {
+                row_reinsert(&rows[ri], t, g, v);
+                dd_cgal_reinsert(ref, v);
+            }
+        }
+        printf("%-14s %llu/%llu matched%s\n", rows[ri].name, (unsigned long long)matched,
+               (unsigned long long)total, refused ? " (some refused by both)" : "");
+        if (matched != total) any_bad = 1;
+        dd_free(t);
+        dd_cgal_free(g);
+        dd_cgal_free(ref);
+    }
+    free(sample);
+    free(pts);
+    return any_bad ? EXIT_INPUT : 0;
+}

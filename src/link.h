@@ -1,0 +1,56 @@
+/*
+ * link.h -- the link DT DT^l(Q_i) and LINKDTDELETE (paper 4.1-4.2).
+ *
+ * The link of q is a triangulated 2-sphere: one triangle per cell of q's
+ * star (the facet opposite q).  It behaves like a 2D Delaunay
+ * triangulation whose in-circle test for triangle abc and point w is the
+ * in-sphere test of the tetrahedron (a,b,c,q) and w (with CGAL's rule when
+ * one of a,b,c is the infinite vertex): deleting a link vertex is a
+ * Delaunay deletion on that sphere.
+ *
+ * Encoding (as the mesh, one dimension down): triangle t has vertices
+ * lv[3t+0..2] and neighbours ln[3t+k] = 3u+j, u the triangle across the
+ * edge opposite vertex k, j that edge's index in u; ln[ln[e]] == e.  Every
+ * triangle is oriented as seen from q: orient3d(a, b, c, q) > 0 for a
+ * finite one (the facet order of mesh.h).  Dead triangles have
+ * lv[3t] == DD_DEAD.  Per vertex (indexed by vertex id): ltri[v], a live
+ * triangle holding v, and deg[v], v's degree in the link.
+ */
+#ifndef DD_LINK_H
+#define DD_LINK_H
+
+#include "mesh.h"
+
+#define DD_LINK_MAXRING 4096   /* larger rings use the heap (rare) */
+
+typedef struct dd_link {
+    uint32_t *lv, *ln;
+    uint32_t ntri, cap;
+    uint32_t *ltri, *deg;       /* per vertex id, capacity vcap        */
+    uint32_t vcap;
+    /* LINKDTDELETE scratch and result */
+    uint32_t *ring, *ring_tri, *ring_out;   /* the hole polygon         */
+    uint32_t *newtri;           /* the k-2 new triangles, as 3 ids each */
+    uint32_t ring_cap;
+    uint32_t nnew;              /* triangles created by the last delete */
+    uint32_t created[DD_LINK_MAXRING];  /* their triangle indices (first
+                                           min(nnew, MAXRING))          */
+} dd_link;
+
+void dd_link_free(dd_link *l);
+
+/* Builds the link of d->q from its star (delete.h); O(degree).  The star
+ * cells' stamps are overwritten.                                         */
+struct dd_del;
+dd_status dd_link_extract(dd_link *l, struct dd_del *d);
+
+/* LINKDTDELETE: removes vertex p (finite, of degree k >= 3) from the link
+ * and re-triangulates its hole by the Delaunay rule above.  Degrees 3..7
+ * use straight-line code; larger holes clip Delaunay ears.  The new
+ * triangles are listed in l->created[0 .. l->nnew).                      */
+dd_status dd_link_delete(dd_link *l, struct dd_del *d, uint32_t p);
+
+/* The link's live triangles as sorted vertex triples (for the tests). */
+size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max);
+
+#endif
