@@ -11,6 +11,7 @@
  * perturbed DT; d->qdt holds whatever the last strategy left (garbage).
  */
 #include "delete.h"
+#include "grr.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,6 +29,7 @@ void dd_delete_ctx_free(dd_del *d)
     free(d->vmark);
     free(d->qdt_vcell);
     dd_free(d->qdt);
+    dd_grr_free(d->grr);
     free(d);
 }
 
@@ -520,7 +522,7 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
 }
 
 /* Collects the star of input vertex v for the queries below. */
-static dd_status star_of(dd_tri *t, uint32_t input, dd_del **out)
+dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
 {
     uint32_t v = 0;
     dd_status s = resolve_vertex(t, input, &v);
@@ -534,13 +536,13 @@ static dd_status star_of(dd_tri *t, uint32_t input, dd_del **out)
 uint32_t dd_degree(dd_tri *t, uint32_t v)
 {
     dd_del *d;
-    return star_of(t, v, &d) == DD_OK ? d->degree : 0;
+    return dd_del_star_of(t, v, &d) == DD_OK ? d->degree : 0;
 }
 
 int dd_on_hull(dd_tri *t, uint32_t v)
 {
     dd_del *d;
-    return star_of(t, v, &d) == DD_OK ? d->on_hull : 0;
+    return dd_del_star_of(t, v, &d) == DD_OK ? d->on_hull : 0;
 }
 
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)

@@ -60,6 +60,7 @@ typedef struct dd_del {
     uint32_t *vmark;      /* per vertex id, epoch marks (cap t->cap_v)    */
     uint32_t vmark_cap, vepoch;
 
+    struct dd_grr *grr;   /* GRR-CONSTRUCT scratch (grr.c), lazily made   */
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */
     uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
     dd_vec fill;          /* cells of qdt that fill the cavity            */
@@ -101,6 +102,10 @@ typedef struct dd_variant {
 /* The registry (variants/registry.c): NULL-terminated, first = default. */
 extern const dd_variant *const dd_variant_table[];
 const dd_variant *dd_find_variant(const char *name);
+
+/* Sets up the context for input vertex v and collects its star, link
+ * triangles and neighbours (step 1 of DELETEVERTEX), without deleting. */
+dd_status dd_del_star_of(dd_tri *t, uint32_t v, dd_del **out);
 
 /* ---- services for strategies -------------------------------------------- */
 

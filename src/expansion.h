@@ -28,13 +28,16 @@
  * The derivation is at the top of expansion.c.  [1e-30, 1e30] is inside
  * both; 1e-200 and 1e200 are not.
  *
- * Cost: the adaptive stages (float filter with a dynamic bound, exact
- * determinant of the rounded differences, first-order correction for the
- * rounding tails, exact determinant of the raw coordinates) make the cost
- * depend on how degenerate the input is, not on its range.  The last
- * stage (only when the differences are inexact AND the determinant is
- * within ~2^-99 of zero relative to its permanent) uses about 110 KB of
- * stack for insphere; everything else uses under 32 KB.
+ * Cost: adaptive.  A: doubles with a dynamic error bound; B: exact
+ * determinant of the rounded differences when they are exact (an O(1)
+ * certificate when they are small integers times a power of two, else
+ * expansions); C: double-double evaluation over the exact differences,
+ * with a derived error bound of order 2^-99 times the permanent; D: exact
+ * determinant of the raw coordinates when the differences are inexact and
+ * C cannot decide (in practice: exact zeros, e.g. five coplanar points
+ * with non-representable differences).  Stage D of insphere uses about
+ * 120 KB of stack (a separate, non-inlined frame); everything else uses
+ * under 30 KB.
  */
 #ifndef DD_EXPANSION_H
 #define DD_EXPANSION_H
@@ -45,8 +48,8 @@
 enum {
     DD_EXP_STAGE_UNSAFE = 0,   /* out of the safe range                     */
     DD_EXP_STAGE_A = 1,        /* doubles with a dynamic error bound        */
-    DD_EXP_STAGE_B = 2,        /* exact det of the rounded differences      */
-    DD_EXP_STAGE_C = 3,        /* B plus the first-order tail correction    */
+    DD_EXP_STAGE_B = 2,        /* exact det of exact differences            */
+    DD_EXP_STAGE_C = 3,        /* double-double with an error bound         */
     DD_EXP_STAGE_D = 4         /* exact det of the raw coordinates          */
 };
 

@@ -32,7 +32,13 @@ typedef struct dd_link {
     uint32_t *ring, *ring_tri, *ring_out;   /* the hole polygon         */
     uint32_t *newtri;           /* the k-2 new triangles, as 3 ids each */
     uint32_t ring_cap;
+    uint32_t *rpos, *rmark;     /* per vertex: ring position, valid when
+                                   rmark == rgen                        */
+    uint32_t rgen, inf_rpos;
+    int inf_in_link;            /* the infinite vertex is a link vertex */
+    dd_tri *scratch;            /* DT(ring + q) when infinity appears   */
     uint32_t nnew;              /* triangles created by the last delete */
+    uint32_t nring;             /* p's degree at the last delete        */
     uint32_t created[DD_LINK_MAXRING];  /* their triangle indices (first
                                            min(nnew, MAXRING))          */
 } dd_link;
@@ -46,7 +52,9 @@ dd_status dd_link_extract(dd_link *l, struct dd_del *d);
 
 /* LINKDTDELETE: removes vertex p (finite, of degree k >= 3) from the link
  * and re-triangulates its hole by the Delaunay rule above.  Degrees 3..7
- * use straight-line code; larger holes clip Delaunay ears.  The new
+ * use straight-line code; larger holes clip Delaunay ears.  When q leaves
+ * the interior of the hull of the remaining points, the infinite vertex
+ * enters the link in p's hole (see fill_with_infinity).  The new
  * triangles are listed in l->created[0 .. l->nnew).                      */
 dd_status dd_link_delete(dd_link *l, struct dd_del *d, uint32_t p);
 

@@ -8,15 +8,17 @@
  *     5.1107127829973299e-15 * maxx*maxy*maxz, in-sphere
  *     1.2466136531027298e-13 * maxx*maxy*maxz * maxz^2 with the maxima
  *     sorted), with CGAL's underflow and overflow guards.
- *  2. An exact evaluation in GMP integers: every double is m * 2^e with an
- *     integer m of at most 53 bits, so after shifting all coordinates of
- *     one call by the smallest exponent they are integers and every sum
- *     and product is exact.  Works for all finite doubles (1e-300 and
- *     1e300 included).
+ *  2. An exact evaluation: adaptive floating-point expansions
+ *     (expansion.c) when the coordinates are in their safe range, else GMP
+ *     integers: every double is m * 2^e with an integer m of at most 53
+ *     bits, so after shifting all coordinates of one call by the smallest
+ *     exponent they are integers and every sum and product is exact.  GMP
+ *     works for all finite doubles (1e-300 and 1e300 included).
  * The perturbation (Devillers & Teillaud 2011, as CGAL implements it) is
  * applied on top, only when the exact sign is zero.
  */
 #include "pred.h"
+#include "expansion.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -260,6 +262,8 @@ int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
         if (det < -eps) return -1;
     }
     DD_COUNT(ctx, orient_exact);
+    int e = dd_orient3d_exp(p, q, r, s);
+    if (e != DD_EXP_UNSAFE) return e;
     return orient3d_exact(ctx, p, q, r, s);
 }
 
@@ -308,6 +312,8 @@ int dd_insphere(dd_pred *ctx, const double *p, const double *q,
         if (det < -eps) return -1;
     }
     DD_COUNT(ctx, insphere_exact);
+    int e = dd_insphere_exp(p, q, r, s, t);
+    if (e != DD_EXP_UNSAFE) return e;
     return insphere_exact(ctx, p, q, r, s, t);
 }
 

@@ -214,6 +214,7 @@ static void refusals(tl_state *st)
     tl_check(st, s == DD_ERR_UNKNOWN_VARIANT && same(before, after), "refuse/unknown-variant",
              "status %s", dd_status_name(s));
     free(after.a);
+    free(before.a);
     dd_free(t);
 
     /* a tetrahedron: no deletion possible */

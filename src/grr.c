@@ -1,0 +1,349 @@
+/*
+ * grr.c -- GRR-CONSTRUCT (paper 4.2; see grr.h).
+ *
+ * Owns: the sampling sets (link vertices of degree <= 7, all remaining
+ * link vertices; each an array plus a position per vertex, O(1) update),
+ * the removal sequence with its guides, the hash of dummy cells for
+ * triangle guides, and guided point location.  Everything is scratch kept
+ * in the deletion context and reused.
+ */
+#include "grr.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+struct dd_grr {
+    dd_del *d;
+    dd_link link;
+    uint32_t *candpos, *rempos;   /* per vertex id: slot in cand/rem or DD_NONE */
+    uint32_t vcap;
+    dd_vec cand, rem;             /* degree <= 7 / all, base points excluded */
+    dd_vec seq, gv, gt;           /* removal order, vertex guides, triangles */
+    dd_vec walk;                  /* scratch for locate_from_vertex          */
+    dd_tri_slot *dh;              /* dummy cells by vertex triple            */
+    uint32_t dh_cap, dh_n;
+};
+
+void dd_grr_free(dd_grr *g)
+{
+    if (!g) return;
+    dd_link_free(&g->link);
+    free(g->candpos); free(g->rempos); free(g->dh);
+    dd_vec_free(&g->cand); dd_vec_free(&g->rem); dd_vec_free(&g->seq);
+    dd_vec_free(&g->gv); dd_vec_free(&g->gt); dd_vec_free(&g->walk);
+    free(g);
+}
+
+/* ---- sampling sets -------------------------------------------------------- */
+
+static dd_status set_add(dd_vec *s, uint32_t *pos, uint32_t v)
+{
+    if (pos[v] != DD_NONE) return DD_OK;
+    pos[v] = (uint32_t)s->n;
+    return dd_vec_push(s, v);
+}
+
+static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
+{
+    uint32_t i = pos[v];
+    if (i == DD_NONE) return;
+    uint32_t last = s->a[--s->n];
+    s->a[i] = last;
+    pos[last] = i;
+    pos[v] = DD_NONE;
+}
+
+uint32_t dd_grr_rand(dd_grr *g) { return dd_del_rand(g->d); }
+void dd_grr_fallback(dd_grr *g) { g->d->fallbacks++; }
+uint32_t dd_grr_degree(const dd_grr *g, uint32_t v) { return g->link.deg[v]; }
+
+uint32_t dd_grr_random_lowdeg(dd_grr *g)
+{
+    return g->cand.n ? g->cand.a[dd_del_rand(g->d) % g->cand.n] : DD_NONE;
+}
+
+uint32_t dd_grr_random_any(dd_grr *g)
+{
+    return g->rem.n ? g->rem.a[dd_del_rand(g->d) % g->rem.n] : DD_NONE;
+}
+
+uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
+{
+    const dd_link *l = &g->link;
+    uint32_t t0 = l->ltri[v], t = t0, k = 0;
+    do {
+        uint32_t m = 0;
+        while (m < 3 && l->lv[3 * t + m] != v) m++;
+        if (m == 3) break;                       /* broken link: a bug */
+        if (k < max) out[k] = l->lv[3 * t + (m + 1) % 3];
+        k++;
+        t = l->ln[3 * t + (m + 1) % 3] / 3;
+    } while (t != t0 && k <= l->ntri);
+    return k < max ? k : max;
+}
+
+uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v)
+{
+    const dd_link *l = &g->link;
+    uint32_t t0 = l->ltri[v], t = t0, best = DD_NONE;
+    uint32_t steps = 0;
+    do {
+        uint32_t m = 0;
+        while (m < 3 && l->lv[3 * t + m] != v) m++;
+        if (m == 3) break;                       /* broken link: a bug */
+        uint32_t w = l->lv[3 * t + (m + 1) % 3];
+        if (w != DD_INF && (best == DD_NONE || l->deg[w] < l->deg[best])) best = w;
+        t = l->ln[3 * t + (m + 1) % 3] / 3;
+    } while (t != t0 && ++steps <= l->ntri);
+    return best;
+}
+
+/* Updates the sets after a link deletion of p (ring = p's old neighbours). */
+static dd_status update_sets(dd_grr *g, uint32_t p)
+{
+    dd_del *d = g->d;
+    set_del(&g->cand, g->candpos, p);
+    set_del(&g->rem, g->rempos, p);
+    dd_status s = DD_OK;
+    const dd_link *l = &g->link;
+    for (uint32_t j = 0; j < l->nring && s == DD_OK; j++) {
+        uint32_t u = l->ring[j];
+        if (u == DD_INF || g->rempos[u] == DD_NONE) continue;   /* base or INF */
+        if (l->deg[u] <= DD_LOWDEG) s = set_add(&g->cand, g->candpos, u);
+        else set_del(&g->cand, g->candpos, u);
+    }
+    (void)d;
+    return s;
+}
+
+static dd_status init(dd_grr *g)
+{
+    dd_del *d = g->d;
+    dd_tri *t = d->t;
+    if (g->vcap < t->cap_v) {
+        uint32_t *a = realloc(g->candpos, (size_t)t->cap_v * sizeof *a);
+        if (!a) return DD_ERR_NOMEM;
+        g->candpos = a;
+        a = realloc(g->rempos, (size_t)t->cap_v * sizeof *a);
+        if (!a) return DD_ERR_NOMEM;
+        g->rempos = a;
+        g->vcap = t->cap_v;
+    }
+    dd_status s = dd_link_extract(&g->link, d);
+    if (s != DD_OK) return s;
+    g->cand.n = g->rem.n = g->seq.n = g->gv.n = g->gt.n = 0;
+    for (size_t k = 0; k < d->nbr.n; k++) g->candpos[d->nbr.a[k]] = g->rempos[d->nbr.a[k]] = DD_NONE;
+    for (size_t k = 0; k < d->nbr.n && s == DD_OK; k++) {
+        uint32_t v = d->nbr.a[k];
+        if (v == d->base[0] || v == d->base[1] || v == d->base[2] || v == d->base[3]) continue;
+        s = set_add(&g->rem, g->rempos, v);
+        if (s == DD_OK && g->link.deg[v] <= DD_LOWDEG) s = set_add(&g->cand, g->candpos, v);
+    }
+    return s;
+}
+
+/* ---- the dummy-cell hash (triangle guides) -------------------------------- */
+
+static uint32_t th(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
+{
+    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
+               ^ (uint64_t)c * 0x165667B19E3779F9ull;
+    return (uint32_t)(h >> 40) & mask;
+}
+
+static void sort3(uint32_t *x)
+{
+    uint32_t s;
+    if (x[0] > x[1]) { s = x[0]; x[0] = x[1]; x[1] = s; }
+    if (x[1] > x[2]) { s = x[1]; x[1] = x[2]; x[2] = s; }
+    if (x[0] > x[1]) { s = x[0]; x[0] = x[1]; x[1] = s; }
+}
+
+static void dh_put_raw(dd_tri_slot *h, uint32_t mask, const uint32_t k[3], uint32_t cell)
+{
+    for (uint32_t i = th(k[0], k[1], k[2], mask);; i = (i + 1) & mask)
+        if (h[i].gen == 0) {
+            h[i].a = k[0]; h[i].b = k[1]; h[i].c = k[2]; h[i].slot = cell; h[i].gen = 1;
+            return;
+        }
+}
+
+static dd_status dh_reset(dd_grr *g, size_t expect)
+{
+    size_t cap = 64;
+    while (cap < 2 * expect) cap *= 2;
+    if (cap > g->dh_cap) {
+        free(g->dh);
+        g->dh = malloc(cap * sizeof *g->dh);
+        if (!g->dh) { g->dh_cap = 0; return DD_ERR_NOMEM; }
+        g->dh_cap = (uint32_t)cap;
+    }
+    memset(g->dh, 0, g->dh_cap * sizeof *g->dh);
+    g->dh_n = 0;
+    return DD_OK;
+}
+
+/* Registers the dummy cell c of the conflict DT under its three other
+ * vertices.                                                              */
+static dd_status dh_put(dd_grr *g, uint32_t c)
+{
+    const dd_tri *x = g->d->qdt;
+    if (2 * (g->dh_n + 1) > g->dh_cap) {    /* grow and rehash */
+        uint32_t cap = g->dh_cap * 2;
+        dd_tri_slot *h = calloc(cap, sizeof *h);
+        if (!h) return DD_ERR_NOMEM;
+        for (uint32_t i = 0; i < g->dh_cap; i++)
+            if (g->dh[i].gen) {
+                uint32_t k[3] = {g->dh[i].a, g->dh[i].b, g->dh[i].c};
+                dh_put_raw(h, cap - 1, k, g->dh[i].slot);
+            }
+        free(g->dh);
+        g->dh = h;
+        g->dh_cap = cap;
+    }
+    uint32_t k[3], n = 0;
+    for (uint32_t i = 0; i < 4; i++) {
+        uint32_t w = x->tv[4 * (size_t)c + i];
+        if (w != DD_QD) k[n++] = w;
+    }
+    sort3(k);
+    dh_put_raw(g->dh, g->dh_cap - 1, k, c);
+    g->dh_n++;
+    return DD_OK;
+}
+
+/* The live dummy cell on triangle k, or DD_NONE. */
+static uint32_t dh_get(const dd_grr *g, const uint32_t tri[3])
+{
+    uint32_t k[3] = {tri[0], tri[1], tri[2]};
+    sort3(k);
+    uint32_t mask = g->dh_cap - 1;
+    const dd_tri *x = g->d->qdt;
+    for (uint32_t i = th(k[0], k[1], k[2], mask);; i = (i + 1) & mask) {
+        const dd_tri_slot *e = &g->dh[i];
+        if (!e->gen) return DD_NONE;
+        if (e->a != k[0] || e->b != k[1] || e->c != k[2]) continue;
+        uint32_t c = e->slot;      /* still that cell? (cells are recycled) */
+        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_index_of(x, c, DD_QD) >= 0 && dd_index_of(x, c, k[0]) >= 0 &&
+            dd_index_of(x, c, k[1]) >= 0 && dd_index_of(x, c, k[2]) >= 0)
+            return c;
+    }
+}
+
+/* ---- guided point location ------------------------------------------------ */
+
+/* A cell around vertex g in conflict with vertex p (see grr.h), or DD_NONE. */
+static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
+{
+    dd_tri *x = gr->d->qdt;
+    const double *pp = dd_pt(x, p);
+    uint32_t c0 = x->vcell[g];
+    if (c0 >= x->ncell || x->tv[4 * (size_t)c0] == DD_DEAD || dd_index_of(x, c0, g) < 0) return DD_NONE;
+    uint32_t ep = dd_new_epoch(x, 1);
+    gr->walk.n = 0;
+    x->stamp[c0] = ep;
+    if (dd_vec_push(&gr->walk, c0) != DD_OK) return DD_NONE;
+    for (size_t k = 0; k < gr->walk.n; k++) {
+        uint32_t c = gr->walk.a[k];
+        if (dd_cell_conflict(x, c, pp)) return c;
+        for (uint32_t j = 0; j < 4; j++) {
+            if (x->tv[4 * (size_t)c + j] == g) continue;
+            uint32_t nb = x->tn[4 * (size_t)c + j] >> 2;
+            if (x->stamp[nb] == ep) continue;
+            x->stamp[nb] = ep;
+            if (dd_vec_push(&gr->walk, nb) != DD_OK) return DD_NONE;
+        }
+    }
+    return DD_NONE;
+}
+
+/* Any cell in conflict with p, by scanning (the fallback). */
+static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
+{
+    dd_tri *x = gr->d->qdt;
+    const double *pp = dd_pt(x, p);
+    for (uint32_t c = 0; c < x->ncell; c++)
+        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_cell_conflict(x, c, pp)) return c;
+    return DD_NONE;
+}
+
+/* ---- GRR-CONSTRUCT --------------------------------------------------------- */
+
+static dd_status get_grr(dd_del *d, dd_grr **out)
+{
+    if (!d->grr) {
+        d->grr = calloc(1, sizeof *d->grr);
+        if (!d->grr) return DD_ERR_NOMEM;
+        d->grr->d = d;
+    }
+    *out = d->grr;
+    return DD_OK;
+}
+
+dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
+{
+    dd_grr *g;
+    dd_status s = get_grr(d, &g);
+    if (s != DD_OK) return s;
+    DD_PHASE_BEGIN(d);
+    s = init(g);
+    /* 1. Link deletions, recording the order and the guides. */
+    while (s == DD_OK && g->rem.n > 0) {
+        uint32_t guide = DD_NONE;
+        uint32_t p = pol->sample(g, &guide);
+        if (p == DD_NONE || g->rempos[p] == DD_NONE) return DD_ERR_INTERNAL;
+        s = dd_link_delete(&g->link, d, p);
+        if (s == DD_OK) s = dd_vec_push(&g->seq, p);
+        if (s == DD_OK) s = dd_vec_push(&g->gv, guide);
+        if (s == DD_OK && pol->triangle_guide) {
+            const uint32_t *tri = g->link.lv + 3 * (size_t)g->link.created[dd_del_rand(d) % g->link.nnew];
+            for (int i = 0; i < 3 && s == DD_OK; i++) s = dd_vec_push(&g->gt, tri[i]);
+        }
+        if (s == DD_OK) s = update_sets(g, p);
+    }
+    DD_PHASE_END(d, DD_PH_LINK);
+    if (s != DD_OK) return s;
+
+    /* 2. The base: DT(x) of the four base points, or their full DT. */
+    dd_qdt_reset(d, !pol->full_dt);
+    if (pol->full_dt) {
+        s = dd_reserve_cells(d->qdt, 16);
+        if (s == DD_OK) {
+            uint32_t b[4];
+            memcpy(b, d->base, sizeof b);
+            dd_make_first_cells(d->qdt, b);
+        }
+    } else {
+        s = dd_qdt_create(d);
+    }
+    if (s == DD_OK && pol->triangle_guide) {
+        s = dh_reset(g, 8 * g->seq.n + 16);
+        for (uint32_t c = 0; c < d->qdt->ncell && s == DD_OK; c++)
+            if (d->qdt->tv[4 * (size_t)c] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
+    }
+    DD_PHASE_END(d, DD_PH_CONFLICT);
+
+    /* 3. Reinsertion in reverse order, each from its guide. */
+    for (size_t i = g->seq.n; i-- > 0 && s == DD_OK;) {
+        uint32_t p = g->seq.a[i], c = DD_NONE;
+        if (pol->triangle_guide) c = dh_get(g, g->gt.a + 3 * i);
+        else c = locate_from_vertex(g, g->gv.a[i], p);
+        if (c == DD_NONE) {                 /* cannot happen; stay robust */
+            d->fallbacks++;
+            c = locate_by_scan(g, p);
+            if (c == DD_NONE) return DD_ERR_INTERNAL;
+        }
+        DD_PHASE_END(d, DD_PH_LOCATE);
+        s = dd_qdt_insert(d, p, c);
+        if (s == DD_OK && pol->triangle_guide) {
+            const dd_tri *x = d->qdt;
+            for (size_t k = 0; k < x->boundary.n && s == DD_OK; k++) {
+                uint32_t n = x->boundary.a[k];      /* the new cells */
+                if (dd_index_of(x, n, DD_QD) >= 0) s = dh_put(g, n);
+            }
+        }
+        DD_PHASE_END(d, DD_PH_CONFLICT);
+    }
+    if (s != DD_OK) return s;
+    return pol->full_dt ? dd_full_collect_fill(d) : dd_qdt_collect_fill(d);
+}

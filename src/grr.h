@@ -1,0 +1,62 @@
+/*
+ * grr.h -- GRR-CONSTRUCT, guided randomized reinsertion (paper 4.2).
+ *
+ * Deletes the neighbours of q from the link DT one by one (LINKDTDELETE),
+ * in an order chosen by the variant's sampling policy, recording a guide
+ * for each; then builds the conflict DT of the four base points
+ * (CREATEQCONFLICTDT) and re-inserts the deleted points in reverse order
+ * (QCONFLICTDTINSERT), each located from its guide:
+ *   - a vertex guide g (a link neighbour of p when p was deleted): gp is an
+ *     edge of DT(P_i), so the cell around g that the segment g->p enters,
+ *     or the link triangle at g it crosses, is destroyed by p; the cells
+ *     of the conflict DT around g are tested and the first one in conflict
+ *     with p starts Bowyer-Watson.  Cost: the degree of g.
+ *   - a triangle guide abc (a triangle created by p's link deletion): the
+ *     dummy cell (a,b,c,q_d) exists when p comes back and is destroyed by
+ *     it; a hash table keyed by the vertex triple finds it in O(1).
+ * The iterative loop here is the paper's recursion unrolled.  The base
+ * points are never sampled, and neither is the infinite vertex.
+ */
+#ifndef DD_GRR_H
+#define DD_GRR_H
+
+#include "delete.h"
+#include "link.h"
+
+#define DD_LOWDEG 7   /* "low degree" in the paper's sampling rules */
+
+typedef struct dd_grr dd_grr;
+
+typedef struct dd_grr_policy {
+    /* Chooses the next link vertex to delete.  For vertex guides, *guide
+     * receives a finite link neighbour of it.                              */
+    uint32_t (*sample)(dd_grr *g, uint32_t *guide);
+    int triangle_guide;   /* guide = a triangle created by the deletion    */
+    int full_dt;          /* build the full DT(P) (guide-only), not DT(x)  */
+} dd_grr_policy;
+
+/* GRR-CONSTRUCT: fills d->qdt and d->fill. */
+dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol);
+
+/* ---- for sampling policies ------------------------------------------------ */
+
+/* A random link vertex of degree <= DD_LOWDEG (base points excluded), or
+ * DD_NONE when there is none.                                            */
+uint32_t dd_grr_random_lowdeg(dd_grr *g);
+/* A random remaining link vertex (base points excluded); never DD_NONE
+ * while the link has more than the base.                                 */
+uint32_t dd_grr_random_any(dd_grr *g);
+/* Link degree of v. */
+uint32_t dd_grr_degree(const dd_grr *g, uint32_t v);
+/* Writes v's link neighbours (the infinite vertex included) to out, in
+ * ring order; returns how many (at most max).                            */
+uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max);
+/* The finite neighbour of v of lowest degree. */
+uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v);
+uint32_t dd_grr_rand(dd_grr *g);
+/* Counts a sampling fallback (reported in the deletion statistics). */
+void dd_grr_fallback(dd_grr *g);
+
+void dd_grr_free(dd_grr *g);
+
+#endif

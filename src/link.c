@@ -1,0 +1,377 @@
+/*
+ * link.c -- the link DT and LINKDTDELETE (paper 4.1; see link.h).
+ *
+ * Deleting p of link degree k leaves a hole bounded by the ring u_0..u_k-1
+ * of p's neighbours (in the orientation of the link triangles).  The hole
+ * is re-triangulated by clipping Delaunay ears: the ear (a, b, c) of three
+ * consecutive ring vertices is a triangle of the new link iff
+ *   - it is convex: the tetrahedron (a, b, c, q) is positively oriented
+ *     (for an ear through the infinite vertex, whose tetrahedron is a hull
+ *     facet of Q with the infinite vertex, convex means p lies beyond that
+ *     facet, i.e. p is in conflict with it: deleting p exposes exactly the
+ *     hull facets p saw); and
+ *   - it is empty: no other ring vertex is in conflict with (a, b, c, q).
+ * A clipped ear is a triangle of the unique (perturbed) Delaunay link, and
+ * the rest of the hole is the Delaunay triangulation of the smaller ring.
+ * Degree 3 needs no test; degree 4 one ear test; 5 to 7 an ear search over
+ * fixed arrays on the stack; larger rings the same search over scratch.
+ */
+#include "link.h"
+#include "delete.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void dd_link_free(dd_link *l)
+{
+    free(l->lv); free(l->ln); free(l->ltri); free(l->deg);
+    free(l->ring); free(l->ring_tri); free(l->ring_out); free(l->newtri);
+    free(l->rpos); free(l->rmark);
+    dd_free(l->scratch);
+    memset(l, 0, sizeof *l);
+}
+
+static dd_status grow(uint32_t **a, size_t n)
+{
+    uint32_t *b = realloc(*a, (n ? n : 1) * sizeof **a);
+    if (!b) return DD_ERR_NOMEM;
+    *a = b;
+    return DD_OK;
+}
+
+dd_status dd_link_extract(dd_link *l, dd_del *d)
+{
+    dd_tri *t = d->t;
+    uint32_t n = (uint32_t)d->star.n;
+    if (l->cap < n) {
+        if (grow(&l->lv, 3 * (size_t)n) || grow(&l->ln, 3 * (size_t)n)) return DD_ERR_NOMEM;
+        l->cap = n;
+    }
+    if (l->vcap < t->cap_v) {
+        if (grow(&l->ltri, t->cap_v) || grow(&l->deg, t->cap_v) || grow(&l->rpos, t->cap_v) ||
+            grow(&l->rmark, t->cap_v))
+            return DD_ERR_NOMEM;
+        memset(l->rmark, 0, (size_t)t->cap_v * sizeof *l->rmark);
+        l->vcap = t->cap_v;
+    }
+    if (l->ring_cap < d->nbr.n + 2) {
+        size_t r = d->nbr.n + 2;
+        if (grow(&l->ring, r) || grow(&l->ring_tri, r) || grow(&l->ring_out, r) || grow(&l->newtri, 3 * r + 6))
+            return DD_ERR_NOMEM;
+        l->ring_cap = (uint32_t)r;
+    }
+    /* Star slot of a cell, through its stamp: base + slot. */
+    uint32_t base = dd_new_epoch(t, n);
+    for (uint32_t k = 0; k < n; k++) t->stamp[d->star.a[k]] = base + k;
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t c = d->star.a[k];
+        int i = dd_index_of(t, c, d->q);
+        for (int m = 0; m < 3; m++) l->lv[3 * k + (uint32_t)m] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
+    }
+    for (size_t j = 0; j < d->nbr.n; j++) l->deg[d->nbr.a[j]] = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t c = d->star.a[k];
+        int i = dd_index_of(t, c, d->q);
+        for (uint32_t m = 0; m < 3; m++) {
+            /* across the edge opposite lv[3k+m]: the star cell across the
+             * cell facet opposite that vertex                              */
+            uint32_t nb = t->tn[4 * (size_t)c + (uint32_t)dd_facet[i][m]] >> 2;
+            uint32_t s = t->stamp[nb] - base;
+            if (s >= n) return DD_ERR_INTERNAL;
+            uint32_t x = l->lv[3 * k + (m + 1) % 3], y = l->lv[3 * k + (m + 2) % 3];
+            uint32_t j = 0;
+            while (j < 3 && (l->lv[3 * s + j] == x || l->lv[3 * s + j] == y)) j++;
+            l->ln[3 * k + m] = 3 * s + j;
+            uint32_t w = l->lv[3 * k + m];
+            if (w != DD_INF) { l->deg[w]++; l->ltri[w] = k; }
+        }
+    }
+    l->ntri = n;
+    l->nnew = 0;
+    l->inf_in_link = d->on_hull;
+    return DD_OK;
+}
+
+/* ---- the Delaunay test on the link ------------------------------------- */
+
+/* 1 if point w conflicts with the link tetrahedron (a, b, c, q). */
+static int link_conflict(dd_del *d, uint32_t a, uint32_t b, uint32_t c, const double *w)
+{
+    dd_tri *t = d->t;
+    uint32_t v[3] = {a, b, c};
+    const double *pts[4];
+    int k = -1;
+    for (int i = 0; i < 3; i++) {
+        if (v[i] == DD_INF) { k = i; pts[i] = NULL; }
+        else pts[i] = dd_pt(t, v[i]);
+    }
+    pts[3] = d->qp;
+    if (k < 0) return dd_insphere_perturbed(&t->pred, pts[0], pts[1], pts[2], pts[3], w) > 0;
+    return dd_inf_conflict(&t->pred, pts, k, w) > 0;
+}
+
+/* Is the ear (r[a], r[b], r[c]) of the ring r[0..k) (only the positions in
+ * alive[] count) a triangle of the new link?                              */
+static int ear_ok(dd_del *d, const uint32_t *r, const uint32_t *alive, uint32_t n,
+                  uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+{
+    dd_tri *t = d->t;
+    uint32_t x = r[a], y = r[b], z = r[c];
+    if (x != DD_INF && y != DD_INF && z != DD_INF) {
+        if (dd_orient3d(&t->pred, dd_pt(t, x), dd_pt(t, y), dd_pt(t, z), d->qp) <= 0) return 0;
+    } else if (!link_conflict(d, x, y, z, dd_pt(t, p))) {
+        return 0;
+    }
+    for (uint32_t m = 0; m < n; m++) {
+        uint32_t w = alive[m];
+        if (w == a || w == b || w == c || r[w] == DD_INF) continue;
+        if (link_conflict(d, x, y, z, dd_pt(t, r[w]))) return 0;
+    }
+    return 1;
+}
+
+/* Triangulates the ring positions alive[0..n) (cyclic order) into out
+ * (triples of ring positions); returns the triangles written.            */
+static uint32_t clip_ears(dd_del *d, const uint32_t *r, uint32_t *alive, uint32_t n,
+                          uint32_t p, uint32_t *out)
+{
+    uint32_t w = 0;
+    while (n > 3) {
+        uint32_t j = 0;
+        if (n == 4) {   /* one test decides between the two diagonals */
+            j = ear_ok(d, r, alive, 4, alive[0], alive[1], alive[2], p) ? 1 : 2;
+            if (j == 2 && !ear_ok(d, r, alive, 4, alive[1], alive[2], alive[3], p)) return UINT32_MAX;
+        } else {
+            while (j < n && !ear_ok(d, r, alive, n, alive[(j + n - 1) % n], alive[j], alive[(j + 1) % n], p))
+                j++;
+            if (j == n) return UINT32_MAX;   /* no ear: infinity must enter */
+        }
+        out[3 * w] = alive[(j + n - 1) % n];
+        out[3 * w + 1] = alive[j];
+        out[3 * w + 2] = alive[(j + 1) % n];
+        w++;
+        memmove(alive + j, alive + j + 1, (n - j - 1) * sizeof *alive);
+        n--;
+    }
+    /* The last triangle must be convex too; if not, infinity must enter. */
+    if (!ear_ok(d, r, alive, 3, alive[0], alive[1], alive[2], p)) return UINT32_MAX;
+    out[3 * w] = alive[0];
+    out[3 * w + 1] = alive[1];
+    out[3 * w + 2] = alive[2];
+    return w + 1;
+}
+
+static uint32_t rpos_lookup(const dd_link *l, uint32_t v)
+{
+    if (v == DD_INF) return l->inf_rpos;
+    return l->rmark[v] == l->rgen ? l->rpos[v] : DD_NONE;
+}
+
+/* The hole when the infinite vertex must appear in it (q leaves the
+ * interior of the hull of the remaining points: no Delaunay ear exists).
+ * The new triangles are the triangles of the link of q in DT(ring + q)
+ * on the hole's side of the ring: found by a flood fill from the ring
+ * edges, in the orientation the old triangles gave them.  Happens at most
+ * once per deletion of q (q never goes back inside).                     */
+static dd_status fill_with_infinity(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, uint32_t *nt)
+{
+    dd_tri *t = d->t;
+    if (!l->scratch) {
+        dd_tri *x = calloc(1, sizeof *x);
+        if (!x) return DD_ERR_NOMEM;
+        x->borrowed = 1;
+        x->free_head = x->inf_cell = x->hint = DD_NONE;
+        x->rng = 0x5DEECE66Dull;
+        dd_pred_init(&x->pred);
+        l->scratch = x;
+    }
+    dd_tri *x = l->scratch;
+    x->xyz = t->xyz;
+    x->v2in = t->v2in;
+    x->vcell = d->qdt_vcell;      /* free to use: qdt is not built yet */
+    dd_clear_cells(x);
+    x->qd_point = NULL;
+    /* ids: q then the ring; four independent ones in front */
+    uint32_t *ids = malloc((k + 1) * sizeof *ids);
+    if (!ids) return DD_ERR_NOMEM;
+    ids[0] = d->q;
+    for (uint32_t j = 0; j < k; j++) ids[j + 1] = l->ring[j];
+    uint32_t n = k + 1, f = 0;
+    const double *p0 = dd_pt(t, ids[0]), *p1 = dd_pt(t, ids[1]);
+    uint32_t i2 = 2, i3;
+    while (i2 < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, ids[i2])) == 0) i2++;
+    for (i3 = i2 + 1; i2 < n && i3 < n; i3++)
+        if (dd_orient3d(&t->pred, p0, p1, dd_pt(t, ids[i2]), dd_pt(t, ids[i3])) != 0) break;
+    if (i2 >= n || i3 >= n) {
+        /* q and the ring are coplanar: only infinite link tetrahedra, the
+         * fan of the ring edges around the infinite vertex.             */
+        for (uint32_t j = 0; j < k; j++) {
+            tri[3 * f] = DD_INF; tri[3 * f + 1] = l->ring[j]; tri[3 * f + 2] = l->ring[(j + 1) % k];
+            f++;
+        }
+        free(ids);
+        *nt = f;
+        return DD_OK;
+    }
+    uint32_t s2 = ids[2]; ids[2] = ids[i2]; ids[i2] = s2;
+    uint32_t s3 = ids[3]; ids[3] = ids[i3]; ids[i3] = s3;
+    dd_status s = dd_reserve_cells(x, 8 * n + 16);
+    if (s == DD_OK) {
+        uint32_t b[4] = {ids[0], ids[1], ids[2], ids[3]};
+        dd_make_first_cells(x, b);
+    }
+    for (uint32_t j = 4; j < n && s == DD_OK; j++) s = dd_insert_vertex(x, ids[j]);
+    free(ids);
+    if (s != DD_OK) return s;
+    /* The link of q in x, as oriented triangles. */
+    uint32_t *cand = NULL, nc = 0, cap = 0;
+    for (uint32_t c = 0; c < x->ncell; c++) {
+        if (x->tv[4 * (size_t)c] == DD_DEAD) continue;
+        int i = dd_index_of(x, c, d->q);
+        if (i < 0) continue;
+        if (nc == cap) {
+            cap = cap ? 2 * cap : 64;
+            uint32_t *m = realloc(cand, 3 * (size_t)cap * sizeof *m);
+            if (!m) { free(cand); return DD_ERR_NOMEM; }
+            cand = m;
+        }
+        for (int m = 0; m < 3; m++) cand[3 * nc + (uint32_t)m] = x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
+        nc++;
+    }
+    /* Flood fill from the ring edges u_j -> u_j+1 (hole side), never
+     * crossing a ring edge.  Small: quadratic matching is fine here.     */
+    unsigned char *in = calloc(nc ? nc : 1, 1);
+    if (!in) { free(cand); return DD_ERR_NOMEM; }
+    int grew = 1;
+    while (grew) {
+        grew = 0;
+        for (uint32_t c = 0; c < nc; c++) {
+            if (in[c]) continue;
+            for (uint32_t m = 0; m < 3 && !in[c]; m++) {
+                uint32_t a = cand[3 * c + m], b = cand[3 * c + (m + 1) % 3];
+                uint32_t ra = rpos_lookup(l, a), rb = rpos_lookup(l, b);
+                int ring_edge = ra != DD_NONE && rb != DD_NONE && rb == (ra + 1) % k;
+                if (ring_edge) { in[c] = 1; grew = 1; break; }
+                if (ra != DD_NONE && rb != DD_NONE && ra == (rb + 1) % k) continue;   /* outer side */
+                for (uint32_t e = 0; e < nc; e++) {      /* neighbour across b->a */
+                    if (!in[e]) continue;
+                    for (uint32_t mm = 0; mm < 3; mm++)
+                        if (cand[3 * e + mm] == b && cand[3 * e + (mm + 1) % 3] == a) { in[c] = 1; grew = 1; }
+                }
+            }
+        }
+    }
+    for (uint32_t c = 0; c < nc; c++)
+        if (in[c]) {
+            if (f >= k) { f = k + 1; break; }
+            memcpy(tri + 3 * f, cand + 3 * c, 3 * sizeof *tri);
+            f++;
+        }
+    free(in);
+    free(cand);
+    *nt = f;
+    return DD_OK;
+}
+
+
+dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
+{
+    /* 1. The ring around p: triangle ring_tri[j] = (p, u_j, u_j+1). */
+    uint32_t t0 = l->ltri[p], tt = t0, k = 0;
+    if (++l->rgen == 0) { memset(l->rmark, 0, l->vcap * sizeof *l->rmark); l->rgen = 1; }
+    l->inf_rpos = DD_NONE;
+    do {
+        uint32_t m = 0;
+        while (m < 3 && l->lv[3 * tt + m] != p) m++;
+        if (m == 3 || k >= l->ring_cap) return DD_ERR_INTERNAL;
+        uint32_t u = l->lv[3 * tt + (m + 1) % 3];
+        l->ring[k] = u;
+        if (u == DD_INF) l->inf_rpos = k;
+        else { l->rpos[u] = k; l->rmark[u] = l->rgen; }
+        l->ring_tri[k] = tt;
+        l->ring_out[k] = l->ln[3 * tt + m];
+        k++;
+        tt = l->ln[3 * tt + (m + 1) % 3] / 3;
+    } while (tt != t0);
+    if (k < 3) return DD_ERR_INTERNAL;
+
+    /* 2. Re-triangulate the hole: Delaunay ears, or (once) the fill that
+     *    brings in the infinite vertex.                                   */
+    uint32_t small_alive[8], *alive = small_alive, *heap_alive = NULL;
+    if (k > 8) {
+        heap_alive = malloc(k * sizeof *heap_alive);
+        if (!heap_alive) return DD_ERR_NOMEM;
+        alive = heap_alive;
+    }
+    for (uint32_t j = 0; j < k; j++) alive[j] = j;
+    uint32_t *tri = l->newtri;
+    uint32_t nt = clip_ears(d, l->ring, alive, k, p, tri);
+    free(heap_alive);
+    if (nt == k - 2) {
+        for (uint32_t j = 0; j < 3 * nt; j++) tri[j] = l->ring[tri[j]];   /* positions -> ids */
+    } else if (l->inf_rpos == DD_NONE) {
+        dd_status s = fill_with_infinity(l, d, k, tri, &nt);
+        if (s != DD_OK) return s;
+        if (nt != k) return DD_ERR_INTERNAL;
+        l->inf_in_link = 1;
+    } else {
+        return DD_ERR_INTERNAL;
+    }
+
+    /* 3. Write them over the old triangles; unused old ones die. */
+    for (uint32_t j = 0; j < nt; j++)
+        memcpy(l->lv + 3 * (size_t)l->ring_tri[j], tri + 3 * j, 3 * sizeof *tri);
+    for (uint32_t j = nt; j < k; j++) l->lv[3 * (size_t)l->ring_tri[j]] = DD_DEAD;
+    /* 4. Neighbours: a ring edge u_j -> u_j+1 keeps its outside triangle;
+     *    any other edge is shared by two new triangles.                   */
+    for (uint32_t j = 0; j < nt; j++) {
+        uint32_t s = l->ring_tri[j];
+        for (uint32_t m = 0; m < 3; m++) {
+            uint32_t x = tri[3 * j + (m + 1) % 3], y = tri[3 * j + (m + 2) % 3];
+            uint32_t rx = rpos_lookup(l, x), ry = rpos_lookup(l, y);
+            if (rx != DD_NONE && ry != DD_NONE && ry == (rx + 1) % k) {
+                uint32_t o = l->ring_out[rx];
+                l->ln[3 * s + m] = o;
+                l->ln[o] = 3 * s + m;
+                continue;
+            }
+            for (uint32_t jj = 0; jj < nt; jj++) {
+                if (jj == j) continue;
+                for (uint32_t mm = 0; mm < 3; mm++)
+                    if (tri[3 * jj + (mm + 1) % 3] == y && tri[3 * jj + (mm + 2) % 3] == x)
+                        l->ln[3 * s + m] = 3 * l->ring_tri[jj] + mm;
+            }
+        }
+    }
+    /* 5. Degrees and vertex links: each ring vertex loses p and gains one
+     *    per new inner edge (seen once from each end).                    */
+    for (uint32_t j = 0; j < k; j++)
+        if (l->ring[j] != DD_INF) l->deg[l->ring[j]]--;
+    for (uint32_t j = 0; j < nt; j++) {
+        uint32_t s = l->ring_tri[j];
+        for (uint32_t m = 0; m < 3; m++) {
+            uint32_t x = tri[3 * j + m], y = tri[3 * j + (m + 1) % 3];
+            if (x == DD_INF) continue;
+            l->ltri[x] = s;
+            uint32_t rx = rpos_lookup(l, x), ry = rpos_lookup(l, y);
+            if (!(rx != DD_NONE && ry != DD_NONE && ry == (rx + 1) % k)) l->deg[x]++;
+        }
+    }
+    l->deg[p] = 0;
+    l->ltri[p] = DD_NONE;
+    l->nnew = nt;
+    l->nring = k;
+    for (uint32_t j = 0; j < nt && j < DD_LINK_MAXRING; j++) l->created[j] = l->ring_tri[j];
+    return DD_OK;
+}
+
+size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max)
+{
+    size_t n = 0;
+    for (uint32_t s = 0; s < l->ntri; s++) {
+        if (l->lv[3 * s] == DD_DEAD) continue;
+        if (n < max) memcpy(out3 + 3 * n, l->lv + 3 * s, 3 * sizeof *out3);
+        n++;
+    }
+    return n;
+}

@@ -1,0 +1,173 @@
+/*
+ * test_link.c -- LINKDTDELETE on its own (paper 4.1): after each deletion
+ * of a link vertex, the link equals the link of q in DT(Q_i-1) computed
+ * from scratch (Q_i-1 = q and the link vertices not yet deleted), on
+ * random small cases: uniform points, cospherical integer points, grids
+ * and hull vertices (the infinite vertex in the link).
+ */
+#include "testlib.h"
+#include "delete.h"
+#include "link.h"
+#include "../datasets/datasets.h"
+
+/* An oriented triangle as input indices, rotated so the smallest leads
+ * (-1 for the infinite vertex, which then always leads).                 */
+typedef struct otri { int32_t v[3]; } otri;
+
+static otri norm(int32_t a, int32_t b, int32_t c)
+{
+    otri t = {{a, b, c}};
+    while (t.v[0] > t.v[1] || t.v[0] > t.v[2]) {
+        int32_t s = t.v[0]; t.v[0] = t.v[1]; t.v[1] = t.v[2]; t.v[2] = s;
+    }
+    return t;
+}
+
+static int cmp_otri(const void *x, const void *y)
+{
+    const otri *a = x, *b = y;
+    for (int i = 0; i < 3; i++)
+        if (a->v[i] != b->v[i]) return a->v[i] < b->v[i] ? -1 : 1;
+    return 0;
+}
+
+/* The link of input vertex qi in DT(pts restricted to keep[]), as oriented
+ * triangles in the input indices of pts.                                  */
+static size_t scratch_link(const double *pts, const uint32_t *keep, uint32_t nk, uint32_t qi, otri *out)
+{
+    double *sub = malloc(3 * sizeof(double) * nk);
+    uint32_t qs = UINT32_MAX;
+    for (uint32_t i = 0; i < nk; i++) {
+        memcpy(sub + 3 * i, pts + 3 * keep[i], 3 * sizeof(double));
+        if (keep[i] == qi) qs = i;
+    }
+    dd_tri *t;
+    char msg[256];
+    size_t n = 0;
+    if (dd_create(&t, sub, nk, msg, sizeof msg) == DD_OK) {
+        dd_del *d;
+        if (dd_del_star_of(t, qs, &d) == DD_OK) {
+            for (size_t k = 0; k < d->star.n; k++) {
+                uint32_t c = d->star.a[k];
+                int i = dd_index_of(t, c, d->q);
+                int32_t w[3];
+                for (int m = 0; m < 3; m++) {
+                    int32_t x = dd_input_index(t, t->tv[4 * c + (uint32_t)dd_facet[i][m]]);
+                    w[m] = x < 0 ? -1 : (int32_t)keep[x];
+                }
+                out[n++] = norm(w[0], w[1], w[2]);
+            }
+        }
+        dd_free(t);
+    }
+    free(sub);
+    qsort(out, n, sizeof *out, cmp_otri);
+    return n;
+}
+
+static size_t our_link(const dd_tri *t, const dd_link *l, otri *out)
+{
+    size_t n = 0;
+    for (uint32_t s = 0; s < l->ntri; s++) {
+        if (l->lv[3 * s] == DD_DEAD) continue;
+        out[n++] = norm(dd_input_index(t, l->lv[3 * s]), dd_input_index(t, l->lv[3 * s + 1]),
+                        dd_input_index(t, l->lv[3 * s + 2]));
+    }
+    qsort(out, n, sizeof *out, cmp_otri);
+    return n;
+}
+
+/* Checks the link structure: symmetric neighbours sharing their edge, and
+ * degrees equal to the number of triangles around each vertex.           */
+static int link_consistent(const dd_link *l, char *why, size_t whylen)
+{
+    for (uint32_t s = 0; s < l->ntri; s++) {
+        if (l->lv[3 * s] == DD_DEAD) continue;
+        for (uint32_t m = 0; m < 3; m++) {
+            uint32_t e = l->ln[3 * s + m], u = e / 3;
+            if (l->ln[e] != 3 * s + m || l->lv[3 * u] == DD_DEAD) {
+                snprintf(why, whylen, "triangle %u edge %u: neighbour not symmetric", s, m);
+                return 0;
+            }
+            uint32_t x = l->lv[3 * s + (m + 1) % 3], y = l->lv[3 * s + (m + 2) % 3];
+            uint32_t ux = l->lv[3 * u + (e % 3 + 1) % 3], uy = l->lv[3 * u + (e % 3 + 2) % 3];
+            if (ux != y || uy != x) {
+                snprintf(why, whylen, "triangle %u edge %u: neighbour does not share the edge reversed", s, m);
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+static void run_case(tl_state *st, const char *name, const double *pts, uint32_t n, uint32_t qi,
+                     tl_rng *r, long *checks, long *bad, char *why, size_t whylen)
+{
+    dd_tri *t;
+    char msg[256];
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) return;
+    dd_del *d;
+    dd_link l;
+    memset(&l, 0, sizeof l);
+    if (dd_del_star_of(t, qi, &d) != DD_OK || dd_link_extract(&l, d) != DD_OK) {
+        dd_free(t);
+        return;
+    }
+    /* keep = q and its finite neighbours (input indices) */
+    uint32_t nk = 0, *keep = malloc((d->nbr.n + 1) * sizeof *keep);
+    keep[nk++] = qi;
+    for (size_t k = 0; k < d->nbr.n; k++) keep[nk++] = (uint32_t)dd_input_index(t, d->nbr.a[k]);
+    otri *a = malloc(8 * (nk + 8) * sizeof *a), *b = malloc(8 * (nk + 8) * sizeof *b);
+    while (nk > 5) {
+        /* delete a random finite link vertex; keep 4 finite ones at least */
+        uint32_t j = 1 + (uint32_t)tl_int(r, 0, nk - 2);
+        uint32_t victim = keep[j];
+        /* Would DT of the rest be flat?  Then stop: no link to compare.   */
+        keep[j] = keep[--nk];
+        dd_status s = dd_link_delete(&l, d, t->in2v[victim]);
+        (*checks)++;
+        size_t na = s == DD_OK ? our_link(t, &l, a) : 0;
+        size_t nb = scratch_link(pts, keep, nk, qi, b);
+        if (nb == 0) break;                       /* the rest is coplanar */
+        char w2[200] = "";
+        int ok = s == DD_OK && na == nb && !memcmp(a, b, na * sizeof *a) && link_consistent(&l, w2, sizeof w2);
+        if (!ok && (*bad)++ == 0)
+            snprintf(why, whylen, "%s: deleting %u from the link of %u: %s %zu vs %zu triangles %s", name,
+                     victim, qi, s == DD_OK ? "ok" : "FAILED", na, nb, w2);
+        if (!ok) break;
+    }
+    (void)st;
+    free(a); free(b); free(keep);
+    dd_link_free(&l);
+    dd_free(t);
+}
+
+int main(int argc, char **argv)
+{
+    tl_state st = {0, 0};
+    int small = argc > 1 && !strcmp(argv[1], "small");
+    tl_rng r = {2024};
+    struct { const char *ds; uint32_t n; int cases; } sets[] = {
+        {"uniform", 60, 300}, {"sphere", 40, 200}, {"cosphere", 60, 200}, {"grid", 64, 200},
+        {"grid", 125, 100}, {"moment", 30, 60}, {"helix", 200, 100}, {"layers", 50, 100}};
+    for (size_t i = 0; i < sizeof sets / sizeof *sets; i++) {
+        long checks = 0, bad = 0;
+        char why[400] = "";
+        int cases = small ? sets[i].cases / 10 : sets[i].cases;
+        for (int c = 0; c < cases; c++) {
+            double *p;
+            uint32_t np;
+            char msg[256];
+            if (dd_gen(sets[i].ds, sets[i].n, (uint64_t)c + 1, &p, &np, msg, sizeof msg) != DD_OK) continue;
+            /* the uniform sets get a random translation of their points'
+             * order by the seed; pick q at random                          */
+            uint32_t qi = (uint32_t)tl_int(&r, 0, np - 1);
+            run_case(&st, sets[i].ds, p, np, qi, &r, &checks, &bad, why, sizeof why);
+            free(p);
+        }
+        char name[96];
+        snprintf(name, sizeof name, "link/%s-%u", sets[i].ds, sets[i].n);
+        tl_check(&st, bad == 0 && checks > 0, name, "%ld of %ld link deletions wrong; first: %s", bad, checks, why);
+    }
+    return tl_finish(&st);
+}
