@@ -117,11 +117,13 @@ test: deps
 	@sh tests/run.sh $(B) $(A)
 
 # ---- bench --------------------------------------------------------------------
-bench: deps $(B)/dtdel
-	@sh scripts/bench.sh full
+# BENCH_SCALE=4 make bench: four times as many deletions per case.
+BENCH_SCALE ?= 1
+bench: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
+	@CFLAGS_USED="$(CFLAGS_R)" sh scripts/bench.sh full $(BENCH_SCALE)
 
-bench-quick: deps $(B)/dtdel
-	@sh scripts/bench.sh quick
+bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
+	@CFLAGS_USED="$(CFLAGS_R)" sh scripts/bench.sh quick $(BENCH_SCALE)
 
 plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results

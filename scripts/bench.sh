@@ -1,13 +1,36 @@
 #!/bin/sh
-# make bench / make bench-quick.  For now: the construction benchmark
-# (dtdel against CGAL's range insert, same run), written to results/.
+# make bench (full) / make bench-quick: the deletion benchmark, then the
+# construction benchmark, then tables and plots, all into results/.
+#   1. build/count/dtdel bench  -> results/phases/*.csv (phase split, counters on)
+#   2. build/dtdel bench        -> results/<dataset>.csv (timings, phases merged)
+#   3. build/summarize          -> results/summary.md, results/plotdata/
+#   4. scripts/plots.sh         -> results/*.png
 mode=${1:-full}
+scale=${2:-1}
+set -e
+mkdir -p results/phases
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+{
+    echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+    echo "cores: $(nproc)"
+    echo "compiler: $(${CC:-cc} --version | head -n 1)"
+    echo "flags: ${CFLAGS_USED:-see Makefile}"
+    echo "cgal: $(build/dtdel variants >/dev/null 2>&1; build/dtdel build-bench --help >/dev/null 2>&1; dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo unknown)"
+    echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
+    echo "commit: $commit"
+    echo "mode: $mode (scale $scale)"
+} >results/meta.txt
+echo "bench ($mode): phase split with the counting build" >&2
+build/count/dtdel bench --mode "$mode" --scale "$scale" --out results/phases
+echo "bench ($mode): timings with the release build" >&2
+rc=0
+build/dtdel bench --mode "$mode" --scale "$scale" --out results --phases results/phases || rc=$?
 n=1000000
 [ "$mode" = quick ] && n=200000
-mkdir -p results
-out=results/build.txt
-{
-    echo "# construction benchmark ($mode), $(date -u +%Y-%m-%dT%H:%MZ), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
-    echo "# machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores"
-    build/dtdel build-bench "$n"
-} | tee "$out"
+build/dtdel build-bench "$n" >results/build.txt || rc=$?
+cat results/build.txt
+csvs=$(ls results/*.csv)
+build/summarize results $csvs
+sh scripts/plots.sh results
+echo "results: results/summary.md and results/*.png" >&2
+exit $rc

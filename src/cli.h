@@ -52,6 +52,7 @@ int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
 int cmd_delete(int argc, char **argv);
 int cmd_time(int argc, char **argv);
 int cmd_check(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
 
 
 #endif

@@ -80,6 +80,13 @@ int dd_on_hull(dd_tri *t, uint32_t v);
  * -1 for the infinite vertex; the cells sorted lexicographically.  *tets
  * is malloc'd (4 * *ntets ints); the caller frees it.                    */
 dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets);
+/* The input indices of v's finite neighbours (at most max written);
+ * returns their number, 0 if v is not a vertex.                         */
+uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max);
+/* Canonical form (as dd_canonical) of the cells incident to any of the
+ * input vertices vs[0..n): what deleting their common neighbour changes. */
+dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets);
+
 /* 64-bit hash of a canonical list (FNV-1a over the ints). */
 uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets);
 

@@ -462,6 +462,48 @@ int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
     }
 }
 
+int dd_cgal_local_canonical(const dd_cgal *c, const uint32_t *verts, size_t nv,
+                            int32_t **tets, size_t *ntets)
+{
+    if (c == NULL || tets == NULL || ntets == NULL)
+        return 1;
+    *tets = NULL;
+    *ntets = 0;
+    try {
+        const Main_dt &dt = c->dt;
+        std::vector<std::array<int32_t, 4> > all;
+        std::vector<Cell_handle> cells;
+        for (std::size_t i = 0; i < nv; i++) {
+            if (!has_vertex(c, verts[i]))
+                return 1;
+            cells.clear();
+            dt.incident_cells(c->vh[verts[i]], std::back_inserter(cells));
+            for (std::size_t j = 0; j < cells.size(); j++) {
+                std::array<int32_t, 4> t;
+                for (std::size_t k = 0; k < 4; k++) {
+                    const Vertex_handle w = cells[j]->vertex(static_cast<int>(k));
+                    t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
+                }
+                std::sort(t.begin(), t.end());
+                all.push_back(t);
+            }
+        }
+        std::sort(all.begin(), all.end());
+        all.erase(std::unique(all.begin(), all.end()), all.end());
+        int32_t *out = static_cast<int32_t *>(
+            std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
+        if (out == NULL)
+            return 1;
+        for (std::size_t i = 0; i < all.size(); i++)
+            std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
+        *tets = out;
+        *ntets = all.size();
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
 int dd_cgal_remove(dd_cgal *c, uint32_t v)
 {
     if (c == NULL || !has_vertex(c, v))

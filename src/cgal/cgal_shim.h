@@ -36,6 +36,12 @@ uint32_t dd_cgal_degree(const dd_cgal *c, uint32_t v);  /* adjacent vertices,
  * frees.                                                                  */
 int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets);
 
+/* Canonical form of the cells incident to any of the input vertices
+ * verts[0..nv) (deduplicated): the part of the triangulation a deletion
+ * of their common neighbour can change.  Nonzero if one is no vertex.   */
+int dd_cgal_local_canonical(const dd_cgal *c, const uint32_t *verts, size_t nv,
+                            int32_t **tets, size_t *ntets);
+
 /* CGAL's own remove() of input vertex v (triangulate-and-sew). */
 int dd_cgal_remove(dd_cgal *c, uint32_t v);
 /* cgal-rnd: the same triangulate-and-sew, but the temporary DT of v's

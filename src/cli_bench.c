@@ -1,0 +1,271 @@
+/*
+ * cli_bench.c -- `dtdel bench`: the paper's experiment (DESIGN 10).
+ *
+ * Per dataset and size: DT(S) is built once by the engine and once by
+ * CGAL; the vertices to delete are drawn from a seeded generator, the same
+ * for every row; for each vertex and row the deletion alone is timed with
+ * a monotonic clock (median of up to 5 repetitions while they take under
+ * 2 ms together), its result is compared with CGAL's, and the vertex is
+ * re-inserted untimed so the next deletion starts from DT(S) again.
+ *
+ * The comparison: the canonical form of the cells incident to the deleted
+ * vertex's neighbours (everything a deletion can change) must equal
+ * CGAL's; on the first deletion of each case with n <= 20000 the whole
+ * triangulation is compared too.  A mismatch is counted and written in the
+ * match column (0); it is a bug.
+ *
+ * Phases: counting builds (build/count/dtdel) write only the engine rows,
+ * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
+ * copies those phase columns into its own rows (same seed, same sample).
+ */
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+typedef struct bcase { const char *dataset; uint32_t n, deletions; } bcase;
+
+static const bcase full_cases[] = {
+    {"moment", 8, 6}, {"moment", 16, 6}, {"moment", 32, 6}, {"moment", 64, 6}, {"moment", 128, 6},
+    {"moment", 256, 6}, {"moment", 512, 5}, {"moment", 1024, 4},
+    {"helix", 1000, 12}, {"helix", 4000, 12}, {"helix", 16000, 12}, {"helix", 64000, 10},
+    {"uniform", 100000, 150}, {"sphere", 100000, 150}, {"bunny", 0, 100},
+    {"grid", 8000, 60}, {"cosphere", 4000, 60}, {NULL, 0, 0}};
+static const bcase quick_cases[] = {
+    {"moment", 16, 3}, {"moment", 64, 3}, {"moment", 256, 3}, {"moment", 512, 2},
+    {"helix", 1000, 6}, {"helix", 16000, 6},
+    {"uniform", 20000, 40}, {"sphere", 20000, 40}, {"bunny", 10000, 20},
+    {"grid", 1000, 20}, {"cosphere", 1000, 20}, {NULL, 0, 0}};
+
+typedef struct phase_row { uint32_t n, vertex; char variant[24]; double ph[4]; uint64_t tets; } phase_row;
+
+static int cmp_phase(const void *a, const void *b)
+{
+    const phase_row *x = a, *y = b;
+    if (x->n != y->n) return x->n < y->n ? -1 : 1;
+    if (x->vertex != y->vertex) return x->vertex < y->vertex ? -1 : 1;
+    return strcmp(x->variant, y->variant);
+}
+
+/* Loads PHASEDIR/<dataset>.csv written by a counting build, if any. */
+static phase_row *load_phases(const char *dir, const char *dataset, size_t *n)
+{
+    *n = 0;
+    if (!dir) return NULL;
+    char path[512], line[1024];
+    snprintf(path, sizeof path, "%s/%s.csv", dir, dataset);
+    FILE *f = fopen(path, "r");
+    if (!f) return NULL;
+    size_t cap = 256;
+    phase_row *a = malloc(cap * sizeof *a);
+    if (!fgets(line, sizeof line, f)) { fclose(f); free(a); return NULL; }   /* header */
+    while (a && fgets(line, sizeof line, f)) {
+        phase_row r;
+        char ds[64];
+        unsigned long long tets;
+        if (sscanf(line, "%63[^,],%u,%u,%*u,%*d,%23[^,],%*f,%llu,%lf,%lf,%lf,%lf", ds, &r.n, &r.vertex,
+                   r.variant, &tets, &r.ph[0], &r.ph[1], &r.ph[2], &r.ph[3]) != 9)
+            continue;
+        r.tets = tets;
+        if (*n == cap) {
+            phase_row *b = realloc(a, 2 * cap * sizeof *a);
+            if (!b) break;
+            a = b;
+            cap *= 2;
+        }
+        a[(*n)++] = r;
+    }
+    fclose(f);
+    if (a) qsort(a, *n, sizeof *a, cmp_phase);
+    return a;
+}
+
+static const phase_row *find_phase(const phase_row *a, size_t n, uint32_t np, uint32_t v, const char *var)
+{
+    phase_row key;
+    key.n = np;
+    key.vertex = v;
+    snprintf(key.variant, sizeof key.variant, "%s", var);
+    return a ? bsearch(&key, a, n, sizeof *a, cmp_phase) : NULL;
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Local canonical hash of the row's result around the neighbours nb. */
+static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, uint32_t k, uint64_t *h)
+{
+    int32_t *a = NULL;
+    size_t n = 0;
+    int bad = r->kind == ROW_ENGINE ? dd_local_canonical(t, nb, k, &a, &n) != DD_OK
+                                    : dd_cgal_local_canonical(g, nb, k, &a, &n);
+    if (!bad) *h = dd_canonical_hash(a, n);
+    free(a);
+    return bad;
+}
+
+static int full_equal(const row *r, dd_tri *t, dd_cgal *g, dd_cgal *ref)
+{
+    int32_t *a = NULL, *b = NULL;
+    size_t na = 0, nb = 0;
+    int ok = (r->kind == ROW_ENGINE ? dd_canonical(t, &a, &na) == DD_OK : !dd_cgal_canonical(g, &a, &na)) &&
+             !dd_cgal_canonical(ref, &b, &nb) && na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+    free(a);
+    free(b);
+    return ok;
+}
+
+int cmd_bench(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("bench");
+    const char *mode = "full", *outdir = "results", *phasedir = NULL, *only = NULL;
+    uint64_t seed = 1;
+    double scale = 1.0;
+    int counting = 0;
+#ifdef DD_COUNTERS
+    counting = 1;
+#endif
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--mode") && i + 1 < argc) mode = argv[++i];
+        else if (!strcmp(argv[i], "--out") && i + 1 < argc) outdir = argv[++i];
+        else if (!strcmp(argv[i], "--phases") && i + 1 < argc) phasedir = argv[++i];
+        else if (!strcmp(argv[i], "--dataset") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
+            char *end;
+            scale = strtod(argv[++i], &end);
+            if (*end || !(scale > 0) || scale > 1000) return usage_error("bench", "--scale wants a positive number, got '%s'", argv[i]);
+        } else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
+            if (parse_u64(argv[++i], &seed)) return usage_error("bench", "--seed wants a non-negative integer%s", "");
+        } else return usage_error("bench", "unexpected argument '%s'", argv[i]);
+    }
+    const bcase *cases = !strcmp(mode, "full") ? full_cases : !strcmp(mode, "quick") ? quick_cases : NULL;
+    if (!cases) return usage_error("bench", "--mode is quick or full, got '%s'", mode);
+    mkdir(outdir, 0777);
+    row all[32], rows[32];
+    size_t na = all_rows(all, 32), nr = 0;
+    /* cgal first: its result is the reference of every other row */
+    for (size_t i = 0; i < na; i++)
+        if (all[i].kind == ROW_CGAL) rows[nr++] = all[i];
+    for (size_t i = 0; i < na; i++)
+        if (all[i].kind != ROW_CGAL) rows[nr++] = all[i];
+    double total_work = 0, done_work = 0, t_start = now_seconds();
+    for (const bcase *c = cases; c->dataset; c++)
+        if (!only || !strcmp(only, c->dataset)) total_work += (double)c->deletions * (1.0 + (double)c->n / 1000.0);
+    long mismatches = 0;
+    const char *open_ds = NULL;
+    FILE *csv = NULL;
+    phase_row *ph = NULL;
+    size_t nph = 0;
+    for (const bcase *c = cases; c->dataset; c++) {
+        if (only && strcmp(only, c->dataset)) continue;
+        if (!open_ds || strcmp(open_ds, c->dataset)) {
+            if (csv) fclose(csv);
+            free(ph);
+            char path[512];
+            snprintf(path, sizeof path, "%s/%s.csv", outdir, c->dataset);
+            csv = fopen(path, "w");
+            if (!csv) { fprintf(stderr, "dtdel bench: cannot write %s\n", path); return EXIT_INPUT; }
+            fprintf(csv, "dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,locate_us,conflict_us,sew_us,match\n");
+            open_ds = c->dataset;
+            ph = load_phases(phasedir, c->dataset, &nph);
+        }
+        double *pts;
+        uint32_t np;
+        char msg[512];
+        if (dd_gen(c->dataset, c->n, seed, &pts, &np, msg, sizeof msg) != DD_OK) {
+            fprintf(stderr, "dtdel bench: %s\n", msg);
+            return EXIT_INPUT;
+        }
+        dd_tri *t;
+        if (dd_create(&t, pts, np, msg, sizeof msg) != DD_OK) {
+            fprintf(stderr, "dtdel bench: %s %u: %s\n", c->dataset, np, msg);
+            return EXIT_INPUT;
+        }
+        dd_cgal *g = dd_cgal_build(pts, np), *ref = np <= 20000 ? dd_cgal_build(pts, np) : NULL;
+        uint32_t k = (uint32_t)((double)c->deletions * scale + 0.5);
+        if (k < 1) k = 1;
+        if (k > dd_num_vertices(t)) k = dd_num_vertices(t);
+        uint64_t x = (seed + c->n) * 0x9E3779B97F4A7C15ull | 1;
+        unsigned char *used = calloc(np, 1);
+        uint32_t *nb = malloc((np + 1) * sizeof *nb);
+        for (uint32_t it = 0; it < k; it++) {
+            uint32_t v;
+            do {
+                x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+                v = (uint32_t)((x >> 11) % np);
+            } while (used[v] || !dd_is_vertex(t, v));
+            used[v] = 1;
+            uint32_t deg = dd_degree(t, v), hull = (uint32_t)dd_on_hull(t, v);
+            uint32_t nnb = dd_neighbors(t, v, nb, np);
+            uint64_t refh = 0;
+            int have_ref = 0;
+            for (size_t ri = 0; ri < nr; ri++) {
+                const row *r = &rows[ri];
+                if (counting && r->kind != ROW_ENGINE) continue;
+                double us[5];
+                int reps = 0, bad = 0;
+                double spent = 0;
+                uint64_t h = 0;
+                int hashed = 0;
+                dd_delete_stats st;
+                memset(&st, 0, sizeof st);
+                while (reps < 5 && (reps == 0 || spent < 2e-3) && !bad) {
+                    double t0 = now_seconds();
+                    bad = row_delete(r, t, g, v, seed + it + (uint64_t)reps);
+                    double t1 = now_seconds();
+                    if (bad) break;
+                    us[reps++] = 1e6 * (t1 - t0);
+                    spent += t1 - t0;
+                    if (r->kind == ROW_ENGINE) dd_last_delete_stats(t, &st);
+                    if (!hashed) { bad = local_hash(r, t, g, nb, nnb, &h); hashed = 1; }
+                    if (!bad && it == 0 && reps == 1 && ref && dd_cgal_remove(ref, v) == 0) {
+                        if (!full_equal(r, t, g, ref)) h ^= 1;    /* force a mismatch */
+                        dd_cgal_reinsert(ref, v);
+                    }
+                    if (row_reinsert(r, t, g, v)) { bad = 1; break; }
+                }
+                if (bad) {
+                    if (r->kind == ROW_CGAL) break;    /* CGAL refuses: skip the vertex */
+                    fprintf(stderr, "dtdel bench: %s %u: %s failed on vertex %u: %s\n", c->dataset, np, r->name, v,
+                            r->kind == ROW_ENGINE ? dd_errmsg(t) : "");
+                    mismatches++;
+                    continue;
+                }
+                if (r->kind == ROW_CGAL) { refh = h; have_ref = 1; }
+                int match = counting ? 1 : have_ref && h == refh;
+                if (!match) mismatches++;
+                qsort(us, (size_t)reps, sizeof *us, cmp_dbl);
+                double med = reps % 2 ? us[reps / 2] : 0.5 * (us[reps / 2 - 1] + us[reps / 2]);
+                fprintf(csv, "%s,%u,%u,%u,%u,%s,%.3f,", c->dataset, np, v, deg, hull, r->name, med);
+                if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st.tets_created);
+                const phase_row *pr = counting ? NULL : find_phase(ph, nph, np, v, r->name);
+                if (counting && r->kind == ROW_ENGINE)
+                    fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", st.link_us, st.locate_us, st.conflict_us, st.sew_us);
+                else if (pr)
+                    fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", pr->ph[0], pr->ph[1], pr->ph[2], pr->ph[3]);
+                else
+                    fprintf(csv, ",,,,");
+                fprintf(csv, ",%d\n", match);
+            }
+            done_work += 1.0 + (double)c->n / 1000.0;
+            double el = now_seconds() - t_start;
+            fprintf(stderr, "\r  %-9s n=%-7u %3.0f%% done, %4.0f s elapsed, ~%4.0f s left   ", c->dataset, np,
+                    100.0 * done_work / total_work, el, el * (total_work - done_work) / (done_work > 0 ? done_work : 1));
+        }
+        fflush(csv);
+        free(used);
+        free(nb);
+        free(pts);
+        dd_free(t);
+        dd_cgal_free(g);
+        dd_cgal_free(ref);
+    }
+    if (csv) fclose(csv);
+    free(ph);
+    fprintf(stderr, "\n  bench: %ld mismatches%s\n", mismatches, mismatches ? " -- A BUG" : "");
+    return mismatches ? EXIT_INPUT : 0;
+}
