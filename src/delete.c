@@ -30,6 +30,7 @@ void dd_delete_ctx_free(dd_del *d)
     free(d->qdt_vcell);
     dd_free(d->qdt);
     dd_grr_free(d->grr);
+    if (d->vscratch_free) d->vscratch_free(d->vscratch);
     free(d);
 }
 

@@ -61,6 +61,8 @@ typedef struct dd_del {
     uint32_t vmark_cap, vepoch;
 
     struct dd_grr *grr;   /* GRR-CONSTRUCT scratch (grr.c), lazily made   */
+    void *vscratch;       /* a strategy's own scratch, kept across calls  */
+    void (*vscratch_free)(void *);
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */
     uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
     dd_vec fill;          /* cells of qdt that fill the cavity            */

@@ -280,6 +280,38 @@ static dd_status get_grr(dd_del *d, dd_grr **out)
     return DD_OK;
 }
 
+dd_status dd_grr_begin(dd_del *d, dd_grr **out)
+{
+    dd_status s = get_grr(d, out);
+    return s == DD_OK ? init(*out) : s;
+}
+
+dd_link *dd_grr_link(dd_grr *g) { return &g->link; }
+
+const uint32_t *dd_grr_remaining(const dd_grr *g, size_t *n)
+{
+    *n = g->rem.n;
+    return g->rem.a;
+}
+
+dd_status dd_grr_delete_point(dd_grr *g, uint32_t p)
+{
+    dd_status s = dd_link_delete(&g->link, g->d, p);
+    return s == DD_OK ? update_sets(g, p) : s;
+}
+
+dd_status dd_grr_locate(dd_grr *g, uint32_t guide, uint32_t p, uint32_t *cell)
+{
+    uint32_t c = guide == DD_NONE ? DD_NONE : locate_from_vertex(g, guide, p);
+    if (c == DD_NONE) {
+        g->d->fallbacks++;
+        c = locate_by_scan(g, p);
+        if (c == DD_NONE) return DD_ERR_INTERNAL;
+    }
+    *cell = c;
+    return DD_OK;
+}
+
 dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
 {
     dd_grr *g;

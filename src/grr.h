@@ -59,4 +59,17 @@ void dd_grr_fallback(dd_grr *g);
 
 void dd_grr_free(dd_grr *g);
 
+/* ---- for constructions other than GRR-CONSTRUCT (grr-brio) --------------- */
+
+/* Extracts the link of d->q and fills the sampling sets. */
+dd_status dd_grr_begin(dd_del *d, dd_grr **out);
+dd_link *dd_grr_link(dd_grr *g);
+/* The link vertices still deletable (base points excluded). */
+const uint32_t *dd_grr_remaining(const dd_grr *g, size_t *n);
+/* LINKDTDELETE of p plus the bookkeeping of the sampling sets. */
+dd_status dd_grr_delete_point(dd_grr *g, uint32_t p);
+/* A cell of the conflict DT in conflict with p, found from the vertex
+ * guide (or by a counted scan when the guide is DD_NONE or fails).       */
+dd_status dd_grr_locate(dd_grr *g, uint32_t guide, uint32_t p, uint32_t *cell);
+
 #endif

@@ -1,0 +1,172 @@
+/*
+ * grr_brio.c -- GRR-BRIO (paper 4.2 "BRIO sampling", Theorem 4(ii)):
+ * gradation rounds with degree-3 spanning-tree guides.
+ *
+ * Gradation: starting from all deletable link vertices (the four base
+ * points excepted), each round keeps every point with probability 1/2;
+ * the points not kept form the round.  Per round, on the current link
+ * DT^l(S_i + q): a spanning tree of maximum degree 3 (src/bdst.c, linear
+ * time), rooted at a base point, is stored with its BFS order; then the
+ * round's points are deleted from the link.  Construction: DT(x) of the
+ * base, then the rounds in reverse; inside a round the points are
+ * inserted in the BFS order of its tree, each located from its tree
+ * parent, which is always present by then (inserted earlier in the BFS or
+ * kept by the smaller set).  A parent that is the infinite vertex is no
+ * guide: then the point's BFS-earliest finite link neighbour is used, or,
+ * if none precedes it, a counted scan.
+ */
+#include "../src/grr.h"
+#include "../src/bdst.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Scratch kept in the deletion context across deletions (d->vscratch):
+ * per-vertex arrays sized to the vertex capacity, per-link arrays sized
+ * to the largest degree seen.                                            */
+typedef struct brio_buf {
+    uint32_t *loc, *mark, *rmark;   /* per vertex id                     */
+    size_t vcap;
+    uint32_t gen;
+    uint32_t *ids, *tri, *parent, *order, *seq, *guide, *cur;   /* per link */
+    size_t lcap;
+    uint32_t round_end[65];
+    dd_bdst_ws *ws;
+} brio_buf;
+
+static void brio_buf_free(void *p)
+{
+    brio_buf *b = p;
+    if (!b) return;
+    free(b->loc); free(b->mark); free(b->rmark);
+    free(b->ids); free(b->tri); free(b->parent); free(b->order); free(b->seq); free(b->guide); free(b->cur);
+    dd_bdst_ws_free(b->ws);
+    free(b);
+}
+
+static int grow(uint32_t **a, size_t n, int zero)
+{
+    uint32_t *x = zero ? calloc(n, sizeof *x) : malloc(n * sizeof *x);
+    if (!x) return 1;
+    free(*a);
+    *a = x;
+    return 0;
+}
+
+static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
+{
+    brio_buf *b = d->vscratch;
+    if (!b) {
+        b = calloc(1, sizeof *b);
+        if (!b || !(b->ws = dd_bdst_ws_new())) { free(b); return DD_ERR_NOMEM; }
+        d->vscratch = b;
+        d->vscratch_free = brio_buf_free;
+    }
+    if (b->vcap < d->t->cap_v) {
+        size_t n = d->t->cap_v;
+        if (grow(&b->loc, n, 0) || grow(&b->mark, n, 1) || grow(&b->rmark, n, 1)) return DD_ERR_NOMEM;
+        b->vcap = n;
+        b->gen = 0;
+    }
+    if (b->lcap < deg + 2) {
+        size_t n = 2 * (deg + 2);
+        if (grow(&b->ids, n, 0) || grow(&b->tri, 6 * n + 24, 0) || grow(&b->parent, n, 0) ||
+            grow(&b->order, n, 0) || grow(&b->seq, n, 0) || grow(&b->guide, n, 0) || grow(&b->cur, n, 0))
+            return DD_ERR_NOMEM;
+        b->lcap = n;
+    }
+    *out = b;
+    return DD_OK;
+}
+
+static dd_status brio_fill(dd_del *d)
+{
+    dd_grr *g;
+    brio_buf *b;
+    dd_status s = dd_grr_begin(d, &g);
+    if (s == DD_OK) s = get_buf(d, d->nbr.n, &b);
+    if (s != DD_OK) return s;
+    dd_link *l = dd_grr_link(g);
+    size_t nrem;
+    const uint32_t *remv = dd_grr_remaining(g, &nrem);
+    size_t ncur = nrem, nseq = 0, nrounds = 0;
+    memcpy(b->cur, remv, nrem * sizeof *b->cur);
+
+    DD_PHASE_BEGIN(d);
+    while (ncur > 0 && s == DD_OK && nrounds < 64) {
+        /* 1. The round: the points a fair coin does not keep. */
+        if (++b->gen == 0) {
+            memset(b->mark, 0, b->vcap * sizeof *b->mark);
+            memset(b->rmark, 0, b->vcap * sizeof *b->rmark);
+            b->gen = 1;
+        }
+        uint32_t gen = b->gen;
+        size_t nround = 0;
+        for (size_t k = 0; k < ncur; k++)
+            if (!(dd_del_rand(d) & 1)) { b->rmark[b->cur[k]] = gen; nround++; }
+        if (nround == 0) continue;            /* empty round: flip again */
+        /* 2. The tree of the current link, rooted at a base point. */
+        uint32_t nv = 0, nt = 0, inf_local = DD_NONE;
+        for (uint32_t t = 0; t < l->ntri; t++) {
+            if (l->lv[3 * t] == DD_DEAD) continue;
+            for (uint32_t m = 0; m < 3; m++) {
+                uint32_t w = l->lv[3 * t + m];
+                if (w == DD_INF) {
+                    if (inf_local == DD_NONE) { inf_local = nv; b->ids[nv++] = DD_INF; }
+                    b->tri[3 * nt + m] = inf_local;
+                    continue;
+                }
+                if (b->mark[w] != gen) { b->mark[w] = gen; b->loc[w] = nv; b->ids[nv++] = w; }
+                b->tri[3 * nt + m] = b->loc[w];
+            }
+            nt++;
+        }
+        if (dd_bdst(b->ws, b->tri, nt, nv, b->loc[d->base[0]], b->parent, b->order) != 0) {
+            s = DD_ERR_INTERNAL;
+            break;
+        }
+        /* 3. The round's points in BFS order, each with its tree parent. */
+        for (uint32_t k = 0; k < nv; k++) {
+            uint32_t w = b->ids[b->order[k]];
+            if (w == DD_INF || b->rmark[w] != gen) continue;
+            uint32_t par = b->parent[b->order[k]];
+            uint32_t gd = par == UINT32_MAX ? DD_NONE : b->ids[par];
+            b->seq[nseq] = w;
+            b->guide[nseq] = gd == DD_INF ? DD_NONE : gd;   /* INF: counted scan */
+            nseq++;
+        }
+        b->round_end[nrounds++] = (uint32_t)nseq;
+        /* 4. Delete the round's points from the link. */
+        size_t w2 = 0;
+        for (size_t k = 0; k < ncur && s == DD_OK; k++) {
+            if (b->rmark[b->cur[k]] != gen) b->cur[w2++] = b->cur[k];
+            else s = dd_grr_delete_point(g, b->cur[k]);
+        }
+        ncur = w2;
+    }
+    DD_PHASE_END(d, DD_PH_LINK);
+    if (s == DD_OK && ncur > 0) s = DD_ERR_INTERNAL;   /* 64 rounds: never in practice */
+    if (s != DD_OK) return s;
+
+    /* 5. The conflict DT: the base, then the rounds from the last one. */
+    dd_qdt_reset(d, 1);
+    s = dd_qdt_create(d);
+    DD_PHASE_END(d, DD_PH_CONFLICT);
+    for (size_t r = nrounds; r-- > 0 && s == DD_OK;) {
+        size_t lo = r ? b->round_end[r - 1] : 0, hi = b->round_end[r];
+        for (size_t k = lo; k < hi && s == DD_OK; k++) {
+            uint32_t c = DD_NONE;
+            s = dd_grr_locate(g, b->guide[k], b->seq[k], &c);
+            DD_PHASE_END(d, DD_PH_LOCATE);
+            if (s == DD_OK) s = dd_qdt_insert(d, b->seq[k], c);
+            DD_PHASE_END(d, DD_PH_CONFLICT);
+        }
+    }
+    return s == DD_OK ? dd_qdt_collect_fill(d) : s;
+}
+
+const dd_variant dd_variant_grr_brio = {
+    "grr-brio",
+    "GRR with BRIO rounds (p = 1/2), guides along a degree-3 spanning tree per round",
+    brio_fill,
+};
