@@ -295,17 +295,20 @@ int main(int argc, char **argv)
         p[3 * n] = 0.5; p[3 * n + 1] = 0.5; p[3 * n + 2] = -1; n++;
         single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1);
     }
-    const char *var[] = {"dtq-only", "sew-full"};
-    for (size_t vi = 0; vi < sizeof var / sizeof *var; vi++) {
+    for (size_t vi = 0; dd_variant_name(vi); vi++) {
+        const char *var = dd_variant_name(vi);
         uint32_t np;
         double *p = gen("uniform", small ? 600 : 5000, &np);
-        sequence(&st, small ? "uniform-600-half" : "uniform-5000-half", p, np, np / 2, small ? 50 : 250, var[vi], 11);
+        sequence(&st, small ? "uniform-600-half" : "uniform-5000-half", p, np, np / 2, small ? 50 : 250, var, 11);
         free(p);
         p = gen("grid", 216, &np);
-        sequence(&st, "grid-216-all-but-4", p, np, np - 4, 20, var[vi], 12);
+        sequence(&st, "grid-216-all-but-4", p, np, np - 4, 20, var, 12);
         free(p);
         p = gen("cosphere", 200, &np);
-        sequence(&st, "cosphere-200-all-but-4", p, np, np - 4, 10, var[vi], 13);
+        sequence(&st, "cosphere-200-all-but-4", p, np, np - 4, 10, var, 13);
+        free(p);
+        p = gen("moment", 100, &np);
+        sequence(&st, "moment-100-all-but-4", p, np, np - 4, 8, var, 14);
         free(p);
     }
     refusals(&st);

@@ -8,6 +8,7 @@
 #include "testlib.h"
 #include "delete.h"
 #include "link.h"
+#include "bdst.h"
 #include "../datasets/datasets.h"
 
 /* An oriented triangle as input indices, rotated so the smallest leads
@@ -100,6 +101,58 @@ static int link_consistent(const dd_link *l, char *why, size_t whylen)
     return 1;
 }
 
+/* The degree-3 spanning tree of the link of qi (grr-brio's guide): it
+ * spans the link vertices, uses link edges only, has maximum degree 3 and
+ * its BFS order starts at the requested root.                            */
+static int tree_ok(const double *pts, uint32_t n, uint32_t qi, char *why, size_t whylen)
+{
+    dd_tri *t;
+    char msg[256];
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) return 1;
+    dd_del *d;
+    int ok = 1;
+    if (dd_del_star_of(t, qi, &d) != DD_OK) { dd_free(t); return 1; }
+    uint32_t nt = (uint32_t)d->star.n, nv = 0;
+    uint32_t *tri = malloc(3 * nt * sizeof *tri), *ids = malloc((nt + 4) * sizeof *ids);
+    uint32_t *parent = malloc((nt + 4) * sizeof *parent), *order = malloc((nt + 4) * sizeof *order);
+    for (uint32_t k = 0; k < nt; k++) {
+        uint32_t c = d->star.a[k];
+        int i = dd_index_of(t, c, d->q);
+        for (int m = 0; m < 3; m++) {
+            uint32_t w = t->tv[4 * c + (uint32_t)dd_facet[i][m]], j = 0;
+            while (j < nv && ids[j] != w) j++;
+            if (j == nv) ids[nv++] = w;
+            tri[3 * k + (uint32_t)m] = j;
+        }
+    }
+    dd_bdst_ws *ws = dd_bdst_ws_new();
+    int rc = dd_bdst(ws, tri, nt, nv, 0, parent, order);
+    if (rc != 0) { snprintf(why, whylen, "dd_bdst failed (%d) on a link of %u vertices", rc, nv); ok = 0; }
+    uint32_t *deg = calloc(nv, sizeof *deg);
+    for (uint32_t v = 0; ok && v < nv; v++) {
+        if (v == 0) { ok = parent[v] == UINT32_MAX && order[0] == 0; continue; }
+        uint32_t p = parent[v];
+        if (p >= nv) { ok = 0; snprintf(why, whylen, "vertex %u has no parent", v); break; }
+        deg[v]++; deg[p]++;
+        int edge = 0;    /* p-v must be a link edge */
+        for (uint32_t k = 0; k < nt && !edge; k++)
+            for (int m = 0; m < 3; m++)
+                if (tri[3 * k + (uint32_t)m] == v && tri[3 * k + (uint32_t)(m + 1) % 3] == p) edge = 1;
+        if (!edge) { ok = 0; snprintf(why, whylen, "tree edge %u-%u is not a link edge", p, v); }
+    }
+    for (uint32_t v = 0; ok && v < nv; v++) {
+        if (deg[v] > 3) { ok = 0; snprintf(why, whylen, "vertex %u has tree degree %u", v, deg[v]); }
+        /* spanning: following parents from v reaches the root */
+        uint32_t x = v, steps = 0;
+        while (x != 0 && steps++ <= nv) x = parent[x];
+        if (x != 0) { ok = 0; snprintf(why, whylen, "vertex %u is not connected to the root", v); }
+    }
+    free(deg); free(tri); free(ids); free(parent); free(order);
+    dd_bdst_ws_free(ws);
+    dd_free(t);
+    return ok;
+}
+
 static void run_case(tl_state *st, const char *name, const double *pts, uint32_t n, uint32_t qi,
                      tl_rng *r, long *checks, long *bad, char *why, size_t whylen)
 {
@@ -151,6 +204,22 @@ int main(int argc, char **argv)
         {"uniform", 60, 300}, {"sphere", 40, 200}, {"cosphere", 60, 200}, {"grid", 64, 200},
         {"grid", 125, 100}, {"moment", 30, 60}, {"helix", 200, 100}, {"layers", 50, 100}};
     for (size_t i = 0; i < sizeof sets / sizeof *sets; i++) {
+        long trees = 0, badtrees = 0;
+        char twhy[200] = "";
+        int tcases = small ? 20 : 400;
+        for (int c = 0; c < tcases; c++) {
+            double *p;
+            uint32_t np;
+            char msg[256];
+            if (dd_gen(sets[i].ds, sets[i].n * (c % 2 ? 1 : 4), (uint64_t)c + 7, &p, &np, msg, sizeof msg) != DD_OK) continue;
+            uint32_t qi = (uint32_t)tl_int(&r, 0, np - 1);
+            trees++;
+            if (!tree_ok(p, np, qi, twhy, sizeof twhy)) badtrees++;
+            free(p);
+        }
+        char tname[96];
+        snprintf(tname, sizeof tname, "bdst-on-links/%s-%u", sets[i].ds, sets[i].n);
+        tl_check(&st, badtrees == 0 && trees > 0, tname, "%ld of %ld trees wrong: %s", badtrees, trees, twhy);
         long checks = 0, bad = 0;
         char why[400] = "";
         int cases = small ? sets[i].cases / 10 : sets[i].cases;
