@@ -282,6 +282,7 @@ dd_status dd_reserve_edge_hash(dd_tri *t, size_t nfacets)
         memset(t->ehash, 0, t->ehash_cap * sizeof *t->ehash);
         t->ehash_gen = 1;
     }
+    t->ehash_mask = (uint32_t)want - 1;   /* small stars stay in cache */
     return DD_OK;
 }
 
@@ -294,7 +295,7 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
     static const uint8_t edge_of[4][4][2] = {
         {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
         {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
-    uint32_t mask = t->ehash_cap - 1, gen = t->ehash_gen;
+    uint32_t mask = t->ehash_mask, gen = t->ehash_gen;
     dd_edge_slot *hash = t->ehash;
     for (size_t k = 0; k < ncells; k++) {
         uint32_t n = cells[k];

@@ -105,7 +105,7 @@ struct dd_tri {
     /* scratch for insertion */
     dd_vec stack, conflict, boundary;
     struct dd_edge_slot *ehash;   /* edge -> facet, see glue_new_cells   */
-    uint32_t ehash_cap, ehash_gen;
+    uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
     char err[256];
 };
