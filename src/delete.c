@@ -34,19 +34,6 @@ void dd_delete_ctx_free(dd_del *d)
     free(d);
 }
 
-/* The scratch triangulation: its own cells, the main one's points. */
-static dd_status new_qdt(dd_tri **out)
-{
-    dd_tri *q = calloc(1, sizeof *q);
-    if (!q) return DD_ERR_NOMEM;
-    q->borrowed = 1;
-    q->free_head = q->inf_cell = q->hint = DD_NONE;
-    q->rng = 0x2545F4914F6CDD1Dull;
-    dd_pred_init(&q->pred);
-    *out = q;
-    return DD_OK;
-}
-
 /* Makes t->del exist and fit the current vertex arrays. */
 static dd_status get_ctx(dd_tri *t, dd_del **out)
 {
@@ -56,7 +43,7 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
         if (!d) return DD_ERR_NOMEM;
         d->t = t;
         d->rng = 0x853C49E6748FEA9Bull;
-        if (new_qdt(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
+        if (dd_tri_alloc_borrowed(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
         t->del = d;
     }
     if (d->vmark_cap < t->cap_v) {

@@ -176,15 +176,7 @@ static uint32_t rpos_lookup(const dd_link *l, uint32_t v)
 static dd_status fill_with_infinity(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, uint32_t *nt)
 {
     dd_tri *t = d->t;
-    if (!l->scratch) {
-        dd_tri *x = calloc(1, sizeof *x);
-        if (!x) return DD_ERR_NOMEM;
-        x->borrowed = 1;
-        x->free_head = x->inf_cell = x->hint = DD_NONE;
-        x->rng = 0x5DEECE66Dull;
-        dd_pred_init(&x->pred);
-        l->scratch = x;
-    }
+    if (!l->scratch && dd_tri_alloc_borrowed(&l->scratch) != DD_OK) return DD_ERR_NOMEM;
     dd_tri *x = l->scratch;
     x->xyz = t->xyz;
     x->v2in = t->v2in;

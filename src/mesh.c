@@ -64,6 +64,18 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     return DD_OK;
 }
 
+dd_status dd_tri_alloc_borrowed(dd_tri **out)
+{
+    dd_tri *t = calloc(1, sizeof *t);
+    if (!t) return DD_ERR_NOMEM;
+    t->borrowed = 1;
+    t->free_head = t->inf_cell = t->hint = DD_NONE;
+    t->rng = 0x2545F4914F6CDD1Dull;
+    dd_pred_init(&t->pred);
+    *out = t;
+    return DD_OK;
+}
+
 void dd_free(dd_tri *t)
 {
     if (!t) return;

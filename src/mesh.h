@@ -220,6 +220,10 @@ static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
 
 void dd_delete_ctx_free(struct dd_del *d);
 
+/* A scratch triangulation with its own cells that borrows the points
+ * (xyz, v2in, vcell: the caller sets them) of another one.              */
+dd_status dd_tri_alloc_borrowed(dd_tri **out);
+
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
 

@@ -427,6 +427,34 @@ uint32_t dd_cgal_degree(const dd_cgal *c, uint32_t v)
     }
 }
 
+/* The cell as its four input indices sorted, -1 for the infinite vertex. */
+std::array<int32_t, 4> canonical_cell(const Main_dt &dt, Cell_handle c)
+{
+    std::array<int32_t, 4> t;
+    for (std::size_t k = 0; k < 4; k++) {
+        const Vertex_handle w = c->vertex(static_cast<int>(k));
+        t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
+    }
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+/* Sorts and deduplicates the cells and hands them out as a malloc'd array. */
+int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, size_t *ntets)
+{
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    int32_t *out = static_cast<int32_t *>(
+        std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
+    if (out == NULL)
+        return 1;
+    for (std::size_t i = 0; i < all.size(); i++)
+        std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
+    *tets = out;
+    *ntets = all.size();
+    return 0;
+}
+
 int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
 {
     if (c == NULL || tets == NULL || ntets == NULL)
@@ -438,25 +466,9 @@ int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
         std::vector<std::array<int32_t, 4> > all;
         all.reserve(dt.number_of_cells());
         for (Main_dt::All_cells_iterator it = dt.all_cells_begin();
-             it != dt.all_cells_end(); ++it) {
-            std::array<int32_t, 4> t;
-            for (std::size_t k = 0; k < 4; k++) {
-                const Vertex_handle w = it->vertex(static_cast<int>(k));
-                t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
-            }
-            std::sort(t.begin(), t.end());
-            all.push_back(t);
-        }
-        std::sort(all.begin(), all.end());
-        int32_t *out = static_cast<int32_t *>(
-            std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
-        if (out == NULL)
-            return 1;
-        for (std::size_t i = 0; i < all.size(); i++)
-            std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
-        *tets = out;
-        *ntets = all.size();
-        return 0;
+             it != dt.all_cells_end(); ++it)
+            all.push_back(canonical_cell(dt, it));
+        return emit_canonical(all, tets, ntets);
     } catch (...) {
         return 1;
     }
@@ -478,27 +490,10 @@ int dd_cgal_local_canonical(const dd_cgal *c, const uint32_t *verts, size_t nv,
                 return 1;
             cells.clear();
             dt.incident_cells(c->vh[verts[i]], std::back_inserter(cells));
-            for (std::size_t j = 0; j < cells.size(); j++) {
-                std::array<int32_t, 4> t;
-                for (std::size_t k = 0; k < 4; k++) {
-                    const Vertex_handle w = cells[j]->vertex(static_cast<int>(k));
-                    t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
-                }
-                std::sort(t.begin(), t.end());
-                all.push_back(t);
-            }
+            for (std::size_t j = 0; j < cells.size(); j++)
+                all.push_back(canonical_cell(dt, cells[j]));
         }
-        std::sort(all.begin(), all.end());
-        all.erase(std::unique(all.begin(), all.end()), all.end());
-        int32_t *out = static_cast<int32_t *>(
-            std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
-        if (out == NULL)
-            return 1;
-        for (std::size_t i = 0; i < all.size(); i++)
-            std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
-        *tets = out;
-        *ntets = all.size();
-        return 0;
+        return emit_canonical(all, tets, ntets);
     } catch (...) {
         return 1;
     }
