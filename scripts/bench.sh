@@ -15,7 +15,7 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
     echo "cores: $(nproc)"
     echo "compiler: $(${CC:-cc} --version | head -n 1)"
     echo "flags: ${CFLAGS_USED:-see Makefile}"
-    echo "cgal: $(build/dtdel variants >/dev/null 2>&1; build/dtdel build-bench --help >/dev/null 2>&1; dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo unknown)"
+    echo "cgal: $(dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo unknown) (Debian libcgal-dev)"
     echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
     echo "commit: $commit"
     echo "mode: $mode (scale $scale)"

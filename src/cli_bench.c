@@ -152,7 +152,7 @@ int cmd_bench(int argc, char **argv)
         if (all[i].kind == ROW_CGAL) rows[nr++] = all[i];
     for (size_t i = 0; i < na; i++)
         if (all[i].kind != ROW_CGAL) rows[nr++] = all[i];
-    double total_work = 0, done_work = 0, t_start = now_seconds();
+    double total_work = 0, done_work = 0, t_start = now_seconds(), last_print = -10;
     for (const bcase *c = cases; c->dataset; c++)
         if (!only || !strcmp(only, c->dataset)) total_work += (double)c->deletions;
     long mismatches = 0;
@@ -255,8 +255,11 @@ int cmd_bench(int argc, char **argv)
             }
             done_work += 1.0;
             double el = now_seconds() - t_start;
-            fprintf(stderr, "\r  %-9s n=%-7u %3.0f%% done, %4.0f s elapsed, ~%4.0f s left   ", c->dataset, np,
-                    100.0 * done_work / total_work, el, el * (total_work - done_work) / (done_work > 0 ? done_work : 1));
+            if (el - last_print >= 2.0 || it + 1 == k) {   /* at most every 2 s */
+                last_print = el;
+                fprintf(stderr, "  %-9s n=%-7u %3.0f%% of the deletions done, %4.0f s elapsed\n", c->dataset, np,
+                        100.0 * done_work / total_work, el);
+            }
         }
         fflush(csv);
         free(used);
@@ -268,6 +271,6 @@ int cmd_bench(int argc, char **argv)
     }
     if (csv) fclose(csv);
     free(ph);
-    fprintf(stderr, "\n  bench: %ld mismatches%s\n", mismatches, mismatches ? " -- A BUG" : "");
+    fprintf(stderr, "  bench: %ld mismatches%s\n", mismatches, mismatches ? " -- A BUG" : "");
     return mismatches ? EXIT_INPUT : 0;
 }
