@@ -332,17 +332,85 @@ static int orient2d_filtered(dd_pred *ctx, const double *p, const double *q,
     return 2;   /* undecided */
 }
 
+/* ---- small integers: exact in 128-bit integer arithmetic ---------------- */
+
+/* 1 if every coordinate of the n points is an integer of magnitude below
+ * 2^11: then all differences are below 2^12 and the degree-7 coplanar
+ * in-circle determinant below 2^100, so __int128 evaluates it exactly.
+ * (Integer grids and integer spheres: where exact zeros are common.)      */
+static int small_ints(const double *const *pts, int n)
+{
+    for (int i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            double x = pts[i][c];
+            if (!(x > -2048.0 && x < 2048.0) || x != (double)(int32_t)x) return 0;
+        }
+    return 1;
+}
+
+typedef __int128 i128;
+
+static int sign128(i128 x) { return (x > 0) - (x < 0); }
+
+static int orient_coplanar_small(const double *p, const double *q, const double *r)
+{
+    static const int ax[3][2] = {{0, 1}, {1, 2}, {0, 2}};   /* xy, yz, xz */
+    for (int k = 0; k < 3; k++) {
+        int i = ax[k][0], j = ax[k][1];
+        int64_t d = ((int64_t)q[i] - (int64_t)p[i]) * ((int64_t)r[j] - (int64_t)p[j]) -
+                    ((int64_t)r[i] - (int64_t)p[i]) * ((int64_t)q[j] - (int64_t)p[j]);
+        if (d) return d > 0 ? 1 : -1;
+    }
+    return 0;
+}
+
+/* CGAL's determinant of rows p-t, r-t, q-t (lifted) and v = pq x pr. */
+static int incircle_coplanar_small(const double *p, const double *q, const double *r, const double *t)
+{
+    const double *row[3] = {p, r, q};
+    i128 m[4][4];
+    for (int i = 0; i < 3; i++) {
+        int64_t a = (int64_t)row[i][0] - (int64_t)t[0], b = (int64_t)row[i][1] - (int64_t)t[1],
+                c = (int64_t)row[i][2] - (int64_t)t[2];
+        m[i][0] = a; m[i][1] = b; m[i][2] = c; m[i][3] = a * a + b * b + c * c;
+    }
+    int64_t pq[3], pr[3];
+    for (int c = 0; c < 3; c++) {
+        pq[c] = (int64_t)q[c] - (int64_t)p[c];
+        pr[c] = (int64_t)r[c] - (int64_t)p[c];
+    }
+    i128 vx = (i128)(pq[1] * pr[2] - pq[2] * pr[1]), vy = (i128)(pq[2] * pr[0] - pq[0] * pr[2]),
+         vz = (i128)(pq[0] * pr[1] - pq[1] * pr[0]);
+    m[3][0] = vx; m[3][1] = vy; m[3][2] = vz; m[3][3] = vx * vx + vy * vy + vz * vz;
+    /* Laplace expansion along the last column */
+    i128 det = 0;
+    for (int i = 0; i < 4; i++) {
+        int rr[3], k = 0;
+        for (int j = 0; j < 4; j++)
+            if (j != i) rr[k++] = j;
+        i128 minor = m[rr[0]][0] * (m[rr[1]][1] * m[rr[2]][2] - m[rr[1]][2] * m[rr[2]][1]) -
+                     m[rr[0]][1] * (m[rr[1]][0] * m[rr[2]][2] - m[rr[1]][2] * m[rr[2]][0]) +
+                     m[rr[0]][2] * (m[rr[1]][0] * m[rr[2]][1] - m[rr[1]][1] * m[rr[2]][0]);
+        det += ((i + 3) & 1 ? -1 : 1) * m[i][3] * minor;
+    }
+    return sign128(det);
+}
+
 int dd_orient_coplanar(dd_pred *ctx, const double *p, const double *q,
                        const double *r)
 {
     int o = orient2d_filtered(ctx, p, q, r, 0, 1);
     if (o != 2) return o;
+    const double *pts[3] = {p, q, r};
+    if (small_ints(pts, 3)) return orient_coplanar_small(p, q, r);
     return orient_coplanar_exact(ctx, p, q, r);
 }
 
 int dd_incircle_coplanar(dd_pred *ctx, const double *p, const double *q,
                          const double *r, const double *t)
 {
+    const double *pts[4] = {p, q, r, t};
+    if (small_ints(pts, 4)) return incircle_coplanar_small(p, q, r, t);
     return incircle_coplanar_exact(ctx, p, q, r, t);
 }
 
