@@ -13,8 +13,9 @@
  *   - it is empty: no other ring vertex is in conflict with (a, b, c, q).
  * A clipped ear is a triangle of the unique (perturbed) Delaunay link, and
  * the rest of the hole is the Delaunay triangulation of the smaller ring.
- * Degree 3 needs no test; degree 4 one ear test; 5 to 7 an ear search over
- * fixed arrays on the stack; larger rings the same search over scratch.
+ * Degree 3 needs one convexity test; degree 4 one ear test; 5 to 12 an ear
+ * search over a fixed array on the stack; larger holes (and the hole into
+ * which the infinite vertex enters) go through fill_by_dt.
  */
 #include "link.h"
 #include "delete.h"
@@ -56,7 +57,7 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
     }
     if (l->ring_cap < d->nbr.n + 2) {
         size_t r = d->nbr.n + 2;
-        if (grow(&l->ring, r) || grow(&l->ring_tri, r) || grow(&l->ring_out, r) || grow(&l->newtri, 3 * r + 6))
+        if (grow(&l->ring, r) || grow(&l->ring_tri, r) || grow(&l->ring_out, r) || grow(&l->newtri, 4 * r + 12))
             return DD_ERR_NOMEM;
         l->ring_cap = (uint32_t)r;
     }
@@ -167,13 +168,16 @@ static uint32_t rpos_lookup(const dd_link *l, uint32_t v)
     return l->rmark[v] == l->rgen ? l->rpos[v] : DD_NONE;
 }
 
-/* The hole when the infinite vertex must appear in it (q leaves the
- * interior of the hull of the remaining points: no Delaunay ear exists).
- * The new triangles are the triangles of the link of q in DT(ring + q)
- * on the hole's side of the ring: found by a flood fill from the ring
- * edges, in the orientation the old triangles gave them.  Happens at most
- * once per deletion of q (q never goes back inside).                     */
-static dd_status fill_with_infinity(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, uint32_t *nt)
+/* The hole re-triangulated through a small 3D DT: the new link triangles
+ * in the hole are exactly the triangles of the link of q in DT(ring + q)
+ * on the hole's side of the ring (each is Delaunay for the remaining
+ * points, and both sets triangulate the same disc).  Used for large holes
+ * (expected O(k log k) instead of the O(k^3) worst case of ear search)
+ * and when the infinite vertex enters the link (q leaves the interior of
+ * the hull of the remaining points: then no finite Delaunay ear exists).
+ * The hole side is flooded from the cell holding the ring edge u0 -> u1,
+ * across facets through q, never across a ring edge.                     */
+static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, uint32_t *nt)
 {
     dd_tri *t = d->t;
     if (!l->scratch && dd_tri_alloc_borrowed(&l->scratch) != DD_OK) return DD_ERR_NOMEM;
@@ -183,25 +187,26 @@ static dd_status fill_with_infinity(dd_link *l, dd_del *d, uint32_t k, uint32_t 
     x->vcell = d->qdt_vcell;      /* free to use: qdt is not built yet */
     dd_clear_cells(x);
     x->qd_point = NULL;
-    /* ids: q then the ring; four independent ones in front */
-    uint32_t *ids = malloc((k + 1) * sizeof *ids);
-    if (!ids) return DD_ERR_NOMEM;
-    ids[0] = d->q;
-    for (uint32_t j = 0; j < k; j++) ids[j + 1] = l->ring[j];
-    uint32_t n = k + 1, f = 0;
-    const double *p0 = dd_pt(t, ids[0]), *p1 = dd_pt(t, ids[1]);
-    uint32_t i2 = 2, i3;
+    /* ids: q then the finite ring vertices; four independent ones first */
+    uint32_t *ids = l->newtri + 3 * (size_t)(k + 2), n = 0, f = 0;   /* spare room */
+    ids[n++] = d->q;
+    for (uint32_t j = 0; j < k; j++)
+        if (l->ring[j] != DD_INF) ids[n++] = l->ring[j];
+    uint32_t i2 = 2, i3 = n;
+    const double *p0 = dd_pt(t, ids[0]), *p1 = n > 1 ? dd_pt(t, ids[1]) : NULL;
     while (i2 < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, ids[i2])) == 0) i2++;
-    for (i3 = i2 + 1; i2 < n && i3 < n; i3++)
-        if (dd_orient3d(&t->pred, p0, p1, dd_pt(t, ids[i2]), dd_pt(t, ids[i3])) != 0) break;
+    if (i2 < n)
+        for (i3 = i2 + 1; i3 < n; i3++)
+            if (dd_orient3d(&t->pred, p0, p1, dd_pt(t, ids[i2]), dd_pt(t, ids[i3])) != 0) break;
     if (i2 >= n || i3 >= n) {
         /* q and the ring are coplanar: only infinite link tetrahedra, the
-         * fan of the ring edges around the infinite vertex.             */
+         * fan of the finite ring edges around the infinite vertex.        */
         for (uint32_t j = 0; j < k; j++) {
-            tri[3 * f] = DD_INF; tri[3 * f + 1] = l->ring[j]; tri[3 * f + 2] = l->ring[(j + 1) % k];
+            uint32_t a = l->ring[j], b = l->ring[(j + 1) % k];
+            if (a == DD_INF || b == DD_INF) continue;
+            tri[3 * f] = DD_INF; tri[3 * f + 1] = a; tri[3 * f + 2] = b;
             f++;
         }
-        free(ids);
         *nt = f;
         return DD_OK;
     }
@@ -209,62 +214,53 @@ static dd_status fill_with_infinity(dd_link *l, dd_del *d, uint32_t k, uint32_t 
     uint32_t s3 = ids[3]; ids[3] = ids[i3]; ids[i3] = s3;
     dd_status s = dd_reserve_cells(x, 8 * n + 16);
     if (s == DD_OK) {
-        uint32_t b[4] = {ids[0], ids[1], ids[2], ids[3]};
-        dd_make_first_cells(x, b);
+        uint32_t b4[4] = {ids[0], ids[1], ids[2], ids[3]};
+        dd_make_first_cells(x, b4);
     }
     for (uint32_t j = 4; j < n && s == DD_OK; j++) s = dd_insert_vertex(x, ids[j]);
-    free(ids);
     if (s != DD_OK) return s;
-    /* The link of q in x, as oriented triangles. */
-    uint32_t *cand = NULL, nc = 0, cap = 0;
-    for (uint32_t c = 0; c < x->ncell; c++) {
+    /* The seed: the cell around q whose link triangle has the directed edge
+     * u0 -> u1 (the link orientation of the facets of mesh.h).            */
+    uint32_t q = d->q, seed = DD_NONE, u0 = l->ring[0], u1 = l->ring[1 % k];
+    for (uint32_t c = 0; c < x->ncell && seed == DD_NONE; c++) {
         if (x->tv[4 * (size_t)c] == DD_DEAD) continue;
-        int i = dd_index_of(x, c, d->q);
+        int i = dd_index_of(x, c, q);
         if (i < 0) continue;
-        if (nc == cap) {
-            cap = cap ? 2 * cap : 64;
-            uint32_t *m = realloc(cand, 3 * (size_t)cap * sizeof *m);
-            if (!m) { free(cand); return DD_ERR_NOMEM; }
-            cand = m;
-        }
-        for (int m = 0; m < 3; m++) cand[3 * nc + (uint32_t)m] = x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
-        nc++;
+        for (int m = 0; m < 3; m++)
+            if (x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]] == u0 &&
+                x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][(m + 1) % 3]] == u1)
+                seed = c;
     }
-    /* Flood fill from the ring edges u_j -> u_j+1 (hole side), never
-     * crossing a ring edge.  Small: quadratic matching is fine here.     */
-    unsigned char *in = calloc(nc ? nc : 1, 1);
-    if (!in) { free(cand); return DD_ERR_NOMEM; }
-    int grew = 1;
-    while (grew) {
-        grew = 0;
-        for (uint32_t c = 0; c < nc; c++) {
-            if (in[c]) continue;
-            for (uint32_t m = 0; m < 3 && !in[c]; m++) {
-                uint32_t a = cand[3 * c + m], b = cand[3 * c + (m + 1) % 3];
-                uint32_t ra = rpos_lookup(l, a), rb = rpos_lookup(l, b);
-                int ring_edge = ra != DD_NONE && rb != DD_NONE && rb == (ra + 1) % k;
-                if (ring_edge) { in[c] = 1; grew = 1; break; }
-                if (ra != DD_NONE && rb != DD_NONE && ra == (rb + 1) % k) continue;   /* outer side */
-                for (uint32_t e = 0; e < nc; e++) {      /* neighbour across b->a */
-                    if (!in[e]) continue;
-                    for (uint32_t mm = 0; mm < 3; mm++)
-                        if (cand[3 * e + mm] == b && cand[3 * e + (mm + 1) % 3] == a) { in[c] = 1; grew = 1; }
-                }
-            }
+    if (seed == DD_NONE) return DD_ERR_INTERNAL;
+    uint32_t ep = dd_new_epoch(x, 1);
+    dd_vec *st = &x->stack;
+    st->n = 0;
+    x->stamp[seed] = ep;
+    s = dd_vec_push(st, seed);
+    while (s == DD_OK && st->n > 0) {
+        uint32_t c = st->a[--st->n];
+        int i = dd_index_of(x, c, q);
+        const uint32_t *v = x->tv + 4 * (size_t)c;
+        if (f >= k) return DD_ERR_INTERNAL;
+        for (int m = 0; m < 3; m++) tri[3 * f + (uint32_t)m] = v[dd_facet[i][m]];
+        f++;
+        for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
+            if ((int)j == i) continue;
+            /* the facet opposite j holds q and the edge of the other two */
+            uint32_t e[2], ne = 0;
+            for (uint32_t m = 0; m < 4; m++)
+                if ((int)m != i && m != j) e[ne++] = v[m];
+            uint32_t ra = rpos_lookup(l, e[0]), rb = rpos_lookup(l, e[1]);
+            if (ra != DD_NONE && rb != DD_NONE && (rb == (ra + 1) % k || ra == (rb + 1) % k)) continue;
+            uint32_t nb = x->tn[4 * (size_t)c + j] >> 2;
+            if (x->stamp[nb] == ep) continue;
+            x->stamp[nb] = ep;
+            s = dd_vec_push(st, nb);
         }
     }
-    for (uint32_t c = 0; c < nc; c++)
-        if (in[c]) {
-            if (f >= k) { f = k + 1; break; }
-            memcpy(tri + 3 * f, cand + 3 * c, 3 * sizeof *tri);
-            f++;
-        }
-    free(in);
-    free(cand);
     *nt = f;
-    return DD_OK;
+    return s;
 }
-
 
 dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
 {
@@ -289,25 +285,18 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
 
     /* 2. Re-triangulate the hole: Delaunay ears, or (once) the fill that
      *    brings in the infinite vertex.                                   */
-    uint32_t small_alive[8], *alive = small_alive, *heap_alive = NULL;
-    if (k > 8) {
-        heap_alive = malloc(k * sizeof *heap_alive);
-        if (!heap_alive) return DD_ERR_NOMEM;
-        alive = heap_alive;
+    uint32_t alive[DD_LINK_EARS_UPTO], *tri = l->newtri, nt = UINT32_MAX;
+    if (k <= DD_LINK_EARS_UPTO) {
+        for (uint32_t j = 0; j < k; j++) alive[j] = j;
+        nt = clip_ears(d, l->ring, alive, k, p, tri);
+        if (nt == k - 2)
+            for (uint32_t j = 0; j < 3 * nt; j++) tri[j] = l->ring[tri[j]];   /* positions -> ids */
     }
-    for (uint32_t j = 0; j < k; j++) alive[j] = j;
-    uint32_t *tri = l->newtri;
-    uint32_t nt = clip_ears(d, l->ring, alive, k, p, tri);
-    free(heap_alive);
-    if (nt == k - 2) {
-        for (uint32_t j = 0; j < 3 * nt; j++) tri[j] = l->ring[tri[j]];   /* positions -> ids */
-    } else if (l->inf_rpos == DD_NONE) {
-        dd_status s = fill_with_infinity(l, d, k, tri, &nt);
+    if (nt != k - 2) {   /* a large hole, or no ear: infinity enters */
+        dd_status s = fill_by_dt(l, d, k, tri, &nt);
         if (s != DD_OK) return s;
-        if (nt != k) return DD_ERR_INTERNAL;
-        l->inf_in_link = 1;
-    } else {
-        return DD_ERR_INTERNAL;
+        if (nt == k && l->inf_rpos == DD_NONE) l->inf_in_link = 1;
+        else if (nt != k - 2) return DD_ERR_INTERNAL;
     }
 
     /* 3. Write them over the old triangles; unused old ones die. */

@@ -21,7 +21,8 @@
 
 #include "mesh.h"
 
-#define DD_LINK_MAXRING 4096   /* larger rings use the heap (rare) */
+#define DD_LINK_MAXRING 4096   /* created[] records at most this many  */
+#define DD_LINK_EARS_UPTO 12   /* larger holes: fill_by_dt in link.c   */
 
 typedef struct dd_link {
     uint32_t *lv, *ln;

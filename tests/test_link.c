@@ -202,11 +202,12 @@ int main(int argc, char **argv)
     tl_rng r = {2024};
     struct { const char *ds; uint32_t n; int cases; } sets[] = {
         {"uniform", 60, 300}, {"sphere", 40, 200}, {"cosphere", 60, 200}, {"grid", 64, 200},
-        {"grid", 125, 100}, {"moment", 30, 60}, {"helix", 200, 100}, {"layers", 50, 100}};
+        {"grid", 125, 100}, {"moment", 30, 60}, {"moment", 90, 4}, {"helix", 200, 100},
+        {"helix", 3000, 3}, {"layers", 50, 100}};
     for (size_t i = 0; i < sizeof sets / sizeof *sets; i++) {
         long trees = 0, badtrees = 0;
         char twhy[200] = "";
-        int tcases = small ? 20 : 400;
+        int tcases = small ? 20 : sets[i].cases < 10 ? 10 : 400;
         for (int c = 0; c < tcases; c++) {
             double *p;
             uint32_t np;
