@@ -136,11 +136,23 @@ static dd_status brio_fill(dd_del *d)
             nseq++;
         }
         b->round_end[nrounds++] = (uint32_t)nseq;
-        /* 4. Delete the round's points from the link. */
+        /* 4. Delete the round's points from the link, the ones of low link
+         *    degree first (passes with a growing degree bound): the order
+         *    inside a round is free, and small holes are cheap to fill.    */
         size_t w2 = 0;
-        for (size_t k = 0; k < ncur && s == DD_OK; k++) {
+        for (size_t k = 0; k < ncur; k++)
             if (b->rmark[b->cur[k]] != gen) b->cur[w2++] = b->cur[k];
-            else s = dd_grr_delete_point(g, b->cur[k]);
+        size_t nleft = 0;
+        for (size_t k = 0; k < ncur; k++)
+            if (b->rmark[b->cur[k]] == gen) b->seq[nseq + nleft++] = b->cur[k];   /* scratch */
+        for (uint32_t bound = DD_LOWDEG; nleft > 0 && s == DD_OK; bound *= 2) {
+            size_t keep = 0;
+            for (size_t k = 0; k < nleft && s == DD_OK; k++) {
+                uint32_t w = b->seq[nseq + k];
+                if (dd_grr_degree(g, w) <= bound) s = dd_grr_delete_point(g, w);
+                else b->seq[nseq + keep++] = w;
+            }
+            nleft = keep;
         }
         ncur = w2;
     }
