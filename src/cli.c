@@ -251,10 +251,12 @@ static const command commands[] = {
      ".off; input index = 0-based order of the points in the file.", cmd_tets},
     {"cgal-tets", "cgal-tets FILE",
      "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
-    {"delete", "delete FILE --vertex I[,J,...] [--variant NAME]",
+    {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats]",
      "Deletes the input vertices I, J, ... in that order from DT(points in\n"
      "FILE) and writes the canonical form (as tets).  NAME: an engine\n"
-     "strategy (dtdel variants), cgal or cgal-rnd; default: the fastest.", cmd_delete},
+     "strategy (dtdel variants), cgal or cgal-rnd; default: the fastest.\n"
+     "--stats: per deletion on stderr, cells built, fallbacks, location tests,\n"
+     "link deletions by degree (and predicate counts in build/count/dtdel).", cmd_delete},
     {"time", "time FILE --vertex I --variant NAME [--repeat R]",
      "Prints one number: the median microseconds of deleting vertex I alone\n"
      "over R repetitions (default 5); the vertex is re-inserted, untimed,\n"

@@ -119,8 +119,11 @@ int cmd_delete(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("delete");
     const char *file = NULL, *vlist = NULL, *var = NULL;
+    int stats = 0;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--vertex")) {
+        if (!strcmp(argv[i], "--stats")) {
+            stats = 1;
+        } else if (!strcmp(argv[i], "--vertex")) {
             if (++i >= argc) return usage_error("delete", "--vertex needs a list I[,J,...]%s", "");
             vlist = argv[i];
         } else if (!strcmp(argv[i], "--variant")) {
@@ -148,9 +151,25 @@ int cmd_delete(int argc, char **argv)
     if (rc) { free(vs); return rc; }
     for (size_t k = 0; k < nv && !rc; k++) {
         if (r.kind == ROW_ENGINE) {
+            dd_reset_counters(t);
             if (dd_delete(t, vs[k], r.name) != DD_OK) {
                 fprintf(stderr, "dtdel delete: cannot delete vertex %u: %s\n", vs[k], dd_errmsg(t));
                 rc = EXIT_INPUT;
+            } else if (stats) {
+                dd_delete_stats st;
+                dd_counters cn;
+                dd_last_delete_stats(t, &st);
+                dd_get_counters(t, &cn);
+                fprintf(stderr, "vertex %u: degree %u%s, %llu cells built, %llu fallbacks, %llu location tests,"
+                                " link deletions by degree:", vs[k], st.degree, st.on_hull ? " (hull)" : "",
+                        (unsigned long long)st.tets_created, (unsigned long long)st.fallbacks,
+                        (unsigned long long)st.locate_steps);
+                for (int b = 3; b < DD_LINKDEG_BUCKETS; b++)
+                    if (st.link_deletions[b]) fprintf(stderr, " %d%s:%u", b, b == DD_LINKDEG_BUCKETS - 1 ? "+" : "", st.link_deletions[b]);
+                fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",
+                        (unsigned long long)cn.insphere_calls, (unsigned long long)cn.insphere_exact,
+                        (unsigned long long)cn.orient_calls, (unsigned long long)cn.orient_exact,
+                        (unsigned long long)cn.perturbed, cn.insphere_calls ? "" : " (counting build: build/count/dtdel)");
             }
         } else if (row_delete(&r, t, g, vs[k], 1 + k)) {
             fprintf(stderr, "dtdel delete: CGAL cannot delete vertex %u (unknown, or it would leave "

@@ -285,6 +285,7 @@ dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell)
     const double *p = dd_pt(x, v);
     for (uint32_t c = 0; c < x->ncell; c++) {
         if (x->tv[4 * (size_t)c] == DD_DEAD || !has_qd(x, c)) continue;
+        d->locate_steps++;
         if (dd_cell_conflict(x, c, p)) { *cell = c; return DD_OK; }
     }
     return dd_fail(d->t, DD_ERR_INTERNAL, "no dummy cell of the conflict DT conflicts with point %u",
@@ -460,6 +461,9 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->q = q;
     d->qp = dd_pt(t, q);
     d->fallbacks = 0;
+    d->locate_steps = 0;
+    d->forced_fill = 0;
+    memset(d->link_deletions, 0, sizeof d->link_deletions);
     d->qdt_created = 0;
     for (int i = 0; i < DD_NPHASES; i++) d->phase[i] = 0;
     DD_PHASE_BEGIN(d);
@@ -480,6 +484,7 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
                            t->v2in[q]);
         if (!d->on_hull)
             return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
+        d->forced_fill = 1;
         s = fill_coplanar_hull(d);
     } else {
         s = var->fill_cavity(d);
@@ -590,6 +595,9 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
     st->on_hull = d->on_hull;
     st->tets_created = d->qdt_created;
     st->fallbacks = d->fallbacks;
+    st->locate_steps = d->locate_steps;
+    st->forced_fill = d->forced_fill;
+    memcpy(st->link_deletions, d->link_deletions, sizeof st->link_deletions);
     st->link_us = 1e6 * d->phase[DD_PH_LINK];
     st->locate_us = 1e6 * d->phase[DD_PH_LOCATE];
     st->conflict_us = 1e6 * d->phase[DD_PH_CONFLICT];

@@ -75,6 +75,9 @@ typedef struct dd_del {
     uint32_t degree;
     uint64_t qdt_created;         /* cells created in qdt                  */
     uint64_t fallbacks;           /* sampling fallbacks (guided variants)  */
+    uint64_t locate_steps;        /* cells tested by guided/scan location  */
+    int forced_fill;              /* fill_coplanar_hull ran                */
+    uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* by deleted degree     */
     double phase[DD_NPHASES];
 #ifdef DD_COUNTERS
     struct timespec ph_t0;

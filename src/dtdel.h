@@ -113,12 +113,22 @@ dd_status dd_reinsert(dd_tri *t, uint32_t v);
 const char *dd_variant_name(size_t i);
 const char *dd_variant_description(size_t i);
 
+#define DD_LINKDEG_BUCKETS 16
+
 /* What the last dd_delete did.  Phase times only in counting builds. */
 typedef struct dd_delete_stats {
     uint32_t degree;          /* neighbours, the infinite vertex included  */
     int on_hull;
+    int forced_fill;          /* hull vertex with coplanar finite
+                                 neighbours: the framework's forced fill
+                                 ran instead of the strategy             */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
     uint64_t fallbacks;       /* sampling fallbacks of guided strategies   */
+    uint64_t locate_steps;    /* cells tested by point location in the
+                                 conflict DT (guided variants, dtq-only)  */
+    uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* LINKDTDELETE calls by
+                                 the degree of the deleted link vertex:
+                                 index k = degree k for k < 15, last = 15+ */
     double link_us, locate_us, conflict_us, sew_us;
 } dd_delete_stats;
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *s);

@@ -245,6 +245,7 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
     if (dd_vec_push(&gr->walk, c0) != DD_OK) return DD_NONE;
     for (size_t k = 0; k < gr->walk.n; k++) {
         uint32_t c = gr->walk.a[k];
+        gr->d->locate_steps++;
         if (dd_cell_conflict(x, c, pp)) return c;
         for (uint32_t j = 0; j < 4; j++) {
             if (x->tv[4 * (size_t)c + j] == g) continue;
@@ -262,8 +263,11 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
 {
     dd_tri *x = gr->d->qdt;
     const double *pp = dd_pt(x, p);
-    for (uint32_t c = 0; c < x->ncell; c++)
-        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_cell_conflict(x, c, pp)) return c;
+    for (uint32_t c = 0; c < x->ncell; c++) {
+        if (x->tv[4 * (size_t)c] == DD_DEAD) continue;
+        gr->d->locate_steps++;
+        if (dd_cell_conflict(x, c, pp)) return c;
+    }
     return DD_NONE;
 }
 

@@ -282,6 +282,7 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
         tt = l->ln[3 * tt + (m + 1) % 3] / 3;
     } while (tt != t0);
     if (k < 3) return DD_ERR_INTERNAL;
+    d->link_deletions[k < DD_LINKDEG_BUCKETS - 1 ? k : DD_LINKDEG_BUCKETS - 1]++;
 
     /* 2. Re-triangulate the hole: Delaunay ears, or (once) the fill that
      *    brings in the infinite vertex.                                   */

@@ -100,6 +100,16 @@ static void single_deletions(tl_state *st, const char *name, const double *pts, 
             }
             canon now = ours(t);
             if (!same(now, ref)) fail_once(ta, "deleting %u: result differs from CGAL's%s", v, "");
+            /* GRR variants delete every finite neighbour but the 4 base
+             * points from the link: the counters must say so.             */
+            dd_delete_stats dst;
+            dd_last_delete_stats(t, &dst);
+            if (!strncmp(var, "grr-", 4) || !strcmp(var, "guide-only")) {
+                uint32_t sum = 0, finite = dst.degree - (uint32_t)dst.on_hull;
+                for (int b = 0; b < DD_LINKDEG_BUCKETS; b++) sum += dst.link_deletions[b];
+                if (!dst.forced_fill && finite > 4 && sum != finite - 4)
+                    fail_once(ta, "deleting %u: %s link deletions counted", v, "wrong number of");
+            }
             free(now.a);
             if (check_every && dd_check(t) != DD_OK) fail_once(ta, "deleting %u: validator: %s", v, dd_errmsg(t));
             reins.total++;

@@ -139,12 +139,11 @@ static dd_status brio_fill(dd_del *d)
         /* 4. Delete the round's points from the link, the ones of low link
          *    degree first (passes with a growing degree bound): the order
          *    inside a round is free, and small holes are cheap to fill.    */
-        size_t w2 = 0;
-        for (size_t k = 0; k < ncur; k++)
-            if (b->rmark[b->cur[k]] != gen) b->cur[w2++] = b->cur[k];
-        size_t nleft = 0;
-        for (size_t k = 0; k < ncur; k++)
+        size_t w2 = 0, nleft = 0;
+        for (size_t k = 0; k < ncur; k++) {
             if (b->rmark[b->cur[k]] == gen) b->seq[nseq + nleft++] = b->cur[k];   /* scratch */
+            else b->cur[w2++] = b->cur[k];
+        }
         for (uint32_t bound = DD_LOWDEG; nleft > 0 && s == DD_OK; bound *= 2) {
             size_t keep = 0;
             for (size_t k = 0; k < nleft && s == DD_OK; k++) {
