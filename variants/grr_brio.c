@@ -68,7 +68,7 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
         b->vcap = n;
         b->gen = 0;
     }
-    if (b->lcap < deg + 2) {
+    if (b->lcap < 2 * (deg + 2)) {   /* seq holds the records and a round */
         size_t n = 2 * (deg + 2);
         if (grow(&b->ids, n, 0) || grow(&b->tri, 6 * n + 24, 0) || grow(&b->parent, n, 0) ||
             grow(&b->order, n, 0) || grow(&b->seq, n, 0) || grow(&b->guide, n, 0) || grow(&b->cur, n, 0))
