@@ -46,6 +46,9 @@ uint32_t dd_grr_random_lowdeg(dd_grr *g);
 /* A random remaining link vertex (base points excluded); never DD_NONE
  * while the link has more than the base.                                 */
 uint32_t dd_grr_random_any(dd_grr *g);
+/* The paper's low-degree vertex sampling: a random link vertex of degree
+ * <= 7, or (a counted fallback) a random remaining one when none is left. */
+uint32_t dd_grr_sample_lowdeg(dd_grr *g);
 /* Link degree of v. */
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v);
 /* Writes v's link neighbours (the infinite vertex included) to out, in

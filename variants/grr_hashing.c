@@ -10,13 +10,8 @@
 
 static uint32_t hashing_sample(dd_grr *g, uint32_t *guide)
 {
-    uint32_t u = dd_grr_random_lowdeg(g);
-    if (u == DD_NONE) {
-        dd_grr_fallback(g);
-        u = dd_grr_random_any(g);
-    }
     *guide = DD_NONE;
-    return u;
+    return dd_grr_sample_lowdeg(g);
 }
 
 static const dd_grr_policy hashing_policy = {hashing_sample, 1, 0};

@@ -8,11 +8,7 @@
 
 static uint32_t neighbor_sample(dd_grr *g, uint32_t *guide)
 {
-    uint32_t u = dd_grr_random_lowdeg(g);
-    if (u == DD_NONE) {
-        dd_grr_fallback(g);
-        u = dd_grr_random_any(g);
-    }
+    uint32_t u = dd_grr_sample_lowdeg(g);
     *guide = dd_grr_lowest_neighbour(g, u);
     return u;
 }
