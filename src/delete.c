@@ -200,7 +200,7 @@ static dd_status collect_star(dd_del *d)
 /* Moves four affinely independent points of a[0..n) to a[0..3] (first
  * found in a's order) and records them in d->base.  DD_ERR_COPLANAR when
  * there are none.                                                        */
-static dd_status pick_base(dd_del *d, uint32_t *a, size_t n)
+dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
 {
     dd_tri *t = d->t;
     if (n < 4) return DD_ERR_COPLANAR;
@@ -216,11 +216,6 @@ static dd_status pick_base(dd_del *d, uint32_t *a, size_t n)
     s = a[3]; a[3] = a[k]; a[k] = s;
     memcpy(d->base, a, sizeof d->base);
     return DD_OK;
-}
-
-dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
-{
-    return pick_base(d, a, n);
 }
 
 /* ---- the conflict DT ----------------------------------------------------- */
@@ -474,7 +469,7 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     for (size_t k = 0; k < d->nbr.n && s == DD_OK; k++) s = dd_vec_push(&d->order, d->nbr.a[k]);
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
     DD_PHASE_END(d, DD_PH_LINK);
-    if (pick_base(d, d->order.a, d->order.n) != DD_OK) {
+    if (dd_del_pick_base(d, d->order.a, d->order.n) != DD_OK) {
         /* Coplanar finite neighbours: q is on the hull.  If every finite
          * cell holds q, every other point is a neighbour: all coplanar.   */
         size_t finite_star = 0;

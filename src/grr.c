@@ -21,7 +21,7 @@ struct dd_grr {
     dd_vec seq, gv, gt;           /* removal order, vertex guides, triangles */
     dd_vec walk;                  /* scratch for locate_from_vertex          */
     dd_tri_slot *dh;              /* dummy cells by vertex triple            */
-    uint32_t dh_cap, dh_n;
+    uint32_t dh_alloc, dh_cap, dh_n;  /* allocated, in use (a power of 2), used */
 };
 
 void dd_grr_free(dd_grr *g)
@@ -178,17 +178,21 @@ static void dh_put_raw(dd_tri_slot *h, uint32_t mask, const uint32_t k[3], uint3
         }
 }
 
+/* Starts an empty table sized for `expect` cells; only the part in use is
+ * cleared, so a large table left by a high-degree deletion costs nothing
+ * to the next small one.                                                 */
 static dd_status dh_reset(dd_grr *g, size_t expect)
 {
     size_t cap = 64;
     while (cap < 2 * expect) cap *= 2;
-    if (cap > g->dh_cap) {
+    if (cap > g->dh_alloc) {
         free(g->dh);
         g->dh = malloc(cap * sizeof *g->dh);
-        if (!g->dh) { g->dh_cap = 0; return DD_ERR_NOMEM; }
-        g->dh_cap = (uint32_t)cap;
+        if (!g->dh) { g->dh_alloc = g->dh_cap = 0; return DD_ERR_NOMEM; }
+        g->dh_alloc = (uint32_t)cap;
     }
-    memset(g->dh, 0, g->dh_cap * sizeof *g->dh);
+    g->dh_cap = (uint32_t)cap;
+    memset(g->dh, 0, cap * sizeof *g->dh);
     g->dh_n = 0;
     return DD_OK;
 }
@@ -209,7 +213,7 @@ static dd_status dh_put(dd_grr *g, uint32_t c)
             }
         free(g->dh);
         g->dh = h;
-        g->dh_cap = cap;
+        g->dh_alloc = g->dh_cap = cap;
     }
     uint32_t k[3], n = 0;
     for (uint32_t i = 0; i < 4; i++) {
@@ -342,7 +346,7 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
         if (s == DD_OK) s = dd_vec_push(&g->seq, p);
         if (s == DD_OK) s = dd_vec_push(&g->gv, guide);
         if (s == DD_OK && pol->triangle_guide) {
-            const uint32_t *tri = g->link.lv + 3 * (size_t)g->link.created[dd_del_rand(d) % g->link.nnew];
+            const uint32_t *tri = g->link.lv + 3 * (size_t)g->link.ring_tri[dd_del_rand(d) % g->link.nnew];
             for (int i = 0; i < 3 && s == DD_OK; i++) s = dd_vec_push(&g->gt, tri[i]);
         }
         if (s == DD_OK) s = update_sets(g, p);

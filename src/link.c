@@ -343,7 +343,6 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
     l->ltri[p] = DD_NONE;
     l->nnew = nt;
     l->nring = k;
-    for (uint32_t j = 0; j < nt && j < DD_LINK_MAXRING; j++) l->created[j] = l->ring_tri[j];
     return DD_OK;
 }
 

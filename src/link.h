@@ -21,7 +21,6 @@
 
 #include "mesh.h"
 
-#define DD_LINK_MAXRING 4096   /* created[] records at most this many  */
 #define DD_LINK_EARS_UPTO 12   /* larger holes: fill_by_dt in link.c   */
 
 typedef struct dd_link {
@@ -40,8 +39,6 @@ typedef struct dd_link {
     dd_tri *scratch;            /* DT(ring + q) when infinity appears   */
     uint32_t nnew;              /* triangles created by the last delete */
     uint32_t nring;             /* p's degree at the last delete        */
-    uint32_t created[DD_LINK_MAXRING];  /* their triangle indices (first
-                                           min(nnew, MAXRING))          */
 } dd_link;
 
 void dd_link_free(dd_link *l);
@@ -56,7 +53,7 @@ dd_status dd_link_extract(dd_link *l, struct dd_del *d);
  * use straight-line code; larger holes clip Delaunay ears.  When q leaves
  * the interior of the hull of the remaining points, the infinite vertex
  * enters the link in p's hole (see fill_with_infinity).  The new
- * triangles are listed in l->created[0 .. l->nnew).                      */
+ * triangles are l->ring_tri[0 .. l->nnew).                               */
 dd_status dd_link_delete(dd_link *l, struct dd_del *d, uint32_t p);
 
 /* The link's live triangles as sorted vertex triples (for the tests). */

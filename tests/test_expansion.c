@@ -53,7 +53,6 @@ static const char *const kind_name[K_NKINDS] = {
     "big-sphere", "tilted-plane"
 };
 
-typedef struct pool { double *p; int n; } pool;
 
 static pool spheres[6];
 static const int64_t sphere_r2[6] = {9, 50, 81, 338, 3000, 12345};
@@ -87,19 +86,6 @@ static pool four_square_sphere(tl_rng *r, int64_t radius, int n)
     return pl;
 }
 
-static void pick(tl_rng *r, const pool *pl, double q[5][3])
-{
-    int idx[5];
-    for (int i = 0; i < 5; i++) {
-        int again;
-        do {
-            idx[i] = (int)tl_int(r, 0, pl->n - 1);
-            again = 0;
-            for (int j = 0; j < i; j++) again |= idx[j] == idx[i];
-        } while (again);
-        memcpy(q[i], pl->p + 3 * idx[i], sizeof q[i]);
-    }
-}
 
 /* A random double in [-1, 1) with all 53 bits used, times 2^e. */
 static double rnd(tl_rng *r, int e)
@@ -119,7 +105,7 @@ static int generate(tl_rng *r, int kind, double q[5][3])
         return 0;
     }
     case K_SPHERE:
-        pick(r, &spheres[tl_int(r, 0, 5)], q);
+        tl_pick(r, &spheres[tl_int(r, 0, 5)], 5, q);
         return 1;
     case K_MOMENT: {
         /* five nearby parameters: a tiny, nearly degenerate determinant */
@@ -182,7 +168,7 @@ static int generate(tl_rng *r, int kind, double q[5][3])
         /* generic integer points of a sphere of radius ~2^26: exactly
          * cospherical, and ~135-bit determinants, so doubles and double-
          * doubles both round (stresses the stage A and C error bounds)  */
-        pick(r, &big_sphere, q);
+        tl_pick(r, &big_sphere, 5, q);
         return 1;
     default: { /* K_TILTED: the plane z = x + y through 53-bit points of
                 * several binades, x + y exact: inexact differences, and

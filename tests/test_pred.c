@@ -26,22 +26,7 @@ static void note(tally *t, int ours, int cgal, const char *what)
 
 /* Point sources ----------------------------------------------------------- */
 
-typedef struct pool { double *p; int n; } pool;
 
-static void pick(tl_rng *r, const pool *pl, int k, double out[][3])
-{
-    /* k distinct points of the pool */
-    int idx[8];
-    for (int i = 0; i < k; i++) {
-        int again;
-        do {
-            idx[i] = (int)tl_int(r, 0, pl->n - 1);
-            again = 0;
-            for (int j = 0; j < i; j++) again |= idx[j] == idx[i];
-        } while (again);
-        memcpy(out[i], pl->p + 3 * idx[i], sizeof out[i]);
-    }
-}
 
 static void transform(double pts[][3], int k, double scale, const double off[3])
 {
@@ -94,7 +79,7 @@ static void run_3d(tl_state *st, dd_pred *pr, tl_rng *r, const char *name, const
     tally t = {0, 0, ""};
     for (int it = 0; it < rounds; it++) {
         double q[5][3];
-        pick(r, pl, 5, q);
+        tl_pick(r, pl, 5, q);
         double off[3] = {(double)tl_int(r, -3, 3), (double)tl_int(r, -3, 3), (double)tl_int(r, -3, 3)};
         transform(q, 5, scales[it % 3], off);
         test_3d(pr, &t, q);
@@ -109,7 +94,7 @@ static void run_2d(tl_state *st, dd_pred *pr, tl_rng *r, const char *name, const
     tally t = {0, 0, ""};
     for (int it = 0; it < rounds; it++) {
         double q[4][3];
-        pick(r, pl, 4, q);
+        tl_pick(r, pl, 4, q);
         double off[3] = {(double)tl_int(r, -3, 3), (double)tl_int(r, -3, 3), (double)tl_int(r, -3, 3)};
         transform(q, 4, scales2d[it % 3], off);
         test_2d(pr, &t, q);

@@ -57,6 +57,24 @@ static inline int64_t tl_int(tl_rng *r, int64_t lo, int64_t hi)
     return lo + (int64_t)(tl_next(r) % (uint64_t)(hi - lo + 1));
 }
 
+/* A pool of points to draw test tuples from. */
+typedef struct pool { double *p; int n; } pool;
+
+/* k (<= 8) distinct points of the pool, copied to out. */
+static inline void tl_pick(tl_rng *r, const pool *pl, int k, double out[][3])
+{
+    int idx[8];
+    for (int i = 0; i < k; i++) {
+        int again;
+        do {
+            idx[i] = (int)tl_int(r, 0, pl->n - 1);
+            again = 0;
+            for (int j = 0; j < i; j++) again |= idx[j] == idx[i];
+        } while (again);
+        memcpy(out[i], pl->p + 3 * idx[i], sizeof out[i]);
+    }
+}
+
 /* Integer points of the sphere x^2+y^2+z^2 = r2, written to pts (3 doubles
  * each, up to max points); returns how many.                              */
 static inline int tl_sphere_points(int64_t r2, double *pts, int max)
