@@ -25,7 +25,7 @@ void dd_delete_ctx_free(dd_del *d)
     if (!d) return;
     dd_vec_free(&d->star); dd_vec_free(&d->nbr); dd_vec_free(&d->fill);
     dd_vec_free(&d->order); dd_vec_free(&d->sew_out); dd_vec_free(&d->cellmap);
-    free(d->lhash);
+    dd_trihash_free(&d->lhash);
     free(d->vmark);
     free(d->qdt_vcell);
     dd_free(d->qdt);
@@ -90,67 +90,6 @@ void dd_phase_end(dd_del *d, int phase)
 }
 #endif
 
-/* ---- the link-triangle hash ---------------------------------------------- */
-
-static void sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
-{
-    uint32_t s;
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
-    if (*b > *c) { s = *b; *b = *c; *c = s; }
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
-}
-
-static uint32_t tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
-{
-    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
-               ^ (uint64_t)c * 0x165667B19E3779F9ull;
-    return (uint32_t)(h >> 40) & mask;
-}
-
-static dd_status reserve_link_hash(dd_del *d, size_t n)
-{
-    size_t want = 64;
-    while (want < 2 * n) want *= 2;
-    if (want > d->lhash_cap) {
-        dd_tri_slot *h = calloc(want, sizeof *h);
-        if (!h) return DD_ERR_NOMEM;
-        free(d->lhash);
-        d->lhash = h;
-        d->lhash_cap = (uint32_t)want;
-        d->lhash_gen = 0;
-    }
-    if (++d->lhash_gen == 0) {
-        memset(d->lhash, 0, d->lhash_cap * sizeof *d->lhash);
-        d->lhash_gen = 1;
-    }
-    return DD_OK;
-}
-
-static void link_hash_put(dd_del *d, uint32_t a, uint32_t b, uint32_t c, uint32_t slot)
-{
-    sort3u(&a, &b, &c);
-    uint32_t mask = d->lhash_cap - 1;
-    for (uint32_t h = tri_hash(a, b, c, mask);; h = (h + 1) & mask) {
-        dd_tri_slot *e = &d->lhash[h];
-        if (e->gen != d->lhash_gen) {
-            e->a = a; e->b = b; e->c = c; e->slot = slot; e->gen = d->lhash_gen;
-            return;
-        }
-    }
-}
-
-/* Star slot of the link triangle abc, or DD_NONE. */
-static uint32_t link_hash_get(const dd_del *d, uint32_t a, uint32_t b, uint32_t c)
-{
-    sort3u(&a, &b, &c);
-    uint32_t mask = d->lhash_cap - 1;
-    for (uint32_t h = tri_hash(a, b, c, mask);; h = (h + 1) & mask) {
-        const dd_tri_slot *e = &d->lhash[h];
-        if (e->gen != d->lhash_gen) return DD_NONE;
-        if (e->a == a && e->b == b && e->c == c) return e->slot;
-    }
-}
-
 /* ---- step 1: star, link, neighbours -------------------------------------- */
 
 static dd_status collect_star(dd_del *d)
@@ -185,14 +124,15 @@ static dd_status collect_star(dd_del *d)
             }
         }
     }
-    if (s == DD_OK) s = reserve_link_hash(d, d->star.n);
+    if (s == DD_OK) s = dd_trihash_reset(&d->lhash, d->star.n);
     if (s != DD_OK) return s;
-    for (size_t k = 0; k < d->star.n; k++) {
+    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
         uint32_t c = d->star.a[k];
         const uint32_t *v = t->tv + 4 * (size_t)c;
         int i = dd_index_of(t, c, q);
-        link_hash_put(d, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
+        s = dd_trihash_put(&d->lhash, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
     }
+    if (s != DD_OK) return s;
     d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
     return DD_OK;
 }
@@ -371,7 +311,7 @@ static dd_status sew(dd_del *d)
                 d->sew_out.a[4 * k + j] = DD_NONE;
                 continue;
             }
-            uint32_t slot = link_hash_get(d, v[dd_facet[j][0]], v[dd_facet[j][1]], v[dd_facet[j][2]]);
+            uint32_t slot = dd_trihash_get(&d->lhash, v[dd_facet[j][0]], v[dd_facet[j][1]], v[dd_facet[j][2]]);
             if (slot == DD_NONE)
                 return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a cavity facet matches no link triangle",
                                t->v2in[d->q]);

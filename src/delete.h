@@ -35,13 +35,6 @@
 #include <time.h>
 #endif
 
-/* A slot of the link-triangle hash: sorted vertex triple -> star slot. */
-typedef struct dd_tri_slot {
-    uint32_t a, b, c;     /* a <= b <= c (DD_INF sorts last)              */
-    uint32_t slot;        /* index into d->star                           */
-    uint32_t gen;
-} dd_tri_slot;
-
 /* Phases of one deletion (seconds), measured in counting builds only. */
 enum { DD_PH_LINK, DD_PH_LOCATE, DD_PH_CONFLICT, DD_PH_SEW, DD_NPHASES };
 
@@ -55,8 +48,7 @@ typedef struct dd_del {
     dd_vec nbr;           /* P minus DD_INF: the finite neighbours of q   */
     uint32_t base[4];     /* 4 affinely independent points of nbr         */
 
-    dd_tri_slot *lhash;   /* link triangles by vertex triple              */
-    uint32_t lhash_cap, lhash_gen;
+    dd_trihash lhash;     /* link triangle (vertex triple) -> star slot   */
     uint32_t *vmark;      /* per vertex id, epoch marks (cap t->cap_v)    */
     uint32_t vmark_cap, vepoch;
 

@@ -20,15 +20,15 @@ struct dd_grr {
     dd_vec cand, rem;             /* degree <= 7 / all, base points excluded */
     dd_vec seq, gv, gt;           /* removal order, vertex guides, triangles */
     dd_vec walk;                  /* scratch for locate_from_vertex          */
-    dd_tri_slot *dh;              /* dummy cells by vertex triple            */
-    uint32_t dh_alloc, dh_cap, dh_n;  /* allocated, in use (a power of 2), used */
+    dd_trihash dh;                /* dummy cells by their other 3 vertices   */
 };
 
 void dd_grr_free(dd_grr *g)
 {
     if (!g) return;
     dd_link_free(&g->link);
-    free(g->candpos); free(g->rempos); free(g->dh);
+    free(g->candpos); free(g->rempos);
+    dd_trihash_free(&g->dh);
     dd_vec_free(&g->cand); dd_vec_free(&g->rem); dd_vec_free(&g->seq);
     dd_vec_free(&g->gv); dd_vec_free(&g->gt); dd_vec_free(&g->walk);
     free(g);
@@ -152,96 +152,29 @@ static dd_status init(dd_grr *g)
     return s;
 }
 
-/* ---- the dummy-cell hash (triangle guides) -------------------------------- */
-
-static uint32_t th(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
-{
-    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
-               ^ (uint64_t)c * 0x165667B19E3779F9ull;
-    return (uint32_t)(h >> 40) & mask;
-}
-
-static void sort3(uint32_t *x)
-{
-    uint32_t s;
-    if (x[0] > x[1]) { s = x[0]; x[0] = x[1]; x[1] = s; }
-    if (x[1] > x[2]) { s = x[1]; x[1] = x[2]; x[2] = s; }
-    if (x[0] > x[1]) { s = x[0]; x[0] = x[1]; x[1] = s; }
-}
-
-static void dh_put_raw(dd_tri_slot *h, uint32_t mask, const uint32_t k[3], uint32_t cell)
-{
-    for (uint32_t i = th(k[0], k[1], k[2], mask);; i = (i + 1) & mask)
-        if (h[i].gen == 0) {
-            h[i].a = k[0]; h[i].b = k[1]; h[i].c = k[2]; h[i].slot = cell; h[i].gen = 1;
-            return;
-        }
-}
-
-/* Starts an empty table sized for `expect` cells; only the part in use is
- * cleared, so a large table left by a high-degree deletion costs nothing
- * to the next small one.                                                 */
-static dd_status dh_reset(dd_grr *g, size_t expect)
-{
-    size_t cap = 64;
-    while (cap < 2 * expect) cap *= 2;
-    if (cap > g->dh_alloc) {
-        free(g->dh);
-        g->dh = malloc(cap * sizeof *g->dh);
-        if (!g->dh) { g->dh_alloc = g->dh_cap = 0; return DD_ERR_NOMEM; }
-        g->dh_alloc = (uint32_t)cap;
-    }
-    g->dh_cap = (uint32_t)cap;
-    memset(g->dh, 0, cap * sizeof *g->dh);
-    g->dh_n = 0;
-    return DD_OK;
-}
+/* ---- the dummy-cell hash (triangle guides) ------------------------------ */
 
 /* Registers the dummy cell c of the conflict DT under its three other
- * vertices.                                                              */
+ * vertices.  A triple is registered once: a link triangle destroyed by a
+ * point never comes back while that point stays.                        */
 static dd_status dh_put(dd_grr *g, uint32_t c)
 {
-    const dd_tri *x = g->d->qdt;
-    if (2 * (g->dh_n + 1) > g->dh_cap) {    /* grow and rehash */
-        uint32_t cap = g->dh_cap * 2;
-        dd_tri_slot *h = calloc(cap, sizeof *h);
-        if (!h) return DD_ERR_NOMEM;
-        for (uint32_t i = 0; i < g->dh_cap; i++)
-            if (g->dh[i].gen) {
-                uint32_t k[3] = {g->dh[i].a, g->dh[i].b, g->dh[i].c};
-                dh_put_raw(h, cap - 1, k, g->dh[i].slot);
-            }
-        free(g->dh);
-        g->dh = h;
-        g->dh_alloc = g->dh_cap = cap;
-    }
+    const uint32_t *v = g->d->qdt->tv + 4 * (size_t)c;
     uint32_t k[3], n = 0;
-    for (uint32_t i = 0; i < 4; i++) {
-        uint32_t w = x->tv[4 * (size_t)c + i];
-        if (w != DD_QD) k[n++] = w;
-    }
-    sort3(k);
-    dh_put_raw(g->dh, g->dh_cap - 1, k, c);
-    g->dh_n++;
-    return DD_OK;
+    for (uint32_t i = 0; i < 4; i++)
+        if (v[i] != DD_QD) k[n++] = v[i];
+    return dd_trihash_put(&g->dh, k[0], k[1], k[2], c);
 }
 
-/* The live dummy cell on triangle k, or DD_NONE. */
+/* The live dummy cell on triangle tri, or DD_NONE. */
 static uint32_t dh_get(const dd_grr *g, const uint32_t tri[3])
 {
-    uint32_t k[3] = {tri[0], tri[1], tri[2]};
-    sort3(k);
-    uint32_t mask = g->dh_cap - 1;
     const dd_tri *x = g->d->qdt;
-    for (uint32_t i = th(k[0], k[1], k[2], mask);; i = (i + 1) & mask) {
-        const dd_tri_slot *e = &g->dh[i];
-        if (!e->gen) return DD_NONE;
-        if (e->a != k[0] || e->b != k[1] || e->c != k[2]) continue;
-        uint32_t c = e->slot;      /* still that cell? (cells are recycled) */
-        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_index_of(x, c, DD_QD) >= 0 && dd_index_of(x, c, k[0]) >= 0 &&
-            dd_index_of(x, c, k[1]) >= 0 && dd_index_of(x, c, k[2]) >= 0)
-            return c;
-    }
+    uint32_t c = dd_trihash_get(&g->dh, tri[0], tri[1], tri[2]);
+    if (c == DD_NONE || x->tv[4 * (size_t)c] == DD_DEAD || dd_index_of(x, c, DD_QD) < 0) return DD_NONE;
+    for (int i = 0; i < 3; i++)            /* still that cell? (cells are recycled) */
+        if (dd_index_of(x, c, tri[i]) < 0) return DD_NONE;
+    return c;
 }
 
 /* ---- guided point location ------------------------------------------------ */
@@ -367,7 +300,7 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
         s = dd_qdt_create(d);
     }
     if (s == DD_OK && pol->triangle_guide) {
-        s = dh_reset(g, 8 * g->seq.n + 16);
+        s = dd_trihash_reset(&g->dh, 8 * g->seq.n + 16);
         for (uint32_t c = 0; c < d->qdt->ncell && s == DD_OK; c++)
             if (d->qdt->tv[4 * (size_t)c] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
     }

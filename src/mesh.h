@@ -55,6 +55,28 @@ typedef struct dd_edge_slot {
     uint32_t gen;      /* slot is used iff gen == t->ehash_gen           */
 } dd_edge_slot;
 
+/* A hash from vertex triples (unordered) to a value, open addressing.
+ * A slot is used iff its gen equals the table's: a reset is O(1) (the
+ * part in use is only cleared when the generation counter wraps).  It
+ * grows by rehashing when half full.                                     */
+typedef struct dd_tri_slot {
+    uint32_t a, b, c;     /* a <= b <= c (DD_INF sorts last)              */
+    uint32_t val;
+    uint32_t gen;
+} dd_tri_slot;
+
+typedef struct dd_trihash {
+    dd_tri_slot *s;
+    uint32_t alloc, mask, n, gen;
+} dd_trihash;
+
+/* Empties h and sizes it for about `expect` entries. */
+dd_status dd_trihash_reset(dd_trihash *h, size_t expect);
+dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val);
+/* The value stored under the triple {a, b, c}, or DD_NONE. */
+uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c);
+void dd_trihash_free(dd_trihash *h);
+
 /* A growable array of uint32_t (scratch; reused, never shrunk). */
 typedef struct dd_vec {
     uint32_t *a;
