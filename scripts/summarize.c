@@ -19,6 +19,14 @@
  * "FILE:LINE: what" on stderr and exit status 1 (2 for bad usage), before
  * any output is written.
  *
+ * The variant "insert" is not a deletion: the bench driver's row timing our
+ * engine's re-insertion of the deleted vertex (see src/cli_bench.c), the
+ * cost deletions are measured against.  It is the last column of the time
+ * table, gets no ratio to cgal there nor in the plot data (so the ratio
+ * plot leaves it out; it has no tets or phases either), and its match 0
+ * means the re-insertion did not restore the triangulation.  "Engine
+ * deletion variants" below are all variants but cgal, cgal-rnd and insert.
+ *
  * Degree buckets.  [0,4) [4,8), then two buckets per power of two:
  * [2^k, 1.5*2^k) and [1.5*2^k, 2^(k+1)) for k >= 3, i.e.
  *   [8,12) [12,16) [16,24) [24,32) [32,48) [48,64) [64,96) [96,128)
@@ -37,15 +45,21 @@
  * p-quantile is x[h] interpolated at h = (m-1)p.  Median p = .5, IQR from
  * q1 = .25 to q3 = .75.  ratio = cgal median / variant median in the same
  * bucket of the same dataset (> 1: the variant is faster than CGAL), only
- * when that bucket has cgal rows.  Phase and tets medians ignore empty
- * fields.  "All datasets" pools the rows of every dataset per bucket and
- * variant and applies the same definitions to the pool, except that a
- * variant's cgal reference is pooled only over the datasets in which the
- * variant has rows in that bucket.
+ * when that bucket has cgal rows.  vs insert = variant median / insert
+ * median in the same bucket of the same dataset, for engine deletion
+ * variants only (2.00: deleting costs twice re-inserting; the target is at
+ * most 2).  Phase and tets medians ignore empty fields.  "All datasets"
+ * pools the rows of every dataset per bucket and variant and applies the
+ * same definitions to the pool, except that a variant's cgal and insert
+ * references are pooled only over the datasets in which the variant has
+ * rows in that bucket.
  *
  * Output, all under OUTDIR:
  *   summary.md              meta.txt's lines, then per dataset: time table
- *                           (buckets x variants), mismatches, phase split,
+ *                           (buckets x variants), mismatches, "Deletion vs
+ *                           re-insertion" (per bucket with insert rows:
+ *                           insert's median µs and each engine deletion
+ *                           variant's vs insert, "×2.31"), phase split,
  *                           tets created; then all datasets pooled.
  *   plotdata/datasets.txt   the datasets of this run, one per line.
  *   plotdata/D.dat          per dataset D: one gnuplot index block per
@@ -55,8 +69,9 @@
  *                             8 median_locate_us 9 median_conflict_us
  *                             10 median_sew_us 11 bucket_lo 12 bucket_hi
  *                             13 rows 14 mismatches
- *                           NaN where a value is unknown.  A "# title: "
- *                           line opens the file.
+ *                           NaN where a value is unknown (ratio always
+ *                           for insert).  A "# title: " line opens the
+ *                           file.
  *   plotdata/D.variants     the variant of each block, one per line.
  *   plotdata/D.phases       per variant with phase times: variant, median
  *                           link, locate, conflict, sew, us (all rows).
@@ -85,13 +100,15 @@
 #define NFIELDS 13
 #define NPHASES 4
 #define ALL_NAME "all-datasets"
+#define INSERT_NAME "insert"       /* the re-insertion row, not a deletion */
 #define MAX_LISTED_MISMATCHES 20
 
 static const char *const csv_header =
     "dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,"
     "locate_us,conflict_us,sew_us,match";
 
-/* Column order of the variants known to the paper; others follow, sorted. */
+/* Column order of the variants known to the paper; others follow, sorted,
+ * and "insert" comes last. */
 static const char *const variant_order[] = {
     "cgal", "cgal-rnd", "sew-full", "dtq-only", "guide-only",
     "grr-edge", "grr-neighbor", "grr-hashing", "grr-brio"};
@@ -126,6 +143,7 @@ typedef struct cell {
     size_t mismatches, on_hull;
     double med, q1, q3;        /* of us                                   */
     double ratio;              /* cgal med / med, NaN without cgal        */
+    double vs_insert;          /* med / insert med, deletion variants only */
     double tets;               /* median tets_created, NaN if unknown     */
     double phase[NPHASES];     /* median phase times, NaN if unknown      */
 } cell;
@@ -436,7 +454,7 @@ static double median_of(const ctx *c, const size_t *idx, size_t k, enum field f)
 }
 
 /* Column rank of a variant: known ones in the paper's order, then the
- * others alphabetically. */
+ * others alphabetically, then insert (not a deletion) last. */
 static int compute_var_rank(ctx *c)
 {
     size_t nv = c->variants.n;
@@ -452,7 +470,7 @@ static int compute_var_rank(ctx *c)
         int known = 0;
         for (size_t k = 0; k < NKNOWN; k++)
             if (!strcmp(c->variants.s[v], variant_order[k])) known = 1;
-        if (known) continue;
+        if (known || !strcmp(c->variants.s[v], INSERT_NAME)) continue;
         size_t at = m++;                       /* insertion sort by name */
         while (at > first_other && strcmp(c->variants.s[order[at - 1]], c->variants.s[v]) > 0) {
             order[at] = order[at - 1];
@@ -460,9 +478,41 @@ static int compute_var_rank(ctx *c)
         }
         order[at] = v;
     }
+    for (size_t v = 0; v < nv; v++)
+        if (!strcmp(c->variants.s[v], INSERT_NAME)) order[m++] = v;
     for (size_t i = 0; i < nv; i++) c->var_rank[order[i]] = i;
     free(order);
     return 0;
+}
+
+/* Column of the variant called name in t, or -1. */
+static int column_of(const ctx *c, const table *t, const char *name)
+{
+    for (size_t j = 0; j < t->nvar; j++)
+        if (!strcmp(c->variants.s[t->var[j]], name)) return (int)j;
+    return -1;
+}
+
+/* An engine deletion variant: neither a CGAL row nor the insert row. */
+static int is_deletion_variant(const char *name)
+{
+    return strcmp(name, "cgal") && strcmp(name, "cgal-rnd") && strcmp(name, INSERT_NAME);
+}
+
+/* Median us of the rows of cell ref (same bucket as ce) from the datasets
+ * in which ce has rows; NaN if none.  idx: build_table's sorted indices;
+ * present: scratch for one flag per dataset. */
+static double ref_median(const ctx *c, const size_t *idx, const cell *ce, const cell *ref, char *present)
+{
+    if (!ref->rows) return NAN;
+    for (size_t i = 0; i < c->datasets.n; i++) present[i] = 0;
+    for (size_t i = ce->first; i < ce->first + ce->rows; i++) present[c->rows[idx[i]].ds] = 1;
+    size_t m = 0;
+    for (size_t i = ref->first; i < ref->first + ref->rows; i++)
+        if (present[c->rows[idx[i]].ds]) c->scratch[m++] = c->rows[idx[i]].us;
+    if (!m) return NAN;
+    qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
+    return quantile(c->scratch, m, 0.5);
 }
 
 /* qsort has no context argument: sort (key, row) pairs instead. */
@@ -524,8 +574,8 @@ static int build_table(ctx *c, size_t ds, table *t)
     present = malloc((c->datasets.n ? c->datasets.n : 1) * sizeof *present);
     if (!t->cells || !t->deletions || !t->sizes || !present) goto oom;
     for (size_t i = 0; i < ncell; i++)
-        t->cells[i] = (cell){.med = NAN, .q1 = NAN, .q3 = NAN, .ratio = NAN, .tets = NAN,
-                             .phase = {NAN, NAN, NAN, NAN}};
+        t->cells[i] = (cell){.med = NAN, .q1 = NAN, .q3 = NAN, .ratio = NAN, .vs_insert = NAN,
+                             .tets = NAN, .phase = {NAN, NAN, NAN, NAN}};
 
     /* distinct sizes */
     for (size_t i = 0; i < k; i++) t->sizes[i] = c->rows[idx[i]].n;
@@ -576,23 +626,21 @@ static int build_table(ctx *c, size_t ds, table *t)
 
     /* ratios to cgal in the same bucket, over the cgal rows of the datasets
      * in which the variant has rows in that bucket (when pooling datasets,
-     * a variant run on only some of them is compared on those only) */
-    int cg = -1;
-    for (size_t j = 0; j < t->nvar; j++)
-        if (!strcmp(c->variants.s[t->var[j]], "cgal")) cg = (int)j;
+     * a variant run on only some of them is compared on those only); the
+     * deletion variants' cost relative to insert the same way */
+    int cg = column_of(c, t, "cgal"), in = column_of(c, t, INSERT_NAME);
     for (int b = 0; b < t->nbucket; b++)
         for (size_t j = 0; j < t->nvar; j++) {
             cell *ce = &t->cells[(size_t)b * t->nvar + j];
-            const cell *ref = cg >= 0 ? &t->cells[(size_t)b * t->nvar + (size_t)cg] : NULL;
-            if (!ce->rows || !ref || !ref->rows || !(ce->med > 0)) continue;
-            for (size_t i = 0; i < c->datasets.n; i++) present[i] = 0;
-            for (size_t i = ce->first; i < ce->first + ce->rows; i++) present[c->rows[idx[i]].ds] = 1;
-            size_t m = 0;
-            for (size_t i = ref->first; i < ref->first + ref->rows; i++)
-                if (present[c->rows[idx[i]].ds]) c->scratch[m++] = c->rows[idx[i]].us;
-            if (!m) continue;
-            qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
-            ce->ratio = quantile(c->scratch, m, 0.5) / ce->med;
+            if (!ce->rows || !(ce->med > 0)) continue;
+            double ref = NAN;
+            if (cg >= 0 && (int)j != in)
+                ref = ref_median(c, idx, ce, &t->cells[(size_t)b * t->nvar + (size_t)cg], present);
+            if (!isnan(ref)) ce->ratio = ref / ce->med;
+            if (in >= 0 && is_deletion_variant(c->variants.s[t->var[j]])) {
+                ref = ref_median(c, idx, ce, &t->cells[(size_t)b * t->nvar + (size_t)in], present);
+                if (ref > 0) ce->vs_insert = ce->med / ref;
+            }
         }
     free(key);
     free(idx);
@@ -678,7 +726,11 @@ static void write_time_table(const ctx *c, const table *t, FILE *out)
 {
     char b1[32], b2[32], b3[32], bb[48];
     fprintf(out, "Time per deletion in µs: median (IQR q1–q3) ×ratio, ratio = cgal median / "
-                 "variant median in the same bucket (> 1: faster than CGAL).\n\n");
+                 "variant median in the same bucket (> 1: faster than CGAL).");
+    if (column_of(c, t, INSERT_NAME) >= 0)
+        fprintf(out, " The insert column is not a deletion: our engine re-inserting the same "
+                     "vertex (compared with the deletions below).");
+    fprintf(out, "\n\n");
     fprintf(out, "| degree | deletions |");
     for (size_t j = 0; j < t->nvar; j++) fprintf(out, " %s |", c->variants.s[t->var[j]]);
     fprintf(out, "\n|---|---:|");
@@ -707,6 +759,41 @@ static void write_time_table(const ctx *c, const table *t, FILE *out)
     fprintf(out, "\n\n");
 }
 
+/* Deletion vs re-insertion: per bucket with insert rows, insert's median
+ * and each deletion variant's median / insert's median. */
+static void write_insert_table(const ctx *c, const table *t, FILE *out)
+{
+    char b1[32], bb[48];
+    int in = column_of(c, t, INSERT_NAME);
+    if (in < 0) {
+        fprintf(out, "Deletion vs re-insertion: no %s rows in this dataset.\n\n", INSERT_NAME);
+        return;
+    }
+    fprintf(out, "Deletion vs re-insertion: median µs of our engine re-inserting the deleted "
+                 "vertex (%s), and per deletion variant its median deletion time divided by "
+                 "that (×2.00: deleting costs twice re-inserting; lower is better, target ≤ 2).\n\n"
+                 "| degree | %s µs |", INSERT_NAME, INSERT_NAME);
+    for (size_t j = 0; j < t->nvar; j++)
+        if (is_deletion_variant(c->variants.s[t->var[j]])) fprintf(out, " %s |", c->variants.s[t->var[j]]);
+    fprintf(out, "\n|---|---:|");
+    for (size_t j = 0; j < t->nvar; j++)
+        if (is_deletion_variant(c->variants.s[t->var[j]])) fprintf(out, "---:|");
+    fputc('\n', out);
+    for (int b = 0; b < t->nbucket; b++) {
+        const cell *ic = &t->cells[(size_t)b * t->nvar + (size_t)in];
+        if (!ic->rows) continue;
+        fprintf(out, "| %s | %s |", fmt_bucket(b, bb), fmt_us(ic->med, b1));
+        for (size_t j = 0; j < t->nvar; j++) {
+            if (!is_deletion_variant(c->variants.s[t->var[j]])) continue;
+            double r = t->cells[(size_t)b * t->nvar + j].vs_insert;
+            if (isnan(r)) fprintf(out, " — |");
+            else fprintf(out, " ×%.2f |", r);
+        }
+        fputc('\n', out);
+    }
+    fputc('\n', out);
+}
+
 /* The mismatch line: "mismatches: 0", or loud, with the rows listed. */
 static void write_mismatches(const ctx *c, const table *t, size_t ds, FILE *out)
 {
@@ -721,6 +808,13 @@ static void write_mismatches(const ctx *c, const table *t, size_t ds, FILE *out)
         for (int b = 0; b < t->nbucket; b++) m += t->cells[(size_t)b * t->nvar + j].mismatches;
         if (m) fprintf(out, " %s %zu;", c->variants.s[t->var[j]], m);
     }
+    int in = column_of(c, t, INSERT_NAME);
+    for (int b = 0; in >= 0 && b < t->nbucket; b++)
+        if (t->cells[(size_t)b * t->nvar + (size_t)in].mismatches) {
+            fprintf(out, " (the %s rows count re-insertions that did not restore the triangulation)",
+                    INSERT_NAME);
+            break;
+        }
     fprintf(out, "\n\n");
     size_t listed = 0;
     for (size_t i = 0; i < c->nrows && listed < MAX_LISTED_MISMATCHES; i++) {
@@ -943,6 +1037,7 @@ static int write_all(ctx *c)
                 t.on_hull, t.rows);
         write_time_table(c, &t, md);
         write_mismatches(c, &t, d, md);
+        write_insert_table(c, &t, md);
         st = write_phases(c, &t, d, md, NULL);
         if (!st) write_tets_table(c, &t, md);
         if (!st) st = write_plotdata(c, &t, d, name);
@@ -954,11 +1049,13 @@ static int write_all(ctx *c)
     }
     if (!st) {
         fprintf(md, "## All datasets\n\nRows of every dataset pooled per bucket and variant "
-                    "(a variant's ratio uses only the cgal rows of the datasets in which it "
-                    "has rows in that bucket); %zu deletions, %zu rows.\n\n",
+                    "(a variant's ratio uses only the cgal rows, and its cost relative to "
+                    "insert only the insert rows, of the datasets in which it has rows in that "
+                    "bucket); %zu deletions, %zu rows.\n\n",
                 all.total_deletions, all.rows);
         write_time_table(c, &all, md);
         write_mismatches(c, &all, (size_t)-1, md);
+        write_insert_table(c, &all, md);
         st = write_phases(c, &all, (size_t)-1, md, NULL);
         if (!st) write_tets_table(c, &all, md);
         if (!st) st = write_plotdata(c, &all, (size_t)-1, ALL_NAME);

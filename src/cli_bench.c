@@ -14,6 +14,17 @@
  * triangulation is compared too.  A mismatch is counted and written in the
  * match column (0); it is a bug.
  *
+ * The "insert" row: after the deletion rows of a vertex, one more row
+ * with variant name "insert" times our engine's re-insertion of it, the
+ * cost a deletion is measured against (target: deleting costs at most 2x
+ * re-inserting, at every degree).  Each repetition deletes the vertex
+ * untimed (dd_delete, default strategy) and times dd_reinsert alone; same
+ * repetition rule and median as the other rows.  Its match column is 1 iff
+ * the local canonical hash around the neighbours after the re-insertion
+ * equals the one taken on the intact DT(S) before the vertex's rows ran (a
+ * broken insertion is a mismatch); tets_created and the phases are empty.
+ * Counting builds write no insert row.
+ *
  * Phases: counting builds (build/count/dtdel) write only the engine rows,
  * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
  * copies those phase columns into its own rows (same seed, same sample).
@@ -106,6 +117,43 @@ static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, u
     if (!bad) *h = dd_canonical_hash(a, n);
     free(a);
     return bad;
+}
+
+/* The insert row hashes the engine's triangulation like an engine row. */
+static const row insert_row = {"insert", ROW_ENGINE};
+
+/* Median of us[0..reps-1], reps > 0; sorts us. */
+static double median_us(double *us, int reps)
+{
+    qsort(us, (size_t)reps, sizeof *us, cmp_dbl);
+    return reps % 2 ? us[reps / 2] : 0.5 * (us[reps / 2 - 1] + us[reps / 2]);
+}
+
+/* The "insert" row of vertex v (see the top): 0, or -1 when a deletion or
+ * re-insertion failed (dd_errmsg(t) says why).  *med: median µs of the
+ * re-insertions; *match: the local hash after the first re-insertion
+ * equals pre (pre_ok: pre could be computed). */
+static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, uint64_t pre, int pre_ok,
+                       double *med, int *match)
+{
+    double us[5], spent = 0;
+    int reps = 0;
+    *match = 0;
+    while (reps < 5 && (reps == 0 || spent < 2e-3)) {
+        if (dd_delete(t, v, NULL) != DD_OK) return -1;
+        double t0 = now_seconds();
+        dd_status st = dd_reinsert(t, v);
+        double t1 = now_seconds();
+        if (st != DD_OK) return -1;
+        us[reps++] = 1e6 * (t1 - t0);
+        spent += t1 - t0;
+        if (reps == 1) {
+            uint64_t h = 0;
+            *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
+        }
+    }
+    *med = median_us(us, reps);
+    return 0;
 }
 
 static int full_equal(const row *r, dd_tri *t, dd_cgal *g, dd_cgal *ref)
@@ -203,8 +251,10 @@ int cmd_bench(int argc, char **argv)
             used[v] = 1;
             uint32_t deg = dd_degree(t, v), hull = (uint32_t)dd_on_hull(t, v);
             uint32_t nnb = dd_neighbors(t, v, nb, np);
-            uint64_t refh = 0;
-            int have_ref = 0;
+            uint64_t refh = 0, pre = 0;
+            int have_ref = 0, skipped = 0;
+            /* the engine's local hash on the intact DT(S), for the insert row */
+            int pre_ok = !counting && !local_hash(&insert_row, t, NULL, nb, nnb, &pre);
             for (size_t ri = 0; ri < nr; ri++) {
                 const row *r = &rows[ri];
                 if (counting && r->kind != ROW_ENGINE) continue;
@@ -231,7 +281,7 @@ int cmd_bench(int argc, char **argv)
                     if (row_reinsert(r, t, g, v)) { bad = 1; break; }
                 }
                 if (bad) {
-                    if (r->kind == ROW_CGAL) break;    /* CGAL refuses: skip the vertex */
+                    if (r->kind == ROW_CGAL) { skipped = 1; break; }   /* CGAL refuses: skip the vertex */
                     fprintf(stderr, "dtdel bench: %s %u: %s failed on vertex %u: %s\n", c->dataset, np, r->name, v,
                             r->kind == ROW_ENGINE ? dd_errmsg(t) : "");
                     mismatches++;
@@ -240,8 +290,7 @@ int cmd_bench(int argc, char **argv)
                 if (r->kind == ROW_CGAL) { refh = h; have_ref = 1; }
                 int match = counting ? 1 : have_ref && h == refh;
                 if (!match) mismatches++;
-                qsort(us, (size_t)reps, sizeof *us, cmp_dbl);
-                double med = reps % 2 ? us[reps / 2] : 0.5 * (us[reps / 2 - 1] + us[reps / 2]);
+                double med = median_us(us, reps);
                 fprintf(csv, "%s,%u,%u,%u,%u,%s,%.3f,", c->dataset, np, v, deg, hull, r->name, med);
                 if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st.tets_created);
                 const phase_row *pr = counting ? NULL : find_phase(ph, nph, np, v, r->name);
@@ -252,6 +301,18 @@ int cmd_bench(int argc, char **argv)
                 else
                     fprintf(csv, ",,,,");
                 fprintf(csv, ",%d\n", match);
+            }
+            if (!counting && !skipped) {
+                double med;
+                int match;
+                if (time_insert(t, v, nb, nnb, pre, pre_ok, &med, &match)) {
+                    fprintf(stderr, "dtdel bench: %s %u: insert row failed on vertex %u: %s\n", c->dataset, np, v,
+                            dd_errmsg(t));
+                    mismatches++;
+                } else {
+                    if (!match) mismatches++;
+                    fprintf(csv, "%s,%u,%u,%u,%u,insert,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull, med, match);
+                }
             }
             done_work += 1.0;
             double el = now_seconds() - t_start;

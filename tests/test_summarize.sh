@@ -2,7 +2,9 @@
 # build/summarize on a small CSV whose statistics are worked out by hand:
 # exact medians, quartiles (linear interpolation), ratios to cgal, mismatch
 # counts, bucket boundaries, column order, the gnuplot data lines, and the
-# exit codes and messages on malformed input.  Prints ok/FAIL lines.
+# exit codes and messages on malformed input, and the "insert" row (our
+# re-insertion, not a deletion): last column, no ratio to cgal, and the
+# "Deletion vs re-insertion" table.  Prints ok/FAIL lines.
 SUM=${1:-build/summarize}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -42,9 +44,16 @@ H=dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,locate_us,conf
 #   cgal 100 300 -> 200 (150-250); grr-edge 50 150 -> 100 (75-125) x2.00,
 #   tets 7 8 -> 7.5, one mismatch; zeta-x 400 400 -> x0.50, one mismatch.
 # grr-edge over all 7 rows: link 1..7 -> 4, us median 16.
-# Dataset other: cgal 1000 and grr-edge 500 at degree 20, no mismatch.
+# insert (not a deletion, last column, never a ratio to cgal):
+#   [4,8) us 2 4 6 8 10 -> 6 (4-8); vs insert: sew-full 9/6 = x1.50,
+#   grr-edge 12/6 = x2.00, zeta-x none.  [16,24) us 20 30 -> 25 (22.5-27.5);
+#   grr-edge 100/25 = x4.00, zeta-x 400/25 = x16.00, sew-full none.
+# Dataset other: cgal 1000, cgal-rnd 800 (x1.25, not in the insert table),
+# grr-edge 500 and insert 60 (x8.33, a mismatch) at degree 20.
 # Pooled [16,24): grr-edge 50 150 500 -> 150 against cgal 100 300 1000
 # -> 300: x2.00; zeta-x (toy only) against toy's cgal 200: x0.50.
+# insert pooled 20 30 60 -> 30 (25-45): grr-edge 150/30 = x5.00; zeta-x
+# (toy only) against toy's insert 25: x16.00 (not 400/30 = x13.33).
 # Dataset edges: cgal only, one row per bucket boundary.
 cat >"$tmp/toy.csv" <<EOF
 $H
@@ -67,8 +76,16 @@ toy,1000,6,20,0,grr-edge,50,7,6,,2,1.5,0
 toy,1000,7,23,0,grr-edge,150,8,7,,2,1.5,1
 toy,1000,6,20,0,zeta-x,400,,,,,,1
 toy,1000,7,23,0,zeta-x,400,,,,,,0
+toy,1000,1,5,0,insert,2,,,,,,1
+toy,1000,2,6,0,insert,4,,,,,,1
+toy,1000,3,7,1,insert,6,,,,,,1
+toy,1000,4,5,0,insert,8,,,,,,1
+toy,1000,5,4,0,insert,10,,,,,,1
+toy,1000,6,20,0,insert,20,,,,,,1
+toy,1000,7,23,0,insert,30,,,,,,1
 EOF
-printf '%s\r\nother,50,9,20,1,grr-edge,500,9,,,,,1\r\nother,50,9,20,1,cgal,1000,,,,,,1\r\n\r\n' "$H" >"$tmp/other.csv"
+printf '%s\r\nother,50,9,20,1,grr-edge,500,9,,,,,1\r\nother,50,9,20,1,cgal,1000,,,,,,1\r\n' "$H" >"$tmp/other.csv"
+printf 'other,50,9,20,1,cgal-rnd,800,,,,,,1\r\nother,50,9,20,1,insert,60,,,,,,0\r\n\r\n' >>"$tmp/other.csv"
 cat >"$tmp/edges.csv" <<EOF
 $H
 edges,2000,1,3,0,cgal,1,,,,,,1
@@ -83,19 +100,32 @@ printf 'machine: testbox\ncgal: 9.9\n' >"$tmp/out1/meta.txt"
 expect runs 0 "MISMATCHES in toy: 2" "$SUM" "$tmp/out1" "$tmp/toy.csv" "$tmp/other.csv" "$tmp/edges.csv"
 md=$tmp/out1/summary.md
 has meta-line "$md" "- **machine**: testbox"
-has column-order "$md" "| degree | deletions | cgal | sew-full | grr-edge | zeta-x |"
-has bucket-4-8 "$md" "| [4,8) | 5 | 30.0 (20.0–40.0) | 9.00 (7.50–12.0) ×3.33 [3 rows] | 12.0 (8.00–16.0) ×2.50 | — |"
-has bucket-16-24 "$md" "| [16,24) | 2 | 200 (150–250) | — | 100 (75.0–125) ×2.00 | 400 (400–400) ×0.50 |"
-has mismatch-row "$md" "| **mismatches** | 2 | 0 | 0 | **1** | **1** |"
+has column-order "$md" "| degree | deletions | cgal | sew-full | grr-edge | zeta-x | insert |"
+has bucket-4-8 "$md" "| [4,8) | 5 | 30.0 (20.0–40.0) | 9.00 (7.50–12.0) ×3.33 [3 rows] | 12.0 (8.00–16.0) ×2.50 | — | 6.00 (4.00–8.00) |"
+has bucket-16-24 "$md" "| [16,24) | 2 | 200 (150–250) | — | 100 (75.0–125) ×2.00 | 400 (400–400) ×0.50 | 25.0 (22.5–27.5) |"
+has mismatch-row "$md" "| **mismatches** | 2 | 0 | 0 | **1** | **1** | 0 |"
 has mismatch-loud "$md" "**MISMATCHES: 2** deletions differ from CGAL's canonical form (a bug): grr-edge 1; zeta-x 1;"
 has mismatch-listed "$md" "- MISMATCH toy n=1000 vertex=7 degree=23 variant=zeta-x ($tmp/toy.csv:20)"
 has mismatch-zero "$md" "mismatches: 0"
-has mismatch-total "$md" "**MISMATCHES: 2 in total** -- see the datasets below."
+has mismatch-total "$md" "**MISMATCHES: 3 in total** -- see the datasets below."
+has mismatch-insert "$md" "**MISMATCHES: 1** deletions differ from CGAL's canonical form (a bug): insert 1; (the insert rows count re-insertions that did not restore the triangulation)"
 has phase-row "$md" "| grr-edge | 7 | 4.00 | — | 2.00 | 1.50 | 16.0 |"
 has tets-header "$md" "| degree | grr-edge |"
 has tets-row "$md" "| [16,24) | 7.5 |"
-has crlf-dataset "$md" "| [16,24) | 1 | 1000 (1000–1000) | 500 (500–500) ×2.00 |"
-has pooled-ratio "$md" "| [16,24) | 3 | 300 (200–650) | — | 150 (100–325) ×2.00 | 400 (400–400) ×0.50 [2 rows] |"
+has crlf-dataset "$md" "| [16,24) | 1 | 1000 (1000–1000) | 800 (800–800) ×1.25 | 500 (500–500) ×2.00 | 60.0 (60.0–60.0) |"
+has pooled-ratio "$md" "| [16,24) | 3 | 300 (200–650) | 800 (800–800) ×1.25 [1 rows] | — | 150 (100–325) ×2.00 | 400 (400–400) ×0.50 [2 rows] | 30.0 (25.0–45.0) |"
+# Deletion vs re-insertion: engine deletion variants only (no cgal, cgal-rnd, insert)
+has ins-sentence "$md" "Deletion vs re-insertion: median µs of our engine re-inserting the deleted vertex (insert), and per deletion variant its median deletion time divided by that (×2.00: deleting costs twice re-inserting; lower is better, target ≤ 2)."
+has ins-header "$md" "| degree | insert µs | sew-full | grr-edge | zeta-x |"
+has ins-4-8 "$md" "| [4,8) | 6.00 | ×1.50 | ×2.00 | — |"
+has ins-16-24 "$md" "| [16,24) | 25.0 | — | ×4.00 | ×16.00 |"
+has ins-other-header "$md" "| degree | insert µs | grr-edge |"
+has ins-other "$md" "| [16,24) | 60.0 | ×8.33 |"
+has ins-pooled "$md" "| [16,24) | 30.0 | — | ×5.00 | ×16.00 |"
+has ins-none "$md" "Deletion vs re-insertion: no insert rows in this dataset."
+# one such table per dataset with insert rows (toy, other) and the pooled one
+nins=$(grep -c "^| degree | insert µs |" "$md")
+if [ "$nins" -eq 3 ]; then ok ins-tables; else bad ins-tables "$nins insert tables, expected 3"; fi
 for b in "[0,4)" "[8,12)" "[12,16)" "[1024,1536)" "[1536,2048)"; do
     has "bucket-$b" "$md" "| $b | 1 | 1.00 (1.00–1.00) |"
 done
@@ -109,14 +139,15 @@ has dat-grr-edge-4-8 "$pd/toy.dat" "5.5 12 8 16 2.5 30 3 NaN 2 1.5 4 8 5 0"
 has dat-grr-edge-16-24 "$pd/toy.dat" "19.5 100 75 125 2 7.5 6.5 NaN 2 1.5 16 24 2 1"
 has dat-cgal "$pd/toy.dat" "5.5 30 20 40 1 NaN NaN NaN NaN NaN 4 8 5 0"
 has dat-pooled-zeta "$pd/all-datasets.dat" "19.5 400 400 400 0.5 NaN NaN NaN NaN NaN 16 24 2 1"
+has dat-insert-no-ratio "$pd/toy.dat" "5.5 6 4 8 NaN NaN NaN NaN NaN NaN 4 8 5 0"
 # block i of toy.dat is variant i of toy.variants
 blocks=$(awk '/^# variant /{ printf "%s ", $3 }' "$pd/toy.dat")
-if [ "$blocks" = "cgal sew-full grr-edge zeta-x " ] &&
+if [ "$blocks" = "cgal sew-full grr-edge zeta-x insert " ] &&
    [ "$(tr '\n' ' ' <"$pd/toy.variants")" = "$blocks" ]; then ok variants-file; else
     bad variants-file "blocks \"$blocks\", variants \"$(tr '\n' ' ' <"$pd/toy.variants")\""; fi
 nblank=$(awk 'prev == "" && $0 == "" { n++ } { prev = $0 } END { print n + 0 }' "$pd/toy.dat")
-if [ "$nblank" -eq 3 ]; then ok block-separators; else
-    bad block-separators "$nblank double blank lines, expected 3"; fi
+if [ "$nblank" -eq 4 ]; then ok block-separators; else
+    bad block-separators "$nblank double blank lines, expected 4"; fi
 has phases-file "$pd/toy.phases" "grr-edge 4 NaN 2 1.5 16"
 if [ "$(tr '\n' ' ' <"$pd/datasets.txt")" = "toy other edges " ]; then ok datasets-list; else
     bad datasets-list "got $(tr '\n' ' ' <"$pd/datasets.txt")"; fi
