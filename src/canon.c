@@ -7,7 +7,7 @@
  * on the triangulation, never on cell storage order, so it is the key for
  * comparing with CGAL.
  */
-#include "mesh.h"
+#include "delete.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -52,11 +52,15 @@ void dd_get_counters(const dd_tri *t, dd_counters *c)
 {
     memset(c, 0, sizeof *c);
 #ifdef DD_COUNTERS
-    c->orient_calls = t->pred.orient_calls;
-    c->orient_exact = t->pred.orient_exact;
-    c->insphere_calls = t->pred.insphere_calls;
-    c->insphere_exact = t->pred.insphere_exact;
-    c->perturbed = t->pred.perturbed;
+    /* the triangulation's own tests, plus its deletions' conflict DT */
+    const dd_pred *p[2] = {&t->pred, t->del && t->del->qdt ? &t->del->qdt->pred : NULL};
+    for (int i = 0; i < 2 && p[i]; i++) {
+        c->orient_calls += p[i]->orient_calls;
+        c->orient_exact += p[i]->orient_exact;
+        c->insphere_calls += p[i]->insphere_calls;
+        c->insphere_exact += p[i]->insphere_exact;
+        c->perturbed += p[i]->perturbed;
+    }
 #endif
     c->tets_created = t->tets_created;
     c->walk_steps = t->walk_steps;

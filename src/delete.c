@@ -12,6 +12,7 @@
  */
 #include "delete.h"
 #include "grr.h"
+#include "qsmall.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,6 +31,7 @@ void dd_delete_ctx_free(dd_del *d)
     free(d->qdt_vcell);
     dd_free(d->qdt);
     dd_grr_free(d->grr);
+    dd_qs_free(d->qs);
     if (d->vscratch_free) d->vscratch_free(d->vscratch);
     free(d);
 }

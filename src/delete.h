@@ -53,6 +53,7 @@ typedef struct dd_del {
     uint32_t vmark_cap, vepoch;
 
     struct dd_grr *grr;   /* GRR-CONSTRUCT scratch (grr.c), lazily made   */
+    struct dd_qs *qs;     /* compact conflict DT (qsmall.c), lazily made  */
     void *vscratch;       /* a strategy's own scratch, kept across calls  */
     void (*vscratch_free)(void *);
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */

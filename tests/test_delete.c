@@ -294,6 +294,36 @@ int main(int argc, char **argv)
         single_deletions(&st, "grid-343-x1e16", p, np, k, 78, 1);
         free(p);
     }
+    /* Near-cospherical points at graded distances from the unit sphere
+     * (radius times 1 + 10^-e * [-1,1)), and uniform points scaled to the
+     * edges of the range where the compact conflict DT's filter answers
+     * (qsmall.c: 1e-55 <= m <= 1e55): the filter must abstain whenever
+     * its error bound says so.                                           */
+    for (int e = 8; e <= 15; e++) {
+        uint32_t np;
+        double *p = gen("sphere", small ? 300 : 800, &np);
+        tl_rng r = {0x51ED2700u + (uint64_t)e};
+        for (uint32_t i = 0; i < np; i++) {
+            double f = 1 + pow(10, -e) * (2 * tl_unif(&r) - 1);
+            for (int c = 0; c < 3; c++) p[3 * i + c] *= f;
+        }
+        char name[64];
+        snprintf(name, sizeof name, "sphere-%u-radial-1e-%d", np, e);
+        single_deletions(&st, name, p, np, k / 2, 90 + (uint64_t)e, 1);
+        free(p);
+    }
+    {
+        const double scale[] = {1e-56, 1e-54, 1e54, 1e56};
+        for (int i = 0; i < 4; i++) {
+            uint32_t np;
+            double *p = gen("uniform", 500, &np);
+            for (uint32_t j = 0; j < 3 * np; j++) p[j] *= scale[i];
+            char name[64];
+            snprintf(name, sizeof name, "uniform-%u-x%g", np, scale[i]);
+            single_deletions(&st, name, p, np, k / 2, 95 + (uint64_t)i, 1);
+            free(p);
+        }
+    }
     /* hull vertex with coplanar finite neighbours: a 5x5 grid, one point
      * above its centre, one below a corner                                 */
     {

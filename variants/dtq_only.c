@@ -8,7 +8,7 @@
  * vertex, so it destroys at least one link triangle).  Robust (only the
  * exact conflict test is used) and O(size of the link) per point.
  */
-#include "../src/delete.h"
+#include "../src/qsmall.h"
 
 static dd_status dtq_only_fill(dd_del *d)
 {
@@ -16,6 +16,7 @@ static dd_status dtq_only_fill(dd_del *d)
     dd_del_shuffle(d, d->order.a, d->order.n);
     s = dd_del_pick_base(d, d->order.a, d->order.n);
     if (s != DD_OK) return s;
+    if (d->order.n <= DD_QS_MAXV) return dd_qs_fill(d);
     dd_qdt_reset(d, 1);
     DD_PHASE_BEGIN(d);
     s = dd_qdt_create(d);
