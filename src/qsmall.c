@@ -18,7 +18,8 @@
 #define QS_QD   63u
 #define QS_DEAD 255u
 #define QS_NONE 0xFFFFu
-#define QS_MAXC 16383u            /* 4 * cell + facet fits in 16 bits   */
+#define QS_MAXC 16000u            /* cells; 4 * cell + facet + 1 fits in
+                                     16 bits, spare cell included      */
 
 typedef struct qs_cell {
     uint8_t v[4];
@@ -29,8 +30,8 @@ struct dd_qs {
     double pt[64][3];             /* local vertex -> point (QS_QD: q)   */
     double lift[64][4];           /* (x - q, |x - q|^2), rounded; QS_QD: 0 */
     double lift_err;              /* the filter's error bound, 0: off    */
-    uint16_t edge[64 * 64];       /* a*64+b, a<b -> facet awaiting its
-                                     partner, QS_NONE when none         */
+    uint16_t edge[64 * 64];       /* a*64+b, a<b -> 1 + facet awaiting its
+                                     partner, 0 when none               */
     qs_cell *c;
     uint32_t *stamp;
     uint16_t *stack, *conflict, *boundary;
@@ -50,7 +51,6 @@ static dd_status qs_get(dd_del *d, struct dd_qs **out)
     if (!s) {
         s = calloc(1, sizeof *s);
         if (!s) return DD_ERR_NOMEM;
-        memset(s->edge, 0xFF, sizeof s->edge);
         d->qs = s;
     }
     *out = s;
@@ -66,7 +66,7 @@ static dd_status qs_reserve(struct dd_qs *s, uint32_t k)
     uint32_t cap = s->cap ? s->cap : 256;
     while (cap < need) cap *= 2;
     if (cap > QS_MAXC) cap = QS_MAXC;
-    qs_cell *c = realloc(s->c, cap * sizeof *c);
+    qs_cell *c = realloc(s->c, (cap + 1) * sizeof *c);   /* + the spare */
     if (!c) return DD_ERR_NOMEM;
     s->c = c;
     uint32_t *st = realloc(s->stamp, cap * sizeof *st);
@@ -157,30 +157,54 @@ static double det4_rows(const double *r[4], const double *p)
     return ((m01 * n23 - m02 * n13) + (m03 * n12 + m12 * n03)) - (m13 * n02 - m23 * n01);
 }
 
-/* dd_cell_conflict on a compact cell: the filter above, else the same
- * predicates on the same points in the same order, so the same answer.   */
-static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
+/* The exact test, on the points in dd_cell_conflict's order. */
+static int qs_conflict_exact(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
 {
     const uint8_t *v = s->c[c].v;
-    const double *q[4], *l[4];
+    const double *q[4];
     int k = -1, kd = -1;
     for (int i = 0; i < 4; i++) {
-        if (v[i] == QS_INF) { k = i; q[i] = l[i] = NULL; continue; }
+        if (v[i] == QS_INF) { k = i; q[i] = NULL; continue; }
         if (v[i] == QS_QD) kd = i;
         q[i] = s->pt[v[i]];
-        l[i] = s->lift[v[i]];
     }
     if (kd >= 0) {               /* dummy cell: swap the first two others */
         int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
         const double *t = q[a]; q[a] = q[b]; q[b] = t;
-        t = l[a]; l[a] = l[b]; l[b] = t;
         if (k == a) k = b; else if (k == b) k = a;
     }
     if (k >= 0) return dd_inf_conflict(pr, q, k, s->pt[x]) > 0;
-    double det = det4_rows(l, s->lift[x]);
+    return dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], s->pt[x]) > 0;
+}
+
+/* 1 if one of the four bytes of w is 62 or 63 (QS_INF, QS_QD) or 255
+ * (QS_DEAD): the bytes with bits 0x3E all set.                           */
+static inline uint32_t qs_outer_bytes(uint32_t w)
+{
+    uint32_t y = (w & 0x3E3E3E3Eu) ^ 0x3E3E3E3Eu;
+    return (y - 0x01010101u) & ~y & 0x80808080u;
+}
+
+/* dd_cell_conflict on a compact cell: the filter above, else the same
+ * predicates on the same points in the same order, so the same answer.
+ * A dummy cell (a,b,c,QD) is tested as (b,a,c,q): one row swap, so the
+ * determinant of the stored order with lift[QD] = lift[q] = 0, negated. */
+static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
+{
+    const uint8_t *v = s->c[c].v;
+    uint32_t w;
+    memcpy(&w, v, 4);
+    double sign = 1;
+    if (qs_outer_bytes(w)) {
+        if (v[0] == QS_INF || v[1] == QS_INF || v[2] == QS_INF || v[3] == QS_INF)
+            return qs_conflict_exact(s, pr, c, x);
+        sign = -1;
+    }
+    const double *l[4] = {s->lift[v[0]], s->lift[v[1]], s->lift[v[2]], s->lift[v[3]]};
+    double det = sign * det4_rows(l, s->lift[x]);
     if (det < -s->lift_err) return 1;      /* negative: inside */
     if (det > s->lift_err) return 0;
-    return dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], s->pt[x]) > 0;
+    return qs_conflict_exact(s, pr, c, x);
 }
 
 /* Lifts the points 0..n-1 and q, and sets the filter's bound. */
@@ -210,6 +234,10 @@ static dd_status qs_fill_star(struct dd_qs *s, uint32_t nb, uint32_t nc, uint32_
     static const uint8_t edge_of[4][4][2] = {
         {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
         {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+    /* Edge slots hold facet + 1 (0: empty).  Branch-free matching: the
+     * first facet of an edge is glued to the spare cell s->cap (its
+     * entry is overwritten when the partner comes), the second to the
+     * first.                                                             */
     int open = 0;
     for (uint32_t b = 0; b < nb; b++) {
         uint32_t f = s->boundary[b], i = f & 3;
@@ -223,13 +251,15 @@ static dd_status qs_fill_star(struct dd_qs *s, uint32_t nb, uint32_t nc, uint32_
             if (j == i) continue;
             uint32_t a = nc_->v[edge_of[i][j][0]], e = nc_->v[edge_of[i][j][1]];
             uint16_t *slot = &s->edge[a < e ? 64 * a + e : 64 * e + a];
-            if (*slot == QS_NONE) { *slot = (uint16_t)(4 * n + j); open++; }
-            else { qs_glue(s, 4 * n + j, *slot); *slot = QS_NONE; open--; }
+            uint32_t o = *slot, g = o ? o - 1 : 4 * s->cap;
+            qs_glue(s, 4 * n + j, g);
+            *slot = (uint16_t)(o ? 0 : 4 * n + j + 1);
+            open += o ? -1 : 1;
         }
     }
     for (uint32_t k = 0; k < nc; k++) qs_kill(s, s->conflict[k]);
     if (open) {                  /* cannot happen for a valid cavity */
-        memset(s->edge, 0xFF, sizeof s->edge);
+        memset(s->edge, 0, sizeof s->edge);
         return DD_ERR_INTERNAL;
     }
     return DD_OK;
@@ -352,6 +382,27 @@ static dd_status qs_export(dd_del *d, struct dd_qs *s)
     memset(s->stamp, 0, s->cap * sizeof *s->stamp);
     x->tets_created = s->created;
     return DD_OK;
+}
+
+void dd_qs_order_nearest(dd_del *d)
+{
+    uint32_t *a = d->order.a;
+    size_t n = d->order.n;
+    double key[DD_QS_MAXV];
+    const double *q = d->qp;
+    for (size_t k = 0; k < n && k < DD_QS_MAXV; k++) {
+        const double *p = dd_pt(d->t, a[k]);
+        double x = p[0] - q[0], y = p[1] - q[1], z = p[2] - q[2];
+        key[k] = x * x + y * y + z * z;
+    }
+    for (size_t i = 1; i < n && i < DD_QS_MAXV; i++) {      /* insertion sort: n is small */
+        double kv = key[i];
+        uint32_t v = a[i];
+        size_t j = i;
+        for (; j > 0 && key[j - 1] > kv; j--) { key[j] = key[j - 1]; a[j] = a[j - 1]; }
+        key[j] = kv;
+        a[j] = v;
+    }
 }
 
 dd_status dd_qs_fill(dd_del *d)
