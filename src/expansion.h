@@ -64,4 +64,9 @@ int dd_orient3d_exp_staged(const double *p, const double *q, const double *r,
 int dd_insphere_exp_staged(const double *p, const double *q, const double *r,
                            const double *s, const double *t, int *stage);
 
+/* w = |x - q|^2 - 2 (x - q).c within 2u |w| (exact expansion, rounded);
+ * |x - q| and |c| must stay below 2^160.  The compact conflict DT's
+ * shifted lifts (qsmall.c).                                              */
+double dd_exp_shifted_lift(const double *x, const double *q, const double *c);
+
 #endif

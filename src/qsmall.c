@@ -10,6 +10,9 @@
  * neighbour references.
  */
 #include "qsmall.h"
+#include "expansion.h"
+
+#include <math.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -29,7 +32,10 @@ typedef struct qs_cell {
 struct dd_qs {
     double pt[64][3];             /* local vertex -> point (QS_QD: q)   */
     double lift[64][4];           /* (x - q, |x - q|^2), rounded; QS_QD: 0 */
-    double lift_err;              /* the filter's error bound, 0: off    */
+    double lift_err;              /* the filter's error bound (+inf: off) */
+    double lift_m;                /* max |x_k - q_k| over the cavity      */
+    uint32_t nlift, nexact;       /* points lifted; exact tests so far    */
+    int shifted;                  /* the shifted lifts were tried         */
     uint16_t edge[64 * 64];       /* a*64+b, a<b -> 1 + facet awaiting its
                                      partner, 0 when none               */
     qs_cell *c;
@@ -185,6 +191,45 @@ static inline uint32_t qs_outer_bytes(uint32_t w)
     return (y - 0x01010101u) & ~y & 0x80808080u;
 }
 
+/* Shifted lifts, for nearly cospherical cavities (points sampled on a
+ * sphere), where every determinant is tiny next to m^5 and the plain
+ * filter always abstains.  Replacing the fourth column by
+ *     w'[x] = |x - q|^2 - 2 (x - q).C
+ * for any fixed C subtracts multiples of the first three columns: the
+ * determinant is unchanged.  With C the centre (relative to q) of the
+ * sphere through q and points 0, 1, 2, w' is about the distance of x from
+ * that sphere, far below m^2.  Each w' is computed from its exact
+ * expansion within 4u |w'|, so with M = max |w'| the entries of column 3
+ * are at most 2M with errors at most 10u M; with the 6u of columns 0-2
+ * and the 10u of the evaluation, the error is below
+ *     21u * 24 * (2m)^3 * 2M < 9e-13 m^3 M,
+ * and the filter answers only when |det| > 5e-12 m^3 M (and that bound
+ * is at least 1e-290: underflow negligible).  Kept only when it is
+ * tighter than the plain bound.  Tried once per deletion, after the
+ * fourth exact fallback.                                                 */
+static void qs_shift(struct dd_qs *s)
+{
+    s->shifted = 1;
+    const double *a = s->lift[0], *b = s->lift[1], *c = s->lift[2], *q = s->pt[QS_QD];
+    double bc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
+    double ca[3] = {c[1] * a[2] - c[2] * a[1], c[2] * a[0] - c[0] * a[2], c[0] * a[1] - c[1] * a[0]};
+    double ab[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]), C[3];
+    for (int i = 0; i < 3; i++) {
+        C[i] = (a[3] * bc[i] + b[3] * ca[i] + c[3] * ab[i]) / den;
+        if (!(fabs(C[i]) <= 1e50)) return;         /* also NaN, inf */
+    }
+    double w[DD_QS_MAXV], M = 0, m = s->lift_m;
+    for (uint32_t k = 0; k < s->nlift; k++) {
+        w[k] = dd_exp_shifted_lift(s->pt[k], q, C);
+        if (fabs(w[k]) > M) M = fabs(w[k]);
+    }
+    double err = 5e-12 * m * m * m * M;
+    if (!(err >= 1e-290 && err < s->lift_err)) return;
+    for (uint32_t k = 0; k < s->nlift; k++) s->lift[k][3] = w[k];
+    s->lift_err = err;
+}
+
 /* dd_cell_conflict on a compact cell: the filter above, else the same
  * predicates on the same points in the same order, so the same answer.
  * A dummy cell (a,b,c,QD) is tested as (b,a,c,q): one row swap, so the
@@ -204,6 +249,7 @@ static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
     double det = sign * det4_rows(l, s->lift[x]);
     if (det < -s->lift_err) return 1;      /* negative: inside */
     if (det > s->lift_err) return 0;
+    if (++s->nexact == 4 && !s->shifted) qs_shift(s);
     return qs_conflict_exact(s, pr, c, x);
 }
 
@@ -224,6 +270,10 @@ static void qs_lift(struct dd_qs *s, uint32_t n)
     memset(s->lift[QS_QD], 0, sizeof s->lift[QS_QD]);
     /* Outside the range (or NaN): +inf, so the filter never answers. */
     s->lift_err = m >= 1e-55 && m <= 1e55 ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
+    s->lift_m = m;
+    s->nlift = n;
+    s->nexact = 0;
+    s->shifted = !(m >= 1e-55 && m <= 1e55);
 }
 
 /* The star of local vertex x over the boundary facets s->boundary[0..nb)

@@ -31,6 +31,7 @@
 #include "expansion.h"
 
 #include <math.h>
+#include <mpfr.h>
 #include <time.h>
 
 typedef struct tally {
@@ -485,6 +486,52 @@ static void bench(dd_pred *pr)
 
 /* ---- main ------------------------------------------------------------------- */
 
+/* dd_exp_shifted_lift against MPFR at 2000 bits (exact here): within
+ * 2u of |w|, on nearly cospherical points where w cancels to ~1e-16 of
+ * its terms, on random ones, and on exact zeros.                         */
+static void shifted_lift(tl_state *st, tl_rng *r, long rounds)
+{
+    long bad = 0, zeros = 0;
+    double worst = 0;
+    mpfr_t X, W, T, C2;
+    mpfr_inits2(2000, X, W, T, C2, (mpfr_ptr)0);
+    for (long i = 0; i < rounds; i++) {
+        double x[3], q[3], c[3];
+        int kind = (int)(i % 3);
+        for (int k = 0; k < 3; k++) {
+            q[k] = 2 * tl_unif(r) - 1;
+            c[k] = kind == 2 ? 0.0 : 2 * tl_unif(r) - 1;
+        }
+        if (kind == 0) {       /* x on the sphere of centre q + c through q */
+            double d[3], n = 0;
+            for (int k = 0; k < 3; k++) { d[k] = 2 * tl_unif(r) - 1; n += d[k] * d[k]; }
+            double rad = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+            for (int k = 0; k < 3; k++) x[k] = q[k] + c[k] + rad * d[k] / sqrt(n);
+        } else {
+            for (int k = 0; k < 3; k++) x[k] = kind == 2 && i % 6 == 5 ? q[k] : 2 * tl_unif(r) - 1;
+        }
+        mpfr_set_zero(W, 1);
+        for (int k = 0; k < 3; k++) {      /* W += X (X - 2c), X = x - q */
+            mpfr_set_d(X, x[k], MPFR_RNDN);
+            mpfr_sub_d(X, X, q[k], MPFR_RNDN);
+            mpfr_set_d(C2, c[k], MPFR_RNDN);
+            mpfr_mul_2ui(C2, C2, 1, MPFR_RNDN);
+            mpfr_sub(T, X, C2, MPFR_RNDN);
+            mpfr_mul(T, T, X, MPFR_RNDN);
+            mpfr_add(W, W, T, MPFR_RNDN);
+        }
+        double v = dd_exp_shifted_lift(x, q, c);
+        mpfr_sub_d(T, W, v, MPFR_RNDN);
+        double err = fabs(mpfr_get_d(T, MPFR_RNDN)), w = fabs(mpfr_get_d(W, MPFR_RNDN));
+        if (w == 0) zeros++;
+        if (err > 0x1p-52 * w) bad++;
+        else if (w > 0 && err / w > worst) worst = err / w;
+    }
+    mpfr_clears(X, W, T, C2, (mpfr_ptr)0);
+    tl_check(st, bad == 0 && zeros > 0, "expansion/shifted-lift-within-2u",
+             "%ld of %ld beyond 2u |w| (%ld exact zeros, worst within: %.2g)", bad, rounds, zeros, worst);
+}
+
 int main(int argc, char **argv)
 {
     tl_state st = {0, 0};
@@ -504,6 +551,10 @@ int main(int argc, char **argv)
         big_sphere = four_square_sphere(&rs, (1LL << 26) + 4321, 600);
     }
     if (do_bench) bench(&pr);
+    {
+        tl_rng rl = {777};
+        shifted_lift(&st, &rl, small ? 20000 : 200000);
+    }
 
     tl_rng r = {20240611};
     long per_kind = small ? 10000 : 100000;   /* 10 kinds: 10^5 or 10^6 tuples */
