@@ -5,6 +5,7 @@
 #   2. build/dtdel bench        -> results/<dataset>.csv (timings, phases merged)
 #   3. build/summarize          -> results/summary.md, results/plotdata/
 #   4. scripts/plots.sh         -> results/*.png
+#   (2b. build/dtdel bench --reps 1 on uniform, sphere, bunny -> results/cold/)
 mode=${1:-full}
 scale=${2:-1}
 set -e
@@ -25,6 +26,14 @@ build/count/dtdel bench --mode "$mode" --scale "$scale" --out results/phases
 echo "bench ($mode): timings with the release build" >&2
 rc=0
 build/dtdel bench --mode "$mode" --scale "$scale" --out results --phases results/phases || rc=$?
+# Cold pass: every deletion timed once (--reps 1), so neither CGAL nor we
+# run with branch predictors and caches trained by the repetitions of the
+# same deletion: results/cold/summary.md, low-degree datasets only.
+mkdir -p results/cold
+for ds in uniform sphere bunny; do
+    build/dtdel bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out results/cold || rc=$?
+done
+build/summarize results/cold results/cold/*.csv
 n=1000000
 [ "$mode" = quick ] && n=200000
 build/dtdel build-bench "$n" >results/build.txt || rc=$?

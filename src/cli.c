@@ -269,11 +269,13 @@ static const command commands[] = {
      "mismatch.", cmd_check},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
-    {"bench", "bench [--mode quick|full] [--scale F] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
+    {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
      "The deletion benchmark (make bench runs it): every row (dtdel variants)\n"
      "on the mode's datasets, each deletion timed alone and compared with\n"
      "CGAL's result; one CSV per dataset in DIR (default results/).  --scale\n"
      "multiplies the number of deletions per case (larger runs: --scale 4).\n"
+     "--reps R (1-5, default 5): repetitions per timing, the median kept;\n"
+     "--reps 1 times only first runs (cold branch predictors and caches).\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
      "--phases DIR merges such a run's phase columns into this one.", cmd_bench},
     {"build-bench", "build-bench [N] [--dataset NAME] [--seed S]",

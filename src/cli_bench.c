@@ -134,12 +134,12 @@ static double median_us(double *us, int reps)
  * re-insertions; *match: the local hash after the first re-insertion
  * equals pre (pre_ok: pre could be computed). */
 static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, uint64_t pre, int pre_ok,
-                       double *med, int *match)
+                       int max_reps, double *med, int *match)
 {
     double us[5], spent = 0;
     int reps = 0;
     *match = 0;
-    while (reps < 5 && (reps == 0 || spent < 2e-3)) {
+    while (reps < max_reps && (reps == 0 || spent < 2e-3)) {
         if (dd_delete(t, v, NULL) != DD_OK) return -1;
         double t0 = now_seconds();
         dd_status st = dd_reinsert(t, v);
@@ -173,6 +173,7 @@ int cmd_bench(int argc, char **argv)
     const char *mode = "full", *outdir = "results", *phasedir = NULL, *only = NULL;
     uint64_t seed = 1;
     double scale = 1.0;
+    int max_reps = 5;
     int counting = 0;
 #ifdef DD_COUNTERS
     counting = 1;
@@ -182,6 +183,12 @@ int cmd_bench(int argc, char **argv)
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) outdir = argv[++i];
         else if (!strcmp(argv[i], "--phases") && i + 1 < argc) phasedir = argv[++i];
         else if (!strcmp(argv[i], "--dataset") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
+            char *end;
+            long r = strtol(argv[++i], &end, 10);
+            if (*end || r < 1 || r > 5) return usage_error("bench", "--reps wants 1 to 5, got '%s'", argv[i]);
+            max_reps = (int)r;
+        }
         else if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
             char *end;
             scale = strtod(argv[++i], &end);
@@ -265,7 +272,7 @@ int cmd_bench(int argc, char **argv)
                 int hashed = 0;
                 dd_delete_stats st;
                 memset(&st, 0, sizeof st);
-                while (reps < 5 && (reps == 0 || spent < 2e-3) && !bad) {
+                while (reps < max_reps && (reps == 0 || spent < 2e-3) && !bad) {
                     double t0 = now_seconds();
                     bad = row_delete(r, t, g, v, seed + it + (uint64_t)reps);
                     double t1 = now_seconds();
@@ -305,7 +312,7 @@ int cmd_bench(int argc, char **argv)
             if (!counting && !skipped) {
                 double med;
                 int match;
-                if (time_insert(t, v, nb, nnb, pre, pre_ok, &med, &match)) {
+                if (time_insert(t, v, nb, nnb, pre, pre_ok, max_reps, &med, &match)) {
                     fprintf(stderr, "dtdel bench: %s %u: insert row failed on vertex %u: %s\n", c->dataset, np, v,
                             dd_errmsg(t));
                     mismatches++;

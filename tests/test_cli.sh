@@ -50,6 +50,8 @@ expect tets-collinear 1 "collinear" "$DTDEL" tets "$tmp/line.xyz"
 expect tets-coplanar 1 "coplanar" "$DTDEL" tets "$tmp/plane.xyz"
 expect tets-empty 1 "at least 4 distinct points, got 0" "$DTDEL" tets "$tmp/empty.xyz"
 expect tets-off-truncated 1 "short.off" "$DTDEL" tets "$tmp/short.off"
+expect bench-reps-zero 2 "reps wants 1 to 5" "$DTDEL" bench --reps 0
+expect bench-reps-six 2 "reps wants 1 to 5, got .6." "$DTDEL" bench --reps 6
 expect tets-off-bad-count 1 "badcount.off:2" "$DTDEL" tets "$tmp/badcount.off"
 expect tets-duplicate-note 0 "1 duplicate point" "$DTDEL" tets "$tmp/withdup.xyz"
 expect gen-unknown 2 "unknown dataset" "$DTDEL" gen nosuchset 10
