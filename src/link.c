@@ -107,8 +107,7 @@ static int link_conflict(dd_del *d, uint32_t a, uint32_t b, uint32_t c, const do
         else pts[i] = dd_pt(t, v[i]);
     }
     pts[3] = d->qp;
-    if (k < 0) return dd_insphere_perturbed(&t->pred, pts[0], pts[1], pts[2], pts[3], w) > 0;
-    return dd_inf_conflict(&t->pred, pts, k, w) > 0;
+    return dd_points_conflict(&t->pred, pts, k, -1, w);
 }
 
 /* Is the ear (r[a], r[b], r[c]) of the ring r[0..k) (only the positions in

@@ -269,6 +269,17 @@ void dd_make_first_cells(dd_tri *t, uint32_t v[4])
 
 /* ---- predicates on cells ------------------------------------------------- */
 
+int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const double *p)
+{
+    if (kd >= 0) {               /* dummy cell: swap the first two others */
+        int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
+        const double *s = q[a]; q[a] = q[b]; q[b] = s;
+        if (k == a) k = b; else if (k == b) k = a;
+    }
+    if (k < 0) return dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], p) > 0;
+    return dd_inf_conflict(pr, q, k, p) > 0;
+}
+
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 {
     const uint32_t *v = t->tv + 4 * (size_t)c;
@@ -279,13 +290,7 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
         else if (v[i] == DD_QD) { kd = i; q[i] = t->qd_point; }
         else q[i] = dd_pt(t, v[i]);
     }
-    if (kd >= 0) {               /* dummy cell: swap the first two others */
-        int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
-        const double *s = q[a]; q[a] = q[b]; q[b] = s;
-        if (k == a) k = b; else if (k == b) k = a;
-    }
-    if (k < 0) return dd_insphere_perturbed(&t->pred, q[0], q[1], q[2], q[3], p) > 0;
-    return dd_inf_conflict(&t->pred, q, k, p) > 0;
+    return dd_points_conflict(&t->pred, q, k, kd, p);
 }
 
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
@@ -388,10 +393,6 @@ dd_status dd_reserve_edge_hash(dd_tri *t, size_t nfacets)
  * holding v and ab is its neighbour.  Matched through the edge hash.     */
 void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v)
 {
-    /* edge_of[i][j]: the two positions other than i and j (i != j). */
-    static const uint8_t edge_of[4][4][2] = {
-        {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
-        {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
     uint32_t mask = t->ehash_mask, gen = t->ehash_gen;
     dd_edge_slot *hash = t->ehash;
     for (size_t k = 0; k < ncells; k++) {
@@ -400,7 +401,7 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
         uint32_t i = (uint32_t)dd_index_of(t, n, v);
         for (uint32_t j = 0; j < 4; j++) {
             if (j == i) continue;
-            uint32_t a = w[edge_of[i][j][0]], b = w[edge_of[i][j][1]];
+            uint32_t a = w[dd_edge_of[i][j][0]], b = w[dd_edge_of[i][j][1]];
             uint64_t key = a < b ? ((uint64_t)a << 32 | b) : ((uint64_t)b << 32 | a);
             uint32_t h = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
             for (;; h = (h + 1) & mask) {

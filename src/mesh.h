@@ -48,6 +48,12 @@
  * order CGAL's side_of_sphere uses for an infinite vertex at i).         */
 static const int dd_facet[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
 
+/* dd_edge_of[i][j] (i != j): the two positions other than i and j, the
+ * edge that facet j of a cell shares with facet i.                       */
+static const uint8_t dd_edge_of[4][4][2] = {
+    {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
+    {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+
 /* A slot of the edge hash used to glue the cells of a star together. */
 typedef struct dd_edge_slot {
     uint64_t key;      /* (min vertex << 32) | max vertex                 */
@@ -202,6 +208,10 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
  * two other vertices swapped (paper 4.1: (a,b,c,q_d) is tested as the
  * ordinary cell (b,a,c,q)).                                               */
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+/* The same rule on the cell's points q[0..3] (q[k] ignored: k is the
+ * infinite vertex's position or -1; kd the dummy vertex's or -1, with
+ * q[kd] = q's point).  q is permuted.                                    */
+int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const double *p);
 
 /* Visibility walk from cell `start` towards p; stops in a finite cell whose
  * closure holds p, or in the first outer cell entered (which p sees).     */

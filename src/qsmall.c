@@ -163,24 +163,18 @@ static double det4_rows(const double *r[4], const double *p)
     return ((m01 * n23 - m02 * n13) + (m03 * n12 + m12 * n03)) - (m13 * n02 - m23 * n01);
 }
 
-/* The exact test, on the points in dd_cell_conflict's order. */
+/* The exact test: dd_cell_conflict's rule on the cell's points. */
 static int qs_conflict_exact(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
 {
     const uint8_t *v = s->c[c].v;
     const double *q[4];
     int k = -1, kd = -1;
     for (int i = 0; i < 4; i++) {
-        if (v[i] == QS_INF) { k = i; q[i] = NULL; continue; }
-        if (v[i] == QS_QD) kd = i;
-        q[i] = s->pt[v[i]];
+        if (v[i] == QS_INF) k = i;
+        else if (v[i] == QS_QD) kd = i;
+        q[i] = v[i] == QS_INF ? NULL : s->pt[v[i]];
     }
-    if (kd >= 0) {               /* dummy cell: swap the first two others */
-        int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
-        const double *t = q[a]; q[a] = q[b]; q[b] = t;
-        if (k == a) k = b; else if (k == b) k = a;
-    }
-    if (k >= 0) return dd_inf_conflict(pr, q, k, s->pt[x]) > 0;
-    return dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], s->pt[x]) > 0;
+    return dd_points_conflict(pr, q, k, kd, s->pt[x]);
 }
 
 /* 1 if one of the four bytes of w is 62 or 63 (QS_INF, QS_QD) or 255
@@ -281,9 +275,6 @@ static void qs_lift(struct dd_qs *s, uint32_t n)
  * boundary is not a closed surface (then nothing usable is left).        */
 static dd_status qs_fill_star(struct dd_qs *s, uint32_t nb, uint32_t nc, uint32_t x)
 {
-    static const uint8_t edge_of[4][4][2] = {
-        {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
-        {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
     /* Edge slots hold facet + 1 (0: empty).  Branch-free matching: the
      * first facet of an edge is glued to the spare cell s->cap (its
      * entry is overwritten when the partner comes), the second to the
@@ -299,7 +290,7 @@ static dd_status qs_fill_star(struct dd_qs *s, uint32_t nb, uint32_t nc, uint32_
         qs_glue(s, 4 * n + i, src->n[i]);
         for (uint32_t j = 0; j < 4; j++) {
             if (j == i) continue;
-            uint32_t a = nc_->v[edge_of[i][j][0]], e = nc_->v[edge_of[i][j][1]];
+            uint32_t a = nc_->v[dd_edge_of[i][j][0]], e = nc_->v[dd_edge_of[i][j][1]];
             uint16_t *slot = &s->edge[a < e ? 64 * a + e : 64 * e + a];
             uint32_t o = *slot, g = o ? o - 1 : 4 * s->cap;
             qs_glue(s, 4 * n + j, g);
