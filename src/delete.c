@@ -43,8 +43,7 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
     if (!d) {
         d = calloc(1, sizeof *d);
         if (!d) return DD_ERR_NOMEM;
-        d->t = t;
-        d->rng = 0x853C49E6748FEA9Bull;
+        d->t = t;            /* d->rng: seeded by each deletion */
         if (dd_tri_alloc_borrowed(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
         t->del = d;
     }

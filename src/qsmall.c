@@ -41,13 +41,14 @@ struct dd_qs {
     qs_cell *c;
     uint32_t *stamp;
     uint16_t *stack, *conflict, *boundary;
+    uint32_t *map;                /* export: cell -> fill index or NONE  */
     uint32_t cap, ncell, free_head, epoch, created;
 };
 
 void dd_qs_free(struct dd_qs *s)
 {
     if (!s) return;
-    free(s->c); free(s->stamp); free(s->stack); free(s->conflict); free(s->boundary);
+    free(s->c); free(s->stamp); free(s->stack); free(s->conflict); free(s->boundary); free(s->map);
     free(s);
 }
 
@@ -63,7 +64,7 @@ static dd_status qs_get(dd_del *d, struct dd_qs **out)
     return DD_OK;
 }
 
-/* Room for k more cells than are live now (free ones count). */
+/* Room for k more cells than ncell (free cells are not counted). */
 static dd_status qs_reserve(struct dd_qs *s, uint32_t k)
 {
     uint32_t need = s->ncell + k;
@@ -85,6 +86,9 @@ static dd_status qs_reserve(struct dd_qs *s, uint32_t k)
     s->conflict = b;
     if (!(e = realloc(s->boundary, 4 * cap * sizeof *e))) return DD_ERR_NOMEM;
     s->boundary = e;
+    uint32_t *mp = realloc(s->map, cap * sizeof *mp);
+    if (!mp) return DD_ERR_NOMEM;
+    s->map = mp;
     memset(s->stamp + s->cap, 0, (cap - s->cap) * sizeof *st);
     s->cap = cap;
     return DD_OK;
@@ -402,25 +406,22 @@ static dd_status qs_export(dd_del *d, struct dd_qs *s)
     dd_qdt_reset(d, 1);
     uint32_t nfill = 0;
     for (uint32_t c = 0; c < s->ncell; c++)
-        if (s->c[c].v[0] != QS_DEAD && !qs_has(&s->c[c], QS_QD)) s->stamp[c] = nfill++;
-        else s->stamp[c] = UINT32_MAX;
-    s->epoch = 0;                /* stamps reused as the cell map */
+        s->map[c] = s->c[c].v[0] != QS_DEAD && !qs_has(&s->c[c], QS_QD) ? nfill++ : UINT32_MAX;
     dd_status st = dd_reserve_cells(x, nfill);
     if (st == DD_OK) st = dd_vec_reserve(&d->fill, nfill);
     if (st != DD_OK) return st;
     const uint32_t *gid = d->order.a;
     for (uint32_t c = 0; c < s->ncell; c++) {
-        if (s->stamp[c] == UINT32_MAX) continue;
+        if (s->map[c] == UINT32_MAX) continue;
         uint32_t m = dd_new_cell(x);
         const qs_cell *a = &s->c[c];
         for (uint32_t i = 0; i < 4; i++) {
             x->tv[4 * (size_t)m + i] = a->v[i] == QS_INF ? DD_INF : gid[a->v[i]];
-            uint32_t f = a->n[i], g = s->stamp[f >> 2];
+            uint32_t f = a->n[i], g = s->map[f >> 2];
             x->tn[4 * (size_t)m + i] = g == UINT32_MAX ? DD_NONE : 4 * g + (f & 3);
         }
         d->fill.a[d->fill.n++] = m;
     }
-    memset(s->stamp, 0, s->cap * sizeof *s->stamp);
     x->tets_created = s->created;
     return DD_OK;
 }

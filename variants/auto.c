@@ -14,11 +14,14 @@
 
 #define AUTO_GRR_FROM_DEGREE 40
 
+/* Below the crossover every neighbour set fits the compact structure. */
+_Static_assert(AUTO_GRR_FROM_DEGREE <= DD_QS_MAXV + 1, "auto: degree crossover above the compact DT's size");
+
 extern const dd_variant dd_variant_grr_hashing;
 
 static dd_status auto_fill(dd_del *d)
 {
-    if (d->degree >= AUTO_GRR_FROM_DEGREE || d->order.n > DD_QS_MAXV)
+    if (d->degree >= AUTO_GRR_FROM_DEGREE)
         return dd_variant_grr_hashing.fill_cavity(d);
     dd_qs_order_nearest(d);
     dd_status s = dd_del_pick_base(d, d->order.a, d->order.n);
