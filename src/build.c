@@ -5,11 +5,19 @@
  * collinear and coplanar sets), the BRIO + Hilbert insertion order, the
  * first tetrahedron, and the incremental loop (mesh.c inserts).
  *
- * Order: the kept points are shuffled with a fixed seed, then split into
- * rounds growing by a factor of 8 (the smallest about 64 points) and each
- * round is sorted along a 3D Hilbert curve (Skilling's transform on 16 bits
- * per axis), as CGAL's spatial_sort and geogram do.  The result depends only
- * on the point set (the perturbed DT is unique), not on this order.
+ * Duplicates: an open-addressing hash on the exact coordinates (-0.0 as
+ * +0.0) maps each input to the first input holding the same point.
+ *
+ * Order: each kept point draws its BRIO round from a hash of its input
+ * index with a fixed seed: rounds grow by a factor of 8 (the last holds
+ * about 7/8 of the points, the one before 7/64, ..., the first about 64
+ * points or fewer).  Insertion goes round by round, smallest first, each
+ * round along a 3D Hilbert curve (Skilling's transform on 16 bits per axis)
+ * of the kept points' bounding box, as CGAL's spatial_sort and geogram do.
+ * Round and Hilbert index form one 52-bit key, so a single sequential pass
+ * over the coordinates and one LSD radix sort give the whole order; it is
+ * a deterministic function of the input.  The result depends only on the
+ * point set (the perturbed DT is unique), not on this order.
  */
 #include "mesh.h"
 
@@ -18,38 +26,109 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* ---- hashing ------------------------------------------------------------- */
+
+/* splitmix64's finaliser: a bijection of 64-bit words, every output bit
+ * depending on every input bit.                                            */
+static uint64_t mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* Hash of the exact coordinates; -0.0 hashes as +0.0, since dd_lex_cmp
+ * holds them equal.  Each coordinate goes through mix64: coordinates that
+ * differ only in their high bits (grids) must not collide early.          */
+static uint64_t hash_point(const double *p)
+{
+    uint64_t h = 0;
+    for (int c = 0; c < 3; c++) {
+        double x = p[c] == 0 ? 0.0 : p[c];
+        uint64_t bits;
+        memcpy(&bits, &x, sizeof bits);
+        h = mix64(h ^ bits);
+    }
+    return h;
+}
+
 /* ---- Hilbert order ------------------------------------------------------- */
 
-/* Skilling's transform: axes -> transposed Hilbert index, b bits per axis. */
-static uint64_t hilbert_key(uint32_t x[3], int b)
+/* Spreads the low 16 bits of v to bits 0, 3, 6, ..., 45. */
+static uint64_t spread3(uint64_t v)
 {
-    uint32_t m = 1u << (b - 1);
-    for (uint32_t q = m; q > 1; q >>= 1) {
-        uint32_t p = q - 1;
-        for (int i = 0; i < 3; i++) {
-            if (x[i] & q) x[0] ^= p;
-            else { uint32_t s = (x[0] ^ x[i]) & p; x[0] ^= s; x[i] ^= s; }
-        }
+    v &= 0xFFFF;
+    v = (v | v << 16) & 0x0000FF0000FFull;
+    v = (v | v << 8) & 0x00F00F00F00Full;
+    v = (v | v << 4) & 0x0C30C30C30C3ull;
+    v = (v | v << 2) & 0x249249249249ull;
+    return v;
+}
+
+/* Skilling's transform: axes -> Hilbert index, b <= 16 bits per axis, the
+ * bits of x[0] most significant in each triple.  Branch-free on scalars
+ * (the axes' bits are unpredictable, and an array would keep the chain of
+ * updates of x0 in memory).                                               */
+static uint64_t hilbert_key(const uint32_t x[3], int b)
+{
+    uint32_t x0 = x[0], x1 = x[1], x2 = x[2];
+    for (uint32_t q = 1u << (b - 1); q > 1; q >>= 1) {
+        /* axis i: bit q set -> invert the low bits of x0, else swap them
+         * between x0 and xi                                              */
+        uint32_t p = q - 1, hit, s;
+        x0 ^= p & (0u - ((x0 & q) != 0));
+        hit = 0u - ((x1 & q) != 0);
+        s = (x0 ^ x1) & p & ~hit;
+        x0 ^= (p & hit) | s;
+        x1 ^= s;
+        hit = 0u - ((x2 & q) != 0);
+        s = (x0 ^ x2) & p & ~hit;
+        x0 ^= (p & hit) | s;
+        x2 ^= s;
     }
-    x[1] ^= x[0];
-    x[2] ^= x[1];
-    uint32_t s = 0;
-    for (uint32_t q = m; q > 1; q >>= 1)
-        if (x[2] & q) s ^= q - 1;
-    for (int i = 0; i < 3; i++) x[i] ^= s;
-    uint64_t key = 0;
-    for (int bit = b - 1; bit >= 0; bit--)
-        for (int i = 0; i < 3; i++) key = (key << 1) | ((x[i] >> bit) & 1u);
-    return key;
+    /* Gray decode */
+    x1 ^= x0;
+    x2 ^= x1;
+    uint32_t t = 0;
+    for (uint32_t q = 1u << (b - 1); q > 1; q >>= 1)
+        t ^= (q - 1) & (0u - ((x2 & q) != 0));
+    x0 ^= t;
+    x1 ^= t;
+    x2 ^= t;
+    return spread3(x0) << 2 | spread3(x1) << 1 | spread3(x2);
 }
 
 typedef struct keyed { uint64_t key; uint32_t id; } keyed;
 
-/* Sorts ids[0..n) along the Hilbert curve of their bounding box (LSD radix
- * sort on the 48-bit key, 16 bits a pass).                                */
-static dd_status hilbert_sort(const double *pts, uint32_t *ids, uint32_t n)
+/* Composite key: BRIO round in bits 48..51 (at most 10 rounds for 32-bit
+ * n), Hilbert index in bits 0..47; radix-sorted 13 bits a pass.           */
+#define KEY_BITS 52
+#define DIGIT_BITS 13
+#define NDIGIT (1u << DIGIT_BITS)
+#define NPASS (KEY_BITS / DIGIT_BITS)
+#define BRIO_SEED 0x243F6A8885A308D3ull
+
+/* BRIO round of input i among rounds 0..depth: depth with probability 7/8,
+ * depth - 1 with 7/64, ..., 0 with 8^-depth (a leading zero octal digit
+ * of a hash of i moves the point one round earlier).                      */
+static uint64_t brio_round(uint32_t i, uint32_t depth)
+{
+    uint64_t r = mix64(BRIO_SEED + ((uint64_t)i + 1) * 0x9E3779B97F4A7C15ull);
+    uint32_t level = 0;
+    while (level < depth && ((r >> (61 - 3 * level)) & 7u) == 0) level++;
+    return depth - level;
+}
+
+/* Reorders ids[0..n) (ascending input indices) into BRIO rounds, smallest
+ * first, each along the Hilbert curve of the kept points' bounding box.
+ * One sequential pass over the coordinates, then an LSD radix sort of
+ * (round << 48 | hilbert, id), stable.  Cost O(n), 32n bytes of scratch. */
+static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
 {
     if (n < 2) return DD_OK;
+    /* as many factor-8 rounds as take n down to 64 points or fewer */
+    uint32_t depth = 0;
+    for (uint32_t hi = n; hi > 64; hi /= 8) depth++;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (uint32_t k = 0; k < n; k++) {
         const double *p = pts + 3 * (size_t)ids[k];
@@ -62,8 +141,9 @@ static dd_status hilbert_sort(const double *pts, uint32_t *ids, uint32_t n)
     for (int c = 0; c < 3; c++) if (hi[c] - lo[c] > ext) ext = hi[c] - lo[c];
     double scale = ext > 0 && isfinite(65535.0 / ext) ? 65535.0 / ext : 0.0;
     keyed *a = malloc(2 * (size_t)n * sizeof *a);
-    uint32_t *count = malloc(65536 * sizeof *count);
+    uint32_t *count = calloc((size_t)NPASS * NDIGIT, sizeof *count);
     if (!a || !count) { free(a); free(count); return DD_ERR_NOMEM; }
+    keyed *const buf = a;
     keyed *b = a + n;
     for (uint32_t k = 0; k < n; k++) {
         const double *p = pts + 3 * (size_t)ids[k];
@@ -72,76 +152,57 @@ static dd_status hilbert_sort(const double *pts, uint32_t *ids, uint32_t n)
             double q = (p[c] - lo[c]) * scale;
             x[c] = q <= 0 ? 0 : q >= 65535.0 ? 65535u : (uint32_t)q;
         }
-        a[k].key = hilbert_key(x, 16);
+        uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, 16);
+        a[k].key = key;
         a[k].id = ids[k];
+        for (uint32_t d = 0; d < NPASS; d++)
+            count[d * NDIGIT + ((key >> (d * DIGIT_BITS)) & (NDIGIT - 1))]++;
     }
-    for (int shift = 0; shift < 48; shift += 16) {
-        memset(count, 0, 65536 * sizeof *count);
-        for (uint32_t k = 0; k < n; k++) count[(a[k].key >> shift) & 0xFFFF]++;
+    for (uint32_t d = 0; d < NPASS; d++) {
+        uint32_t shift = d * DIGIT_BITS, *cnt = count + d * NDIGIT;
+        if (cnt[(a[0].key >> shift) & (NDIGIT - 1)] == n) continue; /* one digit */
         uint32_t sum = 0;
-        for (uint32_t d = 0; d < 65536; d++) { uint32_t c = count[d]; count[d] = sum; sum += c; }
-        for (uint32_t k = 0; k < n; k++) b[count[(a[k].key >> shift) & 0xFFFF]++] = a[k];
+        for (uint32_t v = 0; v < NDIGIT; v++) { uint32_t c = cnt[v]; cnt[v] = sum; sum += c; }
+        for (uint32_t k = 0; k < n; k++) b[cnt[(a[k].key >> shift) & (NDIGIT - 1)]++] = a[k];
         keyed *tmp = a; a = b; b = tmp;
     }
-    /* after 3 passes the sorted data is in the buffer that started as b */
     for (uint32_t k = 0; k < n; k++) ids[k] = a[k].id;
-    free(a < b ? a : b);
+    free(buf);
     free(count);
     return DD_OK;
 }
 
-/* BRIO: shuffle, then Hilbert-sort rounds [n/8, n), [n/64, n/8), ... */
-static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
-{
-    uint64_t r = 0x243F6A8885A308D3ull;
-    for (uint32_t k = n; k > 1; k--) {
-        r ^= r << 13; r ^= r >> 7; r ^= r << 17;
-        uint32_t j = (uint32_t)((r >> 33) % k);
-        uint32_t tmp = ids[k - 1]; ids[k - 1] = ids[j]; ids[j] = tmp;
-    }
-    uint32_t hi = n;
-    while (hi > 64) {
-        uint32_t lo = hi / 8;
-        dd_status s = hilbert_sort(pts, ids + lo, hi - lo);
-        if (s != DD_OK) return s;
-        hi = lo;
-    }
-    return hilbert_sort(pts, ids, hi);
-}
-
 /* ---- validation and duplicates ------------------------------------------- */
 
-typedef struct lexpt { double x[3]; uint32_t id; } lexpt;
-
-static int cmp_lexpt(const void *a, const void *b)
-{
-    const lexpt *p = a, *q = b;
-    int c = dd_lex_cmp(p->x, q->x);
-    return c ? c : (p->id < q->id ? -1 : p->id > q->id);
-}
-
 /* first[i] = the smallest input index holding the same point as input i;
- * writes the kept inputs (first[i] == i, ascending) to ids[0..*nkept).    */
+ * writes the kept inputs (first[i] == i, ascending) to ids[0..*nkept).
+ * Open addressing with linear probing on a table of kept ids, at most
+ * half full; the inputs are scanned in order, so the id found for a point
+ * is its first occurrence.  Cost O(n) expected.                           */
 static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first,
                        uint32_t *ids, uint32_t *nkept)
 {
-    lexpt *a = malloc((size_t)(n ? n : 1) * sizeof *a);
-    if (!a) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-    for (uint32_t i = 0; i < n; i++) {
-        memcpy(a[i].x, pts + 3 * (size_t)i, sizeof a[i].x);
-        a[i].id = i;
-    }
-    qsort(a, n, sizeof *a, cmp_lexpt);
-    for (uint32_t k = 0; k < n; k++) {
-        if (k > 0 && dd_lex_cmp(a[k].x, a[k - 1].x) == 0)
-            first[a[k].id] = first[a[k - 1].id];
-        else
-            first[a[k].id] = a[k].id;
-    }
-    free(a);
+    size_t cap = 16;
+    while (cap < 2 * (size_t)n) cap <<= 1;
+    uint32_t *slot = malloc(cap * sizeof *slot);
+    if (!slot) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    memset(slot, 0xFF, cap * sizeof *slot); /* empty = UINT32_MAX > any id */
+    size_t mask = cap - 1;
     uint32_t m = 0;
-    for (uint32_t i = 0; i < n; i++)
-        if (first[i] == i) ids[m++] = i;
+    for (uint32_t i = 0; i < n; i++) {
+        const double *p = pts + 3 * (size_t)i;
+        size_t h = (size_t)hash_point(p) & mask;
+        while (slot[h] != UINT32_MAX && dd_lex_cmp(pts + 3 * (size_t)slot[h], p) != 0)
+            h = (h + 1) & mask;
+        if (slot[h] == UINT32_MAX) {
+            slot[h] = i;
+            first[i] = i;
+            ids[m++] = i;
+        } else {
+            first[i] = slot[h];
+        }
+    }
+    free(slot);
     *nkept = m;
     return DD_OK;
 }
@@ -224,6 +285,7 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     dd_make_first_cells(t, first4);
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_vertex(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
+    dd_shrink_cells(t);     /* the reserve above was a guess */
     *out = t;
     return DD_OK;
 }

@@ -43,9 +43,14 @@ int dd_is_vertex(const dd_tri *t, uint32_t i)
 
 size_t dd_memory_bytes(const dd_tri *t)
 {
-    return (size_t)t->cap_c * (9 * sizeof(uint32_t))
+    /* cells: tv, tn, stamp; vertices: xyz, vcell, v2in; inputs: in2v;
+     * insertion scratch: the three vectors, the edge hash and table      */
+    return (size_t)t->cap_c * (8 * sizeof(uint32_t) + sizeof(dd_mark))
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
-         + (size_t)t->cap_in * sizeof(uint32_t);
+         + (size_t)t->cap_in * sizeof(uint32_t)
+         + (t->stack.cap + t->conflict.cap + t->boundary.cap) * sizeof(uint32_t)
+         + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
+         + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0);
 }
 
 void dd_get_counters(const dd_tri *t, dd_counters *c)

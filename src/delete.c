@@ -96,7 +96,8 @@ void dd_phase_end(dd_del *d, int phase)
 static dd_status collect_star(dd_del *d)
 {
     dd_tri *t = d->t;
-    uint32_t q = d->q, ep = dd_new_epoch(t, 1);
+    uint32_t q = d->q;
+    dd_mark ep = dd_new_epoch(t, 1);
     if (++d->vepoch == 0) {
         memset(d->vmark, 0, (size_t)d->vmark_cap * sizeof *d->vmark);
         d->vepoch = 1;
@@ -180,7 +181,7 @@ dd_status dd_qdt_create(dd_del *d)
     uint32_t b[4];
     memcpy(b, d->base, sizeof b);
     dd_make_first_cells(x, b);
-    uint32_t ep = dd_new_epoch(x, 2);
+    dd_mark ep = dd_new_epoch(x, 2);
     x->conflict.n = x->boundary.n = 0;
     for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
         if (!dd_cell_conflict(x, c, d->qp)) {
@@ -294,14 +295,14 @@ static dd_status sew(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
     size_t nf = d->fill.n;
-    uint32_t epx = dd_new_epoch(x, 1);
+    dd_mark epx = dd_new_epoch(x, 1);
     for (size_t k = 0; k < nf; k++) x->stamp[d->fill.a[k]] = epx;
     dd_status s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
     if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
     if (s != DD_OK) return s;
     /* Match every boundary facet of the fill with its link triangle; check
      * that each link triangle is met exactly once.  No change yet.        */
-    uint32_t ep = dd_new_epoch(t, 1);
+    dd_mark ep = dd_new_epoch(t, 1);
     size_t matched = 0;
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k];

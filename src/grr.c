@@ -186,7 +186,7 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
     const double *pp = dd_pt(x, p);
     uint32_t c0 = x->vcell[g];
     if (c0 >= x->ncell || x->tv[4 * (size_t)c0] == DD_DEAD || dd_index_of(x, c0, g) < 0) return DD_NONE;
-    uint32_t ep = dd_new_epoch(x, 1);
+    dd_mark ep = dd_new_epoch(x, 1);
     gr->walk.n = 0;
     x->stamp[c0] = ep;
     if (dd_vec_push(&gr->walk, c0) != DD_OK) return DD_NONE;

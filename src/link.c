@@ -28,6 +28,7 @@ void dd_link_free(dd_link *l)
     free(l->lv); free(l->ln); free(l->ltri); free(l->deg);
     free(l->ring); free(l->ring_tri); free(l->ring_out); free(l->newtri);
     free(l->rpos); free(l->rmark);
+    dd_trihash_free(&l->slot);
     dd_free(l->scratch);
     memset(l, 0, sizeof *l);
 }
@@ -61,14 +62,15 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
             return DD_ERR_NOMEM;
         l->ring_cap = (uint32_t)r;
     }
-    /* Star slot of a cell, through its stamp: base + slot. */
-    uint32_t base = dd_new_epoch(t, n);
-    for (uint32_t k = 0; k < n; k++) t->stamp[d->star.a[k]] = base + k;
-    for (uint32_t k = 0; k < n; k++) {
-        uint32_t c = d->star.a[k];
+    /* Star slot of a cell, through its link triangle: {a, b, c} -> slot. */
+    dd_status s = dd_trihash_reset(&l->slot, n);
+    for (uint32_t k = 0; k < n && s == DD_OK; k++) {
+        uint32_t c = d->star.a[k], *w = l->lv + 3 * k;
         int i = dd_index_of(t, c, d->q);
-        for (int m = 0; m < 3; m++) l->lv[3 * k + (uint32_t)m] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
+        for (int m = 0; m < 3; m++) w[m] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
+        s = dd_trihash_put(&l->slot, w[0], w[1], w[2], k);
     }
+    if (s != DD_OK) return s;
     for (size_t j = 0; j < d->nbr.n; j++) l->deg[d->nbr.a[j]] = 0;
     for (uint32_t k = 0; k < n; k++) {
         uint32_t c = d->star.a[k];
@@ -77,12 +79,15 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
             /* across the edge opposite lv[3k+m]: the star cell across the
              * cell facet opposite that vertex                              */
             uint32_t nb = t->tn[4 * (size_t)c + (uint32_t)dd_facet[i][m]] >> 2;
-            uint32_t s = t->stamp[nb] - base;
-            if (s >= n) return DD_ERR_INTERNAL;
+            int inb = dd_index_of(t, nb, d->q);
+            if (inb < 0) return DD_ERR_INTERNAL;
+            const uint32_t *u = t->tv + 4 * (size_t)nb;
+            uint32_t sl = dd_trihash_get(&l->slot, u[inb == 0], u[inb <= 1 ? 2 : 1], u[inb <= 2 ? 3 : 2]);
+            if (sl >= n) return DD_ERR_INTERNAL;
             uint32_t x = l->lv[3 * k + (m + 1) % 3], y = l->lv[3 * k + (m + 2) % 3];
             uint32_t j = 0;
-            while (j < 3 && (l->lv[3 * s + j] == x || l->lv[3 * s + j] == y)) j++;
-            l->ln[3 * k + m] = 3 * s + j;
+            while (j < 3 && (l->lv[3 * sl + j] == x || l->lv[3 * sl + j] == y)) j++;
+            l->ln[3 * k + m] = 3 * sl + j;
             uint32_t w = l->lv[3 * k + m];
             if (w != DD_INF) { l->deg[w]++; l->ltri[w] = k; }
         }
@@ -231,7 +236,7 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
                 seed = c;
     }
     if (seed == DD_NONE) return DD_ERR_INTERNAL;
-    uint32_t ep = dd_new_epoch(x, 1);
+    dd_mark ep = dd_new_epoch(x, 1);
     dd_vec *st = &x->stack;
     st->n = 0;
     x->stamp[seed] = ep;

@@ -26,6 +26,7 @@
 typedef struct dd_link {
     uint32_t *lv, *ln;
     uint32_t ntri, cap;
+    dd_trihash slot;            /* link triangle {a, b, c} -> its index  */
     uint32_t *ltri, *deg;       /* per vertex id, capacity vcap        */
     uint32_t vcap;
     /* LINKDTDELETE scratch and result */
@@ -43,8 +44,7 @@ typedef struct dd_link {
 
 void dd_link_free(dd_link *l);
 
-/* Builds the link of d->q from its star (delete.h); O(degree).  The star
- * cells' stamps are overwritten.                                         */
+/* Builds the link of d->q from its star (delete.h); O(degree).          */
 struct dd_del;
 dd_status dd_link_extract(dd_link *l, struct dd_del *d);
 

@@ -84,6 +84,7 @@ void dd_free(dd_tri *t)
     free(t->tv); free(t->tn); free(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
+    free(t->etab);
     dd_pred_clear(&t->pred);
     free(t);
 }
@@ -182,7 +183,7 @@ dd_status dd_reserve_cells(dd_tri *t, uint32_t k)
     uint64_t need = (uint64_t)t->ncell + (k - t->nfree);
     if (need <= t->cap_c) return DD_OK;
     if (need > (UINT32_MAX - 8) / 4) return DD_ERR_NOMEM;
-    uint64_t cap = t->cap_c ? t->cap_c : 64;
+    uint64_t cap = t->cap_c ? t->cap_c : need > 64 ? need : 64;   /* first: exact */
     while (cap < need) cap += cap / 2 + 1;
     if (cap > (UINT32_MAX - 8) / 4) cap = (UINT32_MAX - 8) / 4;
     uint32_t *tv = realloc(t->tv, 4 * cap * sizeof *tv);
@@ -191,12 +192,26 @@ dd_status dd_reserve_cells(dd_tri *t, uint32_t k)
     uint32_t *tn = realloc(t->tn, 4 * cap * sizeof *tn);
     if (!tn) return DD_ERR_NOMEM;
     t->tn = tn;
-    uint32_t *st = realloc(t->stamp, cap * sizeof *st);
+    dd_mark *st = realloc(t->stamp, cap * sizeof *st);
     if (!st) return DD_ERR_NOMEM;
     memset(st + t->cap_c, 0, (cap - t->cap_c) * sizeof *st);
     t->stamp = st;
     t->cap_c = (uint32_t)cap;
     return DD_OK;
+}
+
+void dd_shrink_cells(dd_tri *t)
+{
+    uint32_t cap = t->ncell ? t->ncell : 1;
+    if (cap >= t->cap_c) return;
+    /* Shrinking cannot lose data; a refused realloc keeps the old block. */
+    uint32_t *tv = realloc(t->tv, 4 * (size_t)cap * sizeof *tv);
+    if (tv) t->tv = tv;
+    uint32_t *tn = realloc(t->tn, 4 * (size_t)cap * sizeof *tn);
+    if (tn) t->tn = tn;
+    dd_mark *st = realloc(t->stamp, (size_t)cap * sizeof *st);
+    if (st) t->stamp = st;
+    if (tv && tn && st) t->cap_c = cap;
 }
 
 uint32_t dd_new_cell(dd_tri *t)
@@ -293,13 +308,30 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
     return dd_points_conflict(&t->pred, q, k, kd, p);
 }
 
+/* dd_cell_conflict with the filter inlined for finite cells (the hot
+ * test of the conflict search).                                          */
+static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
+{
+    const uint32_t *v = t->tv + 4 * (size_t)c;
+    if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
+        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
+        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
+        int f = dd_insphere_filter(&t->pred, a, b, d, e, p);
+        if (f == DD_FILTER_UNSURE) f = dd_insphere_unfiltered(&t->pred, a, b, d, e, p);
+        if (f == 0) f = dd_insphere_symbolic(&t->pred, a, b, d, e, p);
+        return f > 0;
+    }
+    return dd_cell_conflict(t, c, p);
+}
+
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
-static int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
+static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
 {
     const uint32_t *v = t->tv + 4 * (size_t)c;
     const double *q[4];
     for (int k = 0; k < 4; k++) q[k] = (k == i) ? p : dd_pt(t, v[k]);
-    return dd_orient3d(&t->pred, q[0], q[1], q[2], q[3]);
+    int f = dd_orient3d_filter(&t->pred, q[0], q[1], q[2], q[3]);
+    return f != DD_FILTER_UNSURE ? f : dd_orient3d_unfiltered(&t->pred, q[0], q[1], q[2], q[3]);
 }
 
 /* ---- point location ------------------------------------------------------ */
@@ -344,7 +376,7 @@ dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
  * not in conflict get stamp ep+1 so they are tested once.                  */
 dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
 {
-    uint32_t ep = dd_new_epoch(t, 2);
+    dd_mark ep = dd_new_epoch(t, 2), tested = (dd_mark)(ep + 1);
     t->stack.n = t->conflict.n = t->boundary.n = 0;
     t->stamp[c0] = ep;
     dd_status s = dd_vec_push(&t->stack, c0);
@@ -354,11 +386,11 @@ dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
             uint32_t nb = t->tn[4 * (size_t)c + i] >> 2;
             if (t->stamp[nb] == ep) continue;
-            if (t->stamp[nb] != ep + 1 && dd_cell_conflict(t, nb, p)) {
+            if (t->stamp[nb] != tested && cell_conflict_fast(t, nb, p)) {
                 t->stamp[nb] = ep;
                 s = dd_vec_push(&t->stack, nb);
             } else {
-                t->stamp[nb] = ep + 1;
+                t->stamp[nb] = tested;
                 s = dd_vec_push(&t->boundary, 4 * c + i);
             }
         }
@@ -420,38 +452,95 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
     }
 }
 
+/* Gluing a star through a table of oriented edges.  The facets through v
+ * of the new cells form a closed surface around v; two new cells sharing
+ * the facet (v, a, b) see it with opposite orientations, one as the cycle
+ * (v, a, b), the other as (v, b, a).  So each facet writes itself under
+ * its directed edge a->b and finds its partner under b->a: no search, no
+ * branch.  The vertices of the cavity's boundary get local numbers in
+ * vcell (tagged with STAR_TAG; vcell is rewritten for all of them when the
+ * star is done), the table is indexed by pairs of local numbers.  Local 0
+ * is DD_QD and 2 is DD_INF (w - DD_QD); larger cavities use the edge hash. */
+#define STAR_TAG  0x80000000u
+
+/* star_edge[i][j] (j != i): positions (a, b) such that facet j of a cell,
+ * in its dd_facet cyclic order, is (i, a, b).                            */
+static const uint8_t star_edge[4][4][2] = {
+    {{0, 0}, {2, 3}, {3, 1}, {1, 2}}, {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
+    {{1, 3}, {3, 0}, {0, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}, {0, 0}}};
+
+static inline uint32_t star_local(const uint32_t *vcell, uint32_t w)
+{
+    return w >= DD_QD ? w - DD_QD : vcell[w] & ~STAR_TAG;
+}
+
+/* Numbers the boundary vertices of the conflict region; returns how many
+ * local numbers are in use, or 0 when more than DD_STAR_MAXV.               */
+static uint32_t star_number_vertices(dd_tri *t)
+{
+    uint32_t nl = 3, *vc = t->vcell;
+    for (size_t b = 0; b < t->boundary.n; b++) {
+        uint32_t f = t->boundary.a[b], i = f & 3;
+        const uint32_t *w = t->tv + 4 * (size_t)(f >> 2);
+        for (uint32_t k = 0; k < 4; k++) {
+            if (k == i || w[k] >= DD_QD) continue;
+            uint32_t x = vc[w[k]], fresh = !(x & STAR_TAG);
+            vc[w[k]] = fresh ? STAR_TAG | nl : x;
+            nl += fresh;
+        }
+    }
+    return nl <= DD_STAR_MAXV ? nl : 0;
+}
+
 /* Replaces the marked conflict cells (stamp == ep) by the star of vertex v
  * over the boundary facets.  Room for the new cells and the edge hash must
  * be reserved: nothing here can fail.                                     */
 void dd_fill_star(dd_tri *t, uint32_t v)
 {
+    uint32_t nl = star_number_vertices(t), *e = t->etab, *pending = t->stack.a;
+    const uint32_t *vc = t->vcell;
+    size_t nb = t->boundary.n;
     /* One new cell per boundary facet: the conflict cell's vertices with the
-     * one opposite the facet replaced by v, glued to the outside cell.  The
+     * one opposite the facet replaced by v, glued to the outside cell.  Each
+     * of its three facets through v writes itself into the edge table and
+     * keeps the key of its partner (t->stack, 6 entries a cell).  The
      * boundary list then holds the new cells.                              */
-    for (size_t b = 0; b < t->boundary.n; b++) {
-        uint32_t f = t->boundary.a[b], c = f >> 2, i = f & 3;
+    for (size_t k = 0; k < nb; k++) {
+        uint32_t f = t->boundary.a[k], c = f >> 2, i = f & 3;
         uint32_t n = dd_new_cell(t);
         const uint32_t *src = t->tv + 4 * (size_t)c;
-        uint32_t *dst = t->tv + 4 * (size_t)n;
-        for (uint32_t k = 0; k < 4; k++) dst[k] = src[k];
+        uint32_t *dst = t->tv + 4 * (size_t)n, loc[4];
+        for (uint32_t j = 0; j < 4; j++) dst[j] = src[j];
         dst[i] = v;
         dd_glue(t, 4 * n + i, t->tn[f]);
-        t->boundary.a[b] = n;
+        t->boundary.a[k] = n;
+        if (!nl) continue;
+        for (uint32_t j = 0; j < 4; j++) loc[j] = j == i ? 0 : star_local(vc, dst[j]);
+        for (uint32_t j = 0, *p = pending + 6 * k; j < 4; j++) {
+            if (j == i) continue;
+            uint32_t a = loc[star_edge[i][j][0]], b = loc[star_edge[i][j][1]];
+            e[a * nl + b] = 4 * n + j;
+            *p++ = 4 * n + j;
+            *p++ = b * nl + a;
+        }
     }
-    dd_glue_new_cells(t, t->boundary.a, t->boundary.n, v);
-    /* Vertex links, then recycle the conflict cells. */
-    for (size_t b = 0; b < t->boundary.n; b++) {
-        uint32_t n = t->boundary.a[b];
+    if (!nl) dd_glue_new_cells(t, t->boundary.a, nb, v);
+    /* The partners, then the vertex links (which also clears the local
+     * numbers), then recycle the conflict cells.                           */
+    for (size_t k = 0; k < nb; k++) {
+        uint32_t n = t->boundary.a[k];
+        if (nl)
+            for (uint32_t r = 0, *p = pending + 6 * k; r < 3; r++, p += 2) t->tn[p[0]] = e[p[1]];
         int outer = 0;
-        for (uint32_t k = 0; k < 4; k++) {
-            uint32_t w = t->tv[4 * (size_t)n + k];
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t w = t->tv[4 * (size_t)n + j];
             if (w == DD_INF) { t->inf_cell = n; outer = 1; }
             else if (w == DD_QD) outer = 1;
             else t->vcell[w] = n;
         }
         if (!outer) t->nfinite++;
     }
-    if (t->boundary.n) t->hint = t->boundary.a[t->boundary.n - 1];
+    if (nb) t->hint = t->boundary.a[nb - 1];
     for (size_t k = 0; k < t->conflict.n; k++) {
         uint32_t c = t->conflict.a[k];
         if (!dd_is_outer_cell(t, c)) t->nfinite--;
@@ -461,8 +550,11 @@ void dd_fill_star(dd_tri *t, uint32_t v)
 
 dd_status dd_reserve_star(dd_tri *t)
 {
+    if (!t->etab && !(t->etab = malloc(DD_STAR_MAXV * DD_STAR_MAXV * sizeof *t->etab)))
+        return DD_ERR_NOMEM;
     dd_status s = dd_reserve_cells(t, (uint32_t)t->boundary.n);
     if (s == DD_OK) s = dd_reserve_edge_hash(t, t->boundary.n);
+    if (s == DD_OK) s = dd_vec_reserve(&t->stack, 6 * t->boundary.n);
     return s;
 }
 

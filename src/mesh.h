@@ -18,9 +18,11 @@
  * Dead cells have tv[4t] == DD_DEAD; they are chained in a free list
  * through tn[4t] and reused before the arrays grow.
  *
- * Marks.  stamp[t] holds an epoch; a cell is marked in the current pass
- * iff stamp[t] equals the pass's epoch.  Passes never clear marks: they
- * take fresh epochs (dd_new_epoch), O(1).
+ * Marks.  stamp[t] holds a 16-bit epoch; a cell is marked in the current
+ * pass iff stamp[t] equals the pass's epoch.  Passes never clear marks:
+ * they take fresh epochs (dd_new_epoch), O(1); when the 16 bits run out,
+ * every stamp is cleared once (O(cells) per 16000 passes or more).  Two
+ * bytes, not four: the mesh stays within 40 bytes per cell.
  *
  * Vertices.  Inside the engine a vertex is a vertex id: its position in
  * insertion order (BRIO + Hilbert), so that vertices close in space are
@@ -35,6 +37,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "dtdel.h"
 #include "pred.h"
 
@@ -53,6 +56,15 @@ static const int dd_facet[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
 static const uint8_t dd_edge_of[4][4][2] = {
     {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
     {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+
+/* Stars whose boundary has at most this many vertices (the infinite and
+ * dummy vertices count 3) are glued through a direct edge table.        */
+#define DD_STAR_MAXV 128
+
+/* A pass's mark value (see Marks above). */
+typedef uint16_t dd_mark;
+#define DD_MARK_MAX UINT16_MAX
+#define DD_EPOCH_STEP_MAX 1024   /* most values one pass may take        */
 
 /* A slot of the edge hash used to glue the cells of a star together. */
 typedef struct dd_edge_slot {
@@ -116,7 +128,8 @@ struct dd_tri {
     int borrowed;             /* xyz, vcell, v2in belong to another dd_tri */
 
     /* cells */
-    uint32_t *tv, *tn, *stamp;
+    uint32_t *tv, *tn;
+    dd_mark *stamp;
     uint32_t ncell, cap_c;    /* high-water mark and capacity            */
     uint32_t nlive, nfinite;
     uint32_t free_head;       /* free list through tn[4t], DD_NONE = empty */
@@ -132,6 +145,8 @@ struct dd_tri {
 
     /* scratch for insertion */
     dd_vec stack, conflict, boundary;
+    uint32_t *etab;               /* oriented edge -> facet, see fill_star:
+                                     DD_STAR_MAXV^2 entries, made lazily  */
     struct dd_edge_slot *ehash;   /* edge -> facet, see glue_new_cells   */
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
@@ -169,16 +184,16 @@ static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
     return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : v[3] == x ? 3 : -1;
 }
 
-/* Reserves `step` fresh mark values for a pass and returns the first; the
- * pass may use first .. first + step - 1.                                */
-static inline uint32_t dd_new_epoch(dd_tri *t, uint32_t step)
+/* Reserves `step` (at most DD_EPOCH_STEP_MAX) fresh mark values for a
+ * pass and returns the first; the pass may use first .. first + step - 1. */
+static inline dd_mark dd_new_epoch(dd_tri *t, uint32_t step)
 {
-    if (t->epoch > UINT32_MAX - 4 * step) {   /* wrap: clear once */
-        for (uint32_t c = 0; c < t->ncell; c++) t->stamp[c] = 0;
+    if (t->epoch > DD_MARK_MAX - step) {   /* wrap: clear once */
+        memset(t->stamp, 0, (size_t)t->ncell * sizeof *t->stamp);
         t->epoch = 0;
     }
     t->epoch += step;
-    return t->epoch - step + 1;
+    return (dd_mark)(t->epoch - step + 1);
 }
 
 static inline uint32_t dd_rand(dd_tri *t)
@@ -193,6 +208,8 @@ static inline uint32_t dd_rand(dd_tri *t)
  * next k dd_new_cell calls cannot fail.                                  */
 dd_status dd_reserve_cells(dd_tri *t, uint32_t k);
 uint32_t dd_new_cell(dd_tri *t);     /* after dd_reserve_cells */
+/* Gives back the capacity beyond the cells in use (after construction). */
+void dd_shrink_cells(dd_tri *t);
 void dd_kill_cell(dd_tri *t, uint32_t c);
 
 static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)

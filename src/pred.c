@@ -2,7 +2,7 @@
  * pred.c -- exact, perturbed predicates (DESIGN 3; see pred.h for signs).
  *
  * Each predicate runs in two stages.
- *  1. A semi-static filter: the determinant in doubles, evaluated in the
+ *  1. A semi-static filter (inline in pred.h): the determinant in doubles, evaluated in the
  *     same order as CGAL's determinant(), accepted when its magnitude
  *     exceeds CGAL's certified error bound for that order (orientation
  *     5.1107127829973299e-15 * maxx*maxy*maxz, in-sphere
@@ -225,42 +225,16 @@ static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
 
 /* ---- filtered predicates ------------------------------------------------- */
 
-static inline void sort3(double *a, double *b, double *c)
-{
-    double t;
-    if (*a > *c) { t = *a; *a = *c; *c = t; }
-    if (*b > *c) { t = *b; *b = *c; *c = t; }
-    else if (*b < *a) { t = *a; *a = *b; *b = t; }
-}
-
 int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
                 const double *r, const double *s)
 {
-    DD_COUNT(ctx, orient_calls);
-    double pqx = q[0] - p[0], pqy = q[1] - p[1], pqz = q[2] - p[2];
-    double prx = r[0] - p[0], pry = r[1] - p[1], prz = r[2] - p[2];
-    double psx = s[0] - p[0], psy = s[1] - p[1], psz = s[2] - p[2];
-    double maxx = fabs(pqx), maxy = fabs(pqy), maxz = fabs(pqz);
-    double a;
-    if ((a = fabs(prx)) > maxx) maxx = a;
-    if ((a = fabs(psx)) > maxx) maxx = a;
-    if ((a = fabs(pry)) > maxy) maxy = a;
-    if ((a = fabs(psy)) > maxy) maxy = a;
-    if ((a = fabs(prz)) > maxz) maxz = a;
-    if ((a = fabs(psz)) > maxz) maxz = a;
-    /* CGAL's determinant(a00..a22) evaluation order */
-    double m01 = pqx * pry - prx * pqy;
-    double m02 = pqx * psy - psx * pqy;
-    double m12 = prx * psy - psx * pry;
-    double det = m01 * psz - m02 * prz + m12 * pqz;
-    double eps = 5.1107127829973299e-15 * maxx * maxy * maxz;
-    sort3(&maxx, &maxy, &maxz);
-    if (maxx < 1e-97) {
-        if (maxx == 0) return 0;
-    } else if (maxz < 1e102) {
-        if (det > eps) return 1;
-        if (det < -eps) return -1;
-    }
+    int f = dd_orient3d_filter(ctx, p, q, r, s);
+    return f != DD_FILTER_UNSURE ? f : dd_orient3d_unfiltered(ctx, p, q, r, s);
+}
+
+int dd_orient3d_unfiltered(dd_pred *ctx, const double *p, const double *q,
+                           const double *r, const double *s)
+{
     DD_COUNT(ctx, orient_exact);
     int e = dd_orient3d_exp(p, q, r, s);
     if (e != DD_EXP_UNSAFE) return e;
@@ -270,47 +244,13 @@ int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
 int dd_insphere(dd_pred *ctx, const double *p, const double *q,
                 const double *r, const double *s, const double *t)
 {
-    DD_COUNT(ctx, insphere_calls);
-    double ptx = p[0] - t[0], pty = p[1] - t[1], ptz = p[2] - t[2];
-    double qtx = q[0] - t[0], qty = q[1] - t[1], qtz = q[2] - t[2];
-    double rtx = r[0] - t[0], rty = r[1] - t[1], rtz = r[2] - t[2];
-    double stx = s[0] - t[0], sty = s[1] - t[1], stz = s[2] - t[2];
-    double pt2 = ptx * ptx + pty * pty + ptz * ptz;
-    double qt2 = qtx * qtx + qty * qty + qtz * qtz;
-    double rt2 = rtx * rtx + rty * rty + rtz * rtz;
-    double st2 = stx * stx + sty * sty + stz * stz;
-    double maxx = fabs(ptx), maxy = fabs(pty), maxz = fabs(ptz), a;
-    if ((a = fabs(qtx)) > maxx) maxx = a;
-    if ((a = fabs(rtx)) > maxx) maxx = a;
-    if ((a = fabs(stx)) > maxx) maxx = a;
-    if ((a = fabs(qty)) > maxy) maxy = a;
-    if ((a = fabs(rty)) > maxy) maxy = a;
-    if ((a = fabs(sty)) > maxy) maxy = a;
-    if ((a = fabs(qtz)) > maxz) maxz = a;
-    if ((a = fabs(rtz)) > maxz) maxz = a;
-    if ((a = fabs(stz)) > maxz) maxz = a;
-    double eps = 1.2466136531027298e-13 * maxx * maxy * maxz;
-    sort3(&maxx, &maxy, &maxz);
-    /* CGAL's 4x4 determinant(pt, rt, qt, st) evaluation order:
-     * rows a0=pt, a1=rt, a2=qt, a3=st; aij = row i, column j.             */
-    double m01 = rtx * pty - ptx * rty;
-    double m02 = qtx * pty - ptx * qty;
-    double m03 = stx * pty - ptx * sty;
-    double m12 = qtx * rty - rtx * qty;
-    double m13 = stx * rty - rtx * sty;
-    double m23 = stx * qty - qtx * sty;
-    double m012 = m12 * ptz - m02 * rtz + m01 * qtz;
-    double m013 = m13 * ptz - m03 * rtz + m01 * stz;
-    double m023 = m23 * ptz - m03 * qtz + m02 * stz;
-    double m123 = m23 * rtz - m13 * qtz + m12 * stz;
-    double det = m123 * pt2 - m023 * rt2 + m013 * qt2 - m012 * st2;
-    if (maxx < 1e-58) {
-        if (maxx == 0) return 0;
-    } else if (maxz < 1e61) {
-        eps *= maxz * maxz;
-        if (det > eps) return 1;
-        if (det < -eps) return -1;
-    }
+    int f = dd_insphere_filter(ctx, p, q, r, s, t);
+    return f != DD_FILTER_UNSURE ? f : dd_insphere_unfiltered(ctx, p, q, r, s, t);
+}
+
+int dd_insphere_unfiltered(dd_pred *ctx, const double *p, const double *q,
+                           const double *r, const double *s, const double *t)
+{
     DD_COUNT(ctx, insphere_exact);
     int e = dd_insphere_exp(p, q, r, s, t);
     if (e != DD_EXP_UNSAFE) return e;
@@ -432,7 +372,13 @@ int dd_insphere_perturbed(dd_pred *ctx, const double *p0, const double *p1,
                           const double *p)
 {
     int s = dd_insphere(ctx, p0, p1, p2, p3, p);
-    if (s != 0) return s;
+    return s != 0 ? s : dd_insphere_symbolic(ctx, p0, p1, p2, p3, p);
+}
+
+int dd_insphere_symbolic(dd_pred *ctx, const double *p0, const double *p1,
+                         const double *p2, const double *p3,
+                         const double *p)
+{
     DD_COUNT(ctx, perturbed);
     const double *pts[5] = {p0, p1, p2, p3, p};
     lex_sort(pts, 5);

@@ -24,6 +24,7 @@
 #ifndef DD_PRED_H
 #define DD_PRED_H
 
+#include <math.h>
 #include <stdint.h>
 #include <gmp.h>
 
@@ -44,6 +45,106 @@ typedef struct dd_pred {
 #define DD_COUNT(ctx, field) ((void)0)
 #endif
 
+/* ---- stage 1, the semi-static filters (inline: the hot loops call them
+ * directly and fall back to dd_orient3d / dd_insphere when unsure).  The
+ * determinant in doubles, in the same evaluation order as CGAL's
+ * determinant(), accepted when its magnitude exceeds CGAL's certified
+ * error bound for that order, with CGAL's underflow and overflow guards.
+ * They return the exact sign, or DD_FILTER_UNSURE.                      */
+#define DD_FILTER_UNSURE 2
+
+static inline double dd_min3(double a, double b, double c)
+{
+    double m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static inline double dd_max3(double a, double b, double c)
+{
+    double m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+static inline int dd_orient3d_filter(dd_pred *ctx, const double *p, const double *q,
+                                     const double *r, const double *s)
+{
+    (void)ctx;
+    DD_COUNT(ctx, orient_calls);
+    double pqx = q[0] - p[0], pqy = q[1] - p[1], pqz = q[2] - p[2];
+    double prx = r[0] - p[0], pry = r[1] - p[1], prz = r[2] - p[2];
+    double psx = s[0] - p[0], psy = s[1] - p[1], psz = s[2] - p[2];
+    double maxx = fabs(pqx), maxy = fabs(pqy), maxz = fabs(pqz);
+    double a;
+    if ((a = fabs(prx)) > maxx) maxx = a;
+    if ((a = fabs(psx)) > maxx) maxx = a;
+    if ((a = fabs(pry)) > maxy) maxy = a;
+    if ((a = fabs(psy)) > maxy) maxy = a;
+    if ((a = fabs(prz)) > maxz) maxz = a;
+    if ((a = fabs(psz)) > maxz) maxz = a;
+    /* CGAL's determinant(a00..a22) evaluation order */
+    double m01 = pqx * pry - prx * pqy;
+    double m02 = pqx * psy - psx * pqy;
+    double m12 = prx * psy - psx * pry;
+    double det = m01 * psz - m02 * prz + m12 * pqz;
+    double eps = 5.1107127829973299e-15 * maxx * maxy * maxz;
+    double lo = dd_min3(maxx, maxy, maxz), hi = dd_max3(maxx, maxy, maxz);
+    if (lo < 1e-97) {
+        if (lo == 0) return 0;
+    } else if (hi < 1e102) {
+        if (det > eps) return 1;
+        if (det < -eps) return -1;
+    }
+    return DD_FILTER_UNSURE;
+}
+
+static inline int dd_insphere_filter(dd_pred *ctx, const double *p, const double *q,
+                                     const double *r, const double *s, const double *t)
+{
+    (void)ctx;
+    DD_COUNT(ctx, insphere_calls);
+    double ptx = p[0] - t[0], pty = p[1] - t[1], ptz = p[2] - t[2];
+    double qtx = q[0] - t[0], qty = q[1] - t[1], qtz = q[2] - t[2];
+    double rtx = r[0] - t[0], rty = r[1] - t[1], rtz = r[2] - t[2];
+    double stx = s[0] - t[0], sty = s[1] - t[1], stz = s[2] - t[2];
+    double pt2 = ptx * ptx + pty * pty + ptz * ptz;
+    double qt2 = qtx * qtx + qty * qty + qtz * qtz;
+    double rt2 = rtx * rtx + rty * rty + rtz * rtz;
+    double st2 = stx * stx + sty * sty + stz * stz;
+    double maxx = fabs(ptx), maxy = fabs(pty), maxz = fabs(ptz), a;
+    if ((a = fabs(qtx)) > maxx) maxx = a;
+    if ((a = fabs(rtx)) > maxx) maxx = a;
+    if ((a = fabs(stx)) > maxx) maxx = a;
+    if ((a = fabs(qty)) > maxy) maxy = a;
+    if ((a = fabs(rty)) > maxy) maxy = a;
+    if ((a = fabs(sty)) > maxy) maxy = a;
+    if ((a = fabs(qtz)) > maxz) maxz = a;
+    if ((a = fabs(rtz)) > maxz) maxz = a;
+    if ((a = fabs(stz)) > maxz) maxz = a;
+    double eps = 1.2466136531027298e-13 * maxx * maxy * maxz;
+    double lo = dd_min3(maxx, maxy, maxz), hi = dd_max3(maxx, maxy, maxz);
+    /* CGAL's 4x4 determinant(pt, rt, qt, st) evaluation order:
+     * rows a0=pt, a1=rt, a2=qt, a3=st; aij = row i, column j.             */
+    double m01 = rtx * pty - ptx * rty;
+    double m02 = qtx * pty - ptx * qty;
+    double m03 = stx * pty - ptx * sty;
+    double m12 = qtx * rty - rtx * qty;
+    double m13 = stx * rty - rtx * sty;
+    double m23 = stx * qty - qtx * sty;
+    double m012 = m12 * ptz - m02 * rtz + m01 * qtz;
+    double m013 = m13 * ptz - m03 * rtz + m01 * stz;
+    double m023 = m23 * ptz - m03 * qtz + m02 * stz;
+    double m123 = m23 * rtz - m13 * qtz + m12 * stz;
+    double det = m123 * pt2 - m023 * rt2 + m013 * qt2 - m012 * st2;
+    if (lo < 1e-58) {
+        if (lo == 0) return 0;
+    } else if (hi < 1e61) {
+        eps *= hi * hi;
+        if (det > eps) return 1;
+        if (det < -eps) return -1;
+    }
+    return DD_FILTER_UNSURE;
+}
+
 void dd_pred_init(dd_pred *ctx);
 void dd_pred_clear(dd_pred *ctx);
 
@@ -55,6 +156,13 @@ int dd_orient_coplanar(dd_pred *ctx, const double *p, const double *q,
                        const double *r);
 int dd_incircle_coplanar(dd_pred *ctx, const double *p, const double *q,
                          const double *r, const double *t);
+
+/* The exact stages alone, for callers that ran the filter themselves and
+ * got DD_FILTER_UNSURE.                                                   */
+int dd_orient3d_unfiltered(dd_pred *ctx, const double *p, const double *q,
+                           const double *r, const double *s);
+int dd_insphere_unfiltered(dd_pred *ctx, const double *p, const double *q,
+                           const double *r, const double *s, const double *t);
 
 /* Lexicographic order on (x, y, z): -1, 0, +1. */
 static inline int dd_lex_cmp(const double *a, const double *b)
@@ -70,6 +178,10 @@ static inline int dd_lex_cmp(const double *a, const double *b)
 int dd_insphere_perturbed(dd_pred *ctx, const double *p0, const double *p1,
                           const double *p2, const double *p3,
                           const double *p);
+/* Its perturbation alone, when dd_insphere(p0..p3, p) is exactly 0. */
+int dd_insphere_symbolic(dd_pred *ctx, const double *p0, const double *p1,
+                         const double *p2, const double *p3,
+                         const double *p);
 /* CGAL's coplanar_side_of_bounded_circle(p0,p1,p2,p, perturb=true):
  * +1 inside, -1 outside; p0,p1,p2 not collinear, all four coplanar.     */
 int dd_incircle_coplanar_perturbed(dd_pred *ctx, const double *p0,

@@ -42,10 +42,11 @@ static void fail_once(tally *t, const char *fmt, uint32_t v, const char *extra)
 
 #define MAXVAR 16
 
-/* Deletes k sampled vertices (hull ones first, then random), each from
- * DT(S), with every variant, comparing with CGAL; reinserting restores. */
+/* Deletes k sampled vertices (`first` unless UINT32_MAX, then hull ones,
+ * then random), each from DT(S), with every variant, comparing with CGAL;
+ * reinserting restores.                                                   */
 static void single_deletions(tl_state *st, const char *name, const double *pts, uint32_t n,
-                             uint32_t k, uint64_t seed, int check_every)
+                             uint32_t k, uint64_t seed, int check_every, uint32_t first)
 {
     char msg[256];
     dd_tri *t;
@@ -62,8 +63,9 @@ static void single_deletions(tl_state *st, const char *name, const double *pts, 
     uint32_t hull_seen = 0;
     for (uint32_t it = 0; it < k; it++) {
         uint32_t v = (uint32_t)tl_int(&r, 0, n - 1);
-        if (!dd_is_vertex(t, v)) continue;
-        if (it < k / 4) {   /* prefer hull vertices for a quarter of the sample */
+        if (it == 0 && first != UINT32_MAX) v = first;
+        else if (!dd_is_vertex(t, v)) continue;
+        else if (it < k / 4) {   /* prefer hull vertices for a quarter of the sample */
             for (int tries = 0; tries < 50 && !dd_on_hull(t, v); tries++) {
                 v = (uint32_t)tl_int(&r, 0, n - 1);
                 while (!dd_is_vertex(t, v)) v = (v + 1) % n;
@@ -281,7 +283,7 @@ int main(int argc, char **argv)
         double *p = gen(sets[i].ds, sets[i].n, &np);
         char name[64];
         snprintf(name, sizeof name, "%s-%u", sets[i].ds, np);
-        single_deletions(&st, name, p, np, k, 1000 + i, 1);
+        single_deletions(&st, name, p, np, k, 1000 + i, 1, UINT32_MAX);
         free(p);
     }
     /* scaled inputs */
@@ -289,9 +291,9 @@ int main(int argc, char **argv)
         uint32_t np;
         double *p = gen("grid", 343, &np);
         for (uint32_t i = 0; i < 3 * np; i++) p[i] *= 1e-200;
-        single_deletions(&st, "grid-343-x1e-200", p, np, k, 77, 1);
+        single_deletions(&st, "grid-343-x1e-200", p, np, k, 77, 1, UINT32_MAX);
         for (uint32_t i = 0; i < 3 * np; i++) p[i] *= 1e216;
-        single_deletions(&st, "grid-343-x1e16", p, np, k, 78, 1);
+        single_deletions(&st, "grid-343-x1e16", p, np, k, 78, 1, UINT32_MAX);
         free(p);
     }
     /* Near-cospherical points at graded distances from the unit sphere
@@ -309,7 +311,7 @@ int main(int argc, char **argv)
         }
         char name[64];
         snprintf(name, sizeof name, "sphere-%u-radial-1e-%d", np, e);
-        single_deletions(&st, name, p, np, k / 2, 90 + (uint64_t)e, 1);
+        single_deletions(&st, name, p, np, k / 2, 90 + (uint64_t)e, 1, UINT32_MAX);
         free(p);
     }
     {
@@ -320,7 +322,7 @@ int main(int argc, char **argv)
             for (uint32_t j = 0; j < 3 * np; j++) p[j] *= scale[i];
             char name[64];
             snprintf(name, sizeof name, "uniform-%u-x%g", np, scale[i]);
-            single_deletions(&st, name, p, np, k / 2, 95 + (uint64_t)i, 1);
+            single_deletions(&st, name, p, np, k / 2, 95 + (uint64_t)i, 1, UINT32_MAX);
             free(p);
         }
     }
@@ -333,7 +335,19 @@ int main(int argc, char **argv)
             for (int y = 0; y < 5; y++) { p[3 * n] = x; p[3 * n + 1] = y; p[3 * n + 2] = 0; n++; }
         p[3 * n] = 2; p[3 * n + 1] = 2; p[3 * n + 2] = 3; n++;
         p[3 * n] = 0.5; p[3 * n + 1] = 0.5; p[3 * n + 2] = -1; n++;
-        single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1);
+        single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1, UINT32_MAX);
+    }
+    /* The centre of 300 points on a sphere: its star is the whole ball, so
+     * deleting it fills a cavity with 300 boundary vertices and
+     * re-inserting it refills one; both are beyond the direct edge table
+     * of mesh.c (DD_STAR_MAXV vertices) and glue through the edge hash.   */
+    {
+        uint32_t np;
+        double *p = gen("sphere", 300, &np);
+        p = realloc(p, 3 * sizeof *p * (np + 1));
+        p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
+        single_deletions(&st, "sphere-300-centre", p, np + 1, small ? 4 : 10, 6, 1, np);
+        free(p);
     }
     for (size_t vi = 0; dd_variant_name(vi); vi++) {
         const char *var = dd_variant_name(vi);
