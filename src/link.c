@@ -28,7 +28,6 @@ void dd_link_free(dd_link *l)
     free(l->lv); free(l->ln); free(l->ltri); free(l->deg);
     free(l->ring); free(l->ring_tri); free(l->ring_out); free(l->newtri);
     free(l->rpos); free(l->rmark);
-    dd_trihash_free(&l->slot);
     dd_free(l->scratch);
     memset(l, 0, sizeof *l);
 }
@@ -62,15 +61,17 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
             return DD_ERR_NOMEM;
         l->ring_cap = (uint32_t)r;
     }
-    /* Star slot of a cell, through its link triangle: {a, b, c} -> slot. */
-    dd_status s = dd_trihash_reset(&l->slot, n);
-    for (uint32_t k = 0; k < n && s == DD_OK; k++) {
+    /* Star slot of a cell: through its stamp (base + slot) when the star
+     * fits in one pass's marks, else through its link triangle in
+     * collect_star's hash.                                                */
+    int by_stamp = n <= DD_EPOCH_STEP_MAX;
+    dd_mark base = by_stamp ? dd_new_epoch(t, n) : 0;
+    for (uint32_t k = 0; k < n; k++) {
         uint32_t c = d->star.a[k], *w = l->lv + 3 * k;
         int i = dd_index_of(t, c, d->q);
         for (int m = 0; m < 3; m++) w[m] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
-        s = dd_trihash_put(&l->slot, w[0], w[1], w[2], k);
+        if (by_stamp) t->stamp[c] = (dd_mark)(base + k);
     }
-    if (s != DD_OK) return s;
     for (size_t j = 0; j < d->nbr.n; j++) l->deg[d->nbr.a[j]] = 0;
     for (uint32_t k = 0; k < n; k++) {
         uint32_t c = d->star.a[k];
@@ -78,11 +79,15 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
         for (uint32_t m = 0; m < 3; m++) {
             /* across the edge opposite lv[3k+m]: the star cell across the
              * cell facet opposite that vertex                              */
-            uint32_t nb = t->tn[4 * (size_t)c + (uint32_t)dd_facet[i][m]] >> 2;
-            int inb = dd_index_of(t, nb, d->q);
-            if (inb < 0) return DD_ERR_INTERNAL;
-            const uint32_t *u = t->tv + 4 * (size_t)nb;
-            uint32_t sl = dd_trihash_get(&l->slot, u[inb == 0], u[inb <= 1 ? 2 : 1], u[inb <= 2 ? 3 : 2]);
+            uint32_t nb = t->tn[4 * (size_t)c + (uint32_t)dd_facet[i][m]] >> 2, sl;
+            if (by_stamp) {
+                sl = (uint32_t)(dd_mark)(t->stamp[nb] - base);
+            } else {
+                int inb = dd_index_of(t, nb, d->q);
+                if (inb < 0) return DD_ERR_INTERNAL;
+                const uint32_t *u = t->tv + 4 * (size_t)nb;
+                sl = dd_trihash_get(&d->lhash, u[inb == 0], u[inb <= 1 ? 2 : 1], u[inb <= 2 ? 3 : 2]);
+            }
             if (sl >= n) return DD_ERR_INTERNAL;
             uint32_t x = l->lv[3 * k + (m + 1) % 3], y = l->lv[3 * k + (m + 2) % 3];
             uint32_t j = 0;

@@ -26,7 +26,6 @@
 typedef struct dd_link {
     uint32_t *lv, *ln;
     uint32_t ntri, cap;
-    dd_trihash slot;            /* link triangle {a, b, c} -> its index  */
     uint32_t *ltri, *deg;       /* per vertex id, capacity vcap        */
     uint32_t vcap;
     /* LINKDTDELETE scratch and result */

@@ -64,7 +64,7 @@ static const uint8_t dd_edge_of[4][4][2] = {
 /* A pass's mark value (see Marks above). */
 typedef uint16_t dd_mark;
 #define DD_MARK_MAX UINT16_MAX
-#define DD_EPOCH_STEP_MAX 1024   /* most values one pass may take        */
+#define DD_EPOCH_STEP_MAX 4096   /* most values one pass may take        */
 
 /* A slot of the edge hash used to glue the cells of a star together. */
 typedef struct dd_edge_slot {

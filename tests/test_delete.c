@@ -348,6 +348,14 @@ int main(int argc, char **argv)
         p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
         single_deletions(&st, "sphere-300-centre", p, np + 1, small ? 4 : 10, 6, 1, np);
         free(p);
+        /* 2200 points: the centre's star has 4396 cells, more than one
+         * pass's marks (DD_EPOCH_STEP_MAX), so the link finds star slots
+         * through the link-triangle hash (link.c).                        */
+        p = gen("sphere", 2200, &np);
+        p = realloc(p, 3 * sizeof *p * (np + 1));
+        p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
+        single_deletions(&st, "sphere-2200-centre", p, np + 1, 1, 6, 1, np);
+        free(p);
     }
     for (size_t vi = 0; dd_variant_name(vi); vi++) {
         const char *var = dd_variant_name(vi);
