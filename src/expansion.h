@@ -14,11 +14,14 @@
  *
  * Invariant: a result in {-1, 0, +1} is the exact sign, for every input;
  * DD_EXP_UNSAFE means "not decided here, ask the GMP stage".  The
- * functions are pure: no allocation, no global state, no FP-environment
- * changes.  They assume IEEE binary64 with round-to-nearest-even (the
- * default mode) and no x87 excess precision; hardware FMA is neither
- * needed nor assumed (used only when the compiler targets it, where it
- * also makes the code safe against FP contraction).
+ * functions are pure: no allocation, no FP-environment changes, and no
+ * global state but one cached CPU-feature flag (below).  They assume IEEE
+ * binary64 with round-to-nearest-even (the default mode) and no x87
+ * excess precision.  Hardware FMA is neither needed nor assumed: when the
+ * compiler targets it, every TWO-PRODUCT uses it (which also makes the
+ * code safe against FP contraction); on baseline x86 builds stage C uses
+ * it when the CPU has it (checked once, at run time).  Either way the
+ * results are bit-identical: every TWO-PRODUCT is exact.
  *
  * Safe range.  DD_EXP_UNSAFE is returned exactly when some coordinate of
  * the input points is NaN, infinite, or has a magnitude outside the
@@ -63,6 +66,13 @@ int dd_orient3d_exp_staged(const double *p, const double *q, const double *r,
                            const double *s, int *stage);
 int dd_insphere_exp_staged(const double *p, const double *q, const double *r,
                            const double *s, const double *t, int *stage);
+
+/* Test hook: on != 0 makes stage C use the plain TWO-PRODUCT (Dekker's)
+ * even on a CPU with FMA, on == 0 restores the run-time choice.  Returns
+ * whether stage C now uses hardware FMA (always 1 in builds targeting
+ * FMA, where plain is FMA too; always 0 without FMA support).  For
+ * tests; harmless at any time, as both paths give the same results.    */
+int dd_exp_force_plain(int on);
 
 /* w = |x - q|^2 - 2 (x - q).c within 2u |w| (exact expansion, rounded);
  * |x - q| and |c| must stay below 2^160.  The compact conflict DT's

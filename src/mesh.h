@@ -188,6 +188,9 @@ static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
  * pass and returns the first; the pass may use first .. first + step - 1. */
 static inline dd_mark dd_new_epoch(dd_tri *t, uint32_t step)
 {
+#ifdef DD_TEST_BUILD
+    if (step == 0 || step > DD_EPOCH_STEP_MAX) __builtin_trap();
+#endif
     if (t->epoch > DD_MARK_MAX - step) {   /* wrap: clear once */
         memset(t->stamp, 0, (size_t)t->ncell * sizeof *t->stamp);
         t->epoch = 0;

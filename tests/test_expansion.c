@@ -1,12 +1,15 @@
 /*
  * test_expansion.c -- the expansion-arithmetic predicates (expansion.h)
- * return the exact signs of pred.h's exact predicates, and DD_EXP_UNSAFE
- * exactly outside their safe range.
+ * return the exact signs of the determinants, and DD_EXP_UNSAFE exactly
+ * outside their safe range.
  *
- * Compares dd_orient3d_exp and dd_insphere_exp with dd_orient3d and
- * dd_insphere (filter + GMP: exact for every double) on >= 10^6 tuples of
- * five points: integer grids, integer points on spheres (cospherical:
- * both must say 0), moment-curve points (t, t^2, t^3) with t = i/1024,
+ * Compares dd_orient3d_exp and dd_insphere_exp, where their stage A
+ * decides, with pred.h's dd_orient3d and dd_insphere (a filter, then
+ * dd_*_exp, then GMP: exact for every double), and where a later stage
+ * decides with the determinant in GMP integers (independent of
+ * dd_*_exp), on >= 10^6 tuples of five points: integer grids, integer
+ * points on spheres (cospherical: both must say 0), moment-curve points
+ * (t, t^2, t^3) with t = i/1024,
  * uniform random doubles, rounded points of the unit sphere, exactly
  * coplanar random doubles (inexact differences, determinant 0: the
  * raw-coordinate stage), mixed and wide magnitudes, generic integer points
@@ -17,7 +20,10 @@
  * some rounds, translated by 1e6 or 1e15 and scaled by powers of two.
  * Checks that every stage of both predicates ran, that coordinates
  * outside the safe range (1e-200, 1e200, NaN, ...) give DD_EXP_UNSAFE,
- * and that the range limits themselves are handled.
+ * and that the range limits themselves are handled.  The tuples are run
+ * twice: with stage C's run-time choice (hardware FMA when the CPU has
+ * it) and with its plain TWO-PRODUCT forced (dd_exp_force_plain), so both
+ * copies of stage C are checked on an FMA machine.
  *
  * Arguments: "small" (sanitizer builds) runs 10^5 tuples; "--bench"
  * prints ns per call of dd_insphere_exp against dd_insphere on tuples that
@@ -31,6 +37,7 @@
 #include "expansion.h"
 
 #include <math.h>
+#include <gmp.h>
 #include <mpfr.h>
 #include <time.h>
 
@@ -244,6 +251,96 @@ static int in_range(double q[5][3], int n, double lim)
     return 1;
 }
 
+/* ---- an independent exact reference --------------------------------------- */
+
+/* pred.c's dd_orient3d / dd_insphere hand what their filter cannot decide
+ * to dd_*_exp itself: for the tuples that reach our stages B-D they are
+ * no independent reference.  These determinants are, in GMP integers:
+ * every nonzero coordinate is an integer multiple of 2^lo, lo the lowest
+ * ilogb(x) - 52 of the tuple, so x 2^-lo is an integer (a double below
+ * 2^1023 in the safe ranges) and the determinant of the scaled points has
+ * the same sign.                                                          */
+static mpz_t ex_x[4][3], ex_lift, ex_m, ex_t, ex_u, ex_d, ex_base[3];
+
+/* ex_x[i] = (rows[i] - base) 2^-lo, exactly (pts: rows then base). */
+static void exact_rows(const double *const *pts, int n)
+{
+    int lo = 0, any = 0;
+    for (int i = 0; i <= n; i++)
+        for (int c = 0; c < 3; c++)
+            if (pts[i][c] != 0.0 && (!any || ilogb(pts[i][c]) - 52 < lo)) {
+                lo = ilogb(pts[i][c]) - 52;
+                any = 1;
+            }
+    for (int c = 0; c < 3; c++) mpz_set_d(ex_base[c], ldexp(pts[n][c], -lo));
+    for (int i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            mpz_set_d(ex_x[i][c], ldexp(pts[i][c], -lo));
+            mpz_sub(ex_x[i][c], ex_x[i][c], ex_base[c]);
+        }
+}
+
+/* out = ex_x[i] . (ex_x[j] x ex_x[k]). */
+static void exact_det3(mpz_t out, int i, int j, int k)
+{
+    mpz_set_ui(out, 0);
+    for (int c = 0; c < 3; c++) {
+        int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        mpz_mul(ex_t, ex_x[j][c1], ex_x[k][c2]);
+        mpz_mul(ex_u, ex_x[j][c2], ex_x[k][c1]);
+        mpz_sub(ex_t, ex_t, ex_u);
+        mpz_addmul(out, ex_t, ex_x[i][c]);
+    }
+}
+
+/* sign det[q-p; r-p; s-p] (expansion.h). */
+static int exact_orient3d(const double *p, const double *q, const double *r,
+                          const double *s)
+{
+    const double *pts[4] = {q, r, s, p};
+    exact_rows(pts, 3);
+    exact_det3(ex_d, 0, 1, 2);
+    return mpz_sgn(ex_d);
+}
+
+/* sign det of the lifted rows p-t, r-t, q-t, s-t (expansion.h), along
+ * the lift column: -L0 M0 + L1 M1 - L2 M2 + L3 M3.                      */
+static int exact_insphere(const double *p, const double *q, const double *r,
+                          const double *s, const double *t)
+{
+    static const int others[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+    const double *pts[5] = {p, r, q, s, t};
+    exact_rows(pts, 4);
+    mpz_set_ui(ex_d, 0);
+    for (int i = 0; i < 4; i++) {
+        mpz_mul(ex_lift, ex_x[i][0], ex_x[i][0]);
+        mpz_addmul(ex_lift, ex_x[i][1], ex_x[i][1]);
+        mpz_addmul(ex_lift, ex_x[i][2], ex_x[i][2]);
+        exact_det3(ex_m, others[i][0], others[i][1], others[i][2]);
+        if (i & 1) mpz_addmul(ex_d, ex_lift, ex_m);
+        else mpz_submul(ex_d, ex_lift, ex_m);
+    }
+    return mpz_sgn(ex_d);
+}
+
+static void exact_init(void)
+{
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++) mpz_init(ex_x[i][c]);
+    for (int c = 0; c < 3; c++) mpz_init(ex_base[c]);
+    mpz_inits(ex_lift, ex_m, ex_t, ex_u, ex_d, (mpz_ptr)0);
+}
+
+static void exact_clear(void)
+{
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++) mpz_clear(ex_x[i][c]);
+    for (int c = 0; c < 3; c++) mpz_clear(ex_base[c]);
+    mpz_clears(ex_lift, ex_m, ex_t, ex_u, ex_d, (mpz_ptr)0);
+}
+
+/* Our sign against pred.c's (filter + dd_*_exp + GMP) where stage A
+ * decided, against the MPFR determinant where a later stage did.        */
 static void compare(dd_pred *pr, tally *t, double q[5][3])
 {
     int st, o, g;
@@ -251,27 +348,32 @@ static void compare(dd_pred *pr, tally *t, double q[5][3])
     t->tuples++;
     int o3ok = in_range(q, 5, 0x1p260), insok = in_range(q, 5, 0x1p140);
     o = dd_orient3d_exp_staged(q[0], q[1], q[2], q[3], &st);
-    g = dd_orient3d(pr, q[0], q[1], q[2], q[3]);
+    g = st >= DD_EXP_STAGE_B ? exact_orient3d(q[0], q[1], q[2], q[3])
+                             : dd_orient3d(pr, q[0], q[1], q[2], q[3]);
     memcpy(q4, q, 4 * sizeof q[0]);
     note(t, 0, o, st, in_range(q4, 4, 0x1p260) ? g : DD_EXP_UNSAFE, "orient3d(0123)", q);
     o = dd_orient3d_exp_staged(q[4], q[2], q[1], q[3], &st);
-    g = dd_orient3d(pr, q[4], q[2], q[1], q[3]);
+    g = st >= DD_EXP_STAGE_B ? exact_orient3d(q[4], q[2], q[1], q[3])
+                             : dd_orient3d(pr, q[4], q[2], q[1], q[3]);
     memcpy(q4[0], q[4], sizeof q[4]);
     memcpy(q4[4], q[0], sizeof q[0]);
     note(t, 0, o, st, in_range(q4, 4, 0x1p260) ? g : DD_EXP_UNSAFE, "orient3d(4213)", q);
     o = dd_insphere_exp_staged(q[0], q[1], q[2], q[3], q[4], &st);
-    g = dd_insphere(pr, q[0], q[1], q[2], q[3], q[4]);
+    g = st >= DD_EXP_STAGE_B ? exact_insphere(q[0], q[1], q[2], q[3], q[4])
+                             : dd_insphere(pr, q[0], q[1], q[2], q[3], q[4]);
     note(t, 1, o, st, insok ? g : DD_EXP_UNSAFE, "insphere(01234)", q);
     if (g == 0) t->zeros++;
     o = dd_insphere_exp_staged(q[4], q[0], q[3], q[1], q[2], &st);
-    g = dd_insphere(pr, q[4], q[0], q[3], q[1], q[2]);
+    g = st >= DD_EXP_STAGE_B ? exact_insphere(q[4], q[0], q[3], q[1], q[2])
+                             : dd_insphere(pr, q[4], q[0], q[3], q[1], q[2]);
     note(t, 1, o, st, insok ? g : DD_EXP_UNSAFE, "insphere(40312)", q);
     t->unsafe += !o3ok + !insok;
 }
 
-/* One named check per kind: plain, perturbed by one ulp, transformed. */
+/* One named check per kind: plain, perturbed by one ulp, transformed.
+ * tag prefixes the names ("" or "plain/").                               */
 static void run_kind(tl_state *st, dd_pred *pr, tl_rng *r, int kind, long rounds,
-                     tally *total)
+                     const char *tag, tally *total)
 {
     tally t;
     memset(&t, 0, sizeof t);
@@ -291,12 +393,12 @@ static void run_kind(tl_state *st, dd_pred *pr, tl_rng *r, int kind, long rounds
         }
     }
     char name[96];
-    snprintf(name, sizeof name, "expansion/%s", kind_name[kind]);
+    snprintf(name, sizeof name, "expansion/%s%s", tag, kind_name[kind]);
     tl_check(st, t.mismatches == 0, name, "%ld of %ld tuples differ from GMP; first: %s",
              t.mismatches, t.tuples, t.first);
     if (kind == K_SPHERE || kind == K_PLANE || kind == K_MIXED || kind == K_BIG_SPHERE
         || kind == K_TILTED) {
-        snprintf(name, sizeof name, "expansion/%s-exact-zero", kind_name[kind]);
+        snprintf(name, sizeof name, "expansion/%s%s-exact-zero", tag, kind_name[kind]);
         tl_check(st, cosph > rounds / 4 && cosph_zero == cosph, name,
                  "%ld of %ld exactly degenerate tuples gave insphere 0", cosph_zero, cosph);
     }
@@ -542,6 +644,7 @@ int main(int argc, char **argv)
     }
     dd_pred pr;
     dd_pred_init(&pr);
+    exact_init();
     for (int i = 0; i < 6; i++) {
         spheres[i].p = malloc(3 * 20000 * sizeof(double));
         spheres[i].n = tl_sphere_points(sphere_r2[i], spheres[i].p, 20000);
@@ -560,7 +663,9 @@ int main(int argc, char **argv)
     long per_kind = small ? 10000 : 100000;   /* 10 kinds: 10^5 or 10^6 tuples */
     tally total;
     memset(&total, 0, sizeof total);
-    for (int k = 0; k < K_NKINDS; k++) run_kind(&st, &pr, &r, k, per_kind, &total);
+    int fma = dd_exp_force_plain(0);          /* the run-time choice */
+    printf("# stage C TWO-PRODUCT: %s\n", fma ? "hardware FMA" : "Dekker (no FMA)");
+    for (int k = 0; k < K_NKINDS; k++) run_kind(&st, &pr, &r, k, per_kind, "", &total);
     tl_check(&st, total.tuples >= (small ? 100000 : 1000000), "expansion/at-least-1e6-tuples",
              "only %ld tuples", total.tuples);
     /* Every stage of both predicates must have run (and agreed). */
@@ -577,10 +682,33 @@ int main(int argc, char **argv)
            total.tuples, total.unsafe, total.stage[0][1], total.stage[0][2], total.stage[0][3],
            total.stage[0][4], total.stage[1][1], total.stage[1][2], total.stage[1][3],
            total.stage[1][4]);
+
+    /* The same tuples again with stage C's plain TWO-PRODUCT forced: on a
+     * CPU with FMA the pass above ran stage C's fma copy, so both copies
+     * are compared with GMP.  Both are exact, so each tuple must also be
+     * decided at the same stage as above.                                */
+    {
+        tl_rng rp = {20240611};
+        tally plain;
+        memset(&plain, 0, sizeof plain);
+        int plain_fma = dd_exp_force_plain(1);
+        for (int k = 0; k < K_NKINDS; k++)
+            run_kind(&st, &pr, &rp, k, per_kind, "plain/", &plain);
+        dd_exp_force_plain(0);
+        tl_check(&st, memcmp(plain.stage, total.stage, sizeof plain.stage) == 0
+                 && plain.stage[0][DD_EXP_STAGE_C] >= minimum
+                 && plain.stage[1][DD_EXP_STAGE_C] >= minimum,
+                 "expansion/plain-same-stages",
+                 "stage C ran %ld / %ld times (orient3d / insphere), %ld / %ld with the run-time choice",
+                 plain.stage[0][DD_EXP_STAGE_C], plain.stage[1][DD_EXP_STAGE_C],
+                 total.stage[0][DD_EXP_STAGE_C], total.stage[1][DD_EXP_STAGE_C]);
+        printf("# plain pass: stage C TWO-PRODUCT %s\n", plain_fma ? "FMA (build targets FMA)" : "Dekker");
+    }
     check_range(&st, &pr, &r);
 
     for (int i = 0; i < 6; i++) free(spheres[i].p);
     free(big_sphere.p);
     dd_pred_clear(&pr);
+    exact_clear();
     return tl_finish(&st);
 }
