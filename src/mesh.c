@@ -458,7 +458,8 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
  * (v, a, b), the other as (v, b, a).  So each facet writes itself under
  * its directed edge a->b and finds its partner under b->a: no search, no
  * branch.  The vertices of the cavity's boundary get local numbers in
- * vcell (tagged with STAR_TAG; vcell is rewritten for all of them when the
+ * vcell (tagged with STAR_TAG, a bit no cell id uses: dd_reserve_cells
+ * keeps them below 2^30; vcell is rewritten for all of them when the
  * star is done), the table is indexed by pairs of local numbers.  Local 0
  * is DD_QD and 2 is DD_INF (w - DD_QD); larger cavities use the edge hash. */
 #define STAR_TAG  0x80000000u
@@ -475,7 +476,7 @@ static inline uint32_t star_local(const uint32_t *vcell, uint32_t w)
 }
 
 /* Numbers the boundary vertices of the conflict region; returns how many
- * local numbers are in use, or 0 when more than DD_STAR_MAXV.               */
+ * local numbers are in use, or 0 when more than DD_STAR_MAXV.            */
 static uint32_t star_number_vertices(dd_tri *t)
 {
     uint32_t nl = 3, *vc = t->vcell;

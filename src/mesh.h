@@ -21,8 +21,9 @@
  * Marks.  stamp[t] holds a 16-bit epoch; a cell is marked in the current
  * pass iff stamp[t] equals the pass's epoch.  Passes never clear marks:
  * they take fresh epochs (dd_new_epoch), O(1); when the 16 bits run out,
- * every stamp is cleared once (O(cells) per 16000 passes or more).  Two
- * bytes, not four: the mesh stays within 40 bytes per cell.
+ * every stamp is cleared once (O(cells) per 65535 mark values: most passes
+ * take one or two).  Two bytes, not four: the mesh stays within 40 bytes
+ * per cell.
  *
  * Vertices.  Inside the engine a vertex is a vertex id: its position in
  * insertion order (BRIO + Hilbert), so that vertices close in space are
@@ -143,7 +144,8 @@ struct dd_tri {
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
 
-    /* scratch for insertion */
+    /* scratch for insertion (dd_fill_star also keeps its pending facet
+     * pairs in stack)                                                    */
     dd_vec stack, conflict, boundary;
     uint32_t *etab;               /* oriented edge -> facet, see fill_star:
                                      DD_STAR_MAXV^2 entries, made lazily  */
