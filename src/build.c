@@ -28,17 +28,8 @@
 
 /* ---- hashing ------------------------------------------------------------- */
 
-/* splitmix64's finaliser: a bijection of 64-bit words, every output bit
- * depending on every input bit.                                            */
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
 /* Hash of the exact coordinates; -0.0 hashes as +0.0, since dd_lex_cmp
- * holds them equal.  Each coordinate goes through mix64: coordinates that
+ * holds them equal.  Each coordinate goes through dd_mix64: coordinates that
  * differ only in their high bits (grids) must not collide early.          */
 static uint64_t hash_point(const double *p)
 {
@@ -47,7 +38,7 @@ static uint64_t hash_point(const double *p)
         double x = p[c] == 0 ? 0.0 : p[c];
         uint64_t bits;
         memcpy(&bits, &x, sizeof bits);
-        h = mix64(h ^ bits);
+        h = dd_mix64(h ^ bits);
     }
     return h;
 }
@@ -113,7 +104,7 @@ typedef struct keyed { uint64_t key; uint32_t id; } keyed;
  * of a hash of i moves the point one round earlier).                      */
 static uint64_t brio_round(uint32_t i, uint32_t depth)
 {
-    uint64_t r = mix64(BRIO_SEED + ((uint64_t)i + 1) * 0x9E3779B97F4A7C15ull);
+    uint64_t r = dd_mix64(BRIO_SEED + ((uint64_t)i + 1) * 0x9E3779B97F4A7C15ull);
     uint32_t level = 0;
     while (level < depth && ((r >> (61 - 3 * level)) & 7u) == 0) level++;
     return depth - level;

@@ -5,8 +5,9 @@
  * CGAL; the vertices to delete are drawn from a seeded generator, the same
  * for every row; for each vertex and row the deletion alone is timed with
  * a monotonic clock (median of up to 5 repetitions, or --reps R, while
- * they take under 2 ms together), its result is compared with CGAL's, and the vertex is
- * re-inserted untimed so the next deletion starts from DT(S) again.
+ * they take under 2 ms together), its result is compared with CGAL's, and
+ * the vertex is re-inserted untimed so the next deletion starts from DT(S)
+ * again.
  *
  * The comparison: the canonical form of the cells incident to the deleted
  * vertex's neighbours (everything a deletion can change) must equal

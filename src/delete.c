@@ -399,10 +399,7 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->qp = dd_pt(t, q);
     /* The random choices of a deletion are seeded by the vertex: deleting
      * the same vertex of the same triangulation does the same work.     */
-    uint64_t z = t->v2in[q] + 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
+    uint64_t z = dd_mix64(t->v2in[q] + 0x9E3779B97F4A7C15ull);
     d->rng = z | 1;
     d->qdt->rng = (z * 0x2545F4914F6CDD1Dull) | 1;
     d->fallbacks = 0;

@@ -201,6 +201,15 @@ static inline dd_mark dd_new_epoch(dd_tri *t, uint32_t step)
     return (dd_mark)(t->epoch - step + 1);
 }
 
+/* splitmix64's finaliser: a bijection of 64-bit words, every output bit
+ * depending on every input bit (hashing and seeding).                    */
+static inline uint64_t dd_mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
 static inline uint32_t dd_rand(dd_tri *t)
 {
     uint64_t x = t->rng;

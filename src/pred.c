@@ -2,12 +2,12 @@
  * pred.c -- exact, perturbed predicates (DESIGN 3; see pred.h for signs).
  *
  * Each predicate runs in two stages.
- *  1. A semi-static filter (inline in pred.h): the determinant in doubles, evaluated in the
- *     same order as CGAL's determinant(), accepted when its magnitude
- *     exceeds CGAL's certified error bound for that order (orientation
- *     5.1107127829973299e-15 * maxx*maxy*maxz, in-sphere
- *     1.2466136531027298e-13 * maxx*maxy*maxz * maxz^2 with the maxima
- *     sorted), with CGAL's underflow and overflow guards.
+ *  1. A semi-static filter (inline, pred.h): the determinant in doubles,
+ *     evaluated in the same order as CGAL's determinant(), accepted when
+ *     its magnitude exceeds CGAL's certified error bound for that order
+ *     (orientation 5.1107127829973299e-15 * maxx*maxy*maxz, in-sphere
+ *     1.2466136531027298e-13 * maxx*maxy*maxz * max^2, max the largest of
+ *     the three), with CGAL's underflow and overflow guards.
  *  2. An exact evaluation: adaptive floating-point expansions
  *     (expansion.c) when the coordinates are in their safe range, else GMP
  *     integers: every double is m * 2^e with an integer m of at most 53
