@@ -117,12 +117,15 @@ static void trihash_insert(dd_tri_slot *s, uint32_t mask, uint32_t gen, const dd
 }
 
 /* Open-addressing tables whose slots carry a generation (a slot is used
- * iff its gen is the table's): makes *tab hold at least `size` slots of
- * `elsize` bytes, all unused, by taking a new generation in *gen.  O(1)
- * unless it grows or the generation counter wraps (then it clears once). */
-static dd_status gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen,
-                                 size_t size, size_t elsize)
+ * iff its gen is the table's): sizes *tab to the least power of two of at
+ * least 64 and `min` slots of `elsize` bytes (*mask = that size - 1), all
+ * unused, by taking a new generation in *gen.  O(1) unless it grows or
+ * the generation counter wraps (then it clears once).                   */
+static dd_status gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_t *mask,
+                                 size_t min, size_t elsize)
 {
+    size_t size = 64;
+    while (size < min) size *= 2;
     if (size > *alloc) {
         void *s = calloc(size, elsize);
         if (!s) return DD_ERR_NOMEM;
@@ -135,20 +138,17 @@ static dd_status gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen,
         memset(*tab, 0, *alloc * elsize);
         *gen = 1;
     }
+    *mask = (uint32_t)size - 1;
     return DD_OK;
 }
 
 dd_status dd_trihash_reset(dd_trihash *h, size_t expect)
 {
-    size_t size = 64;
-    while (size < 2 * expect) size *= 2;
     void *s = h->s;
-    dd_status st = gen_table_reset(&s, &h->alloc, &h->gen, size, sizeof *h->s);
+    dd_status st = gen_table_reset(&s, &h->alloc, &h->gen, &h->mask, 2 * expect, sizeof *h->s);
     h->s = s;
-    if (st != DD_OK) return st;
-    h->mask = (uint32_t)size - 1;
     h->n = 0;
-    return DD_OK;
+    return st;
 }
 
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val)
@@ -416,14 +416,11 @@ dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
  * for the 3/2 * nfacets edges of a star) and starts a new generation.     */
 dd_status dd_reserve_edge_hash(dd_tri *t, size_t nfacets)
 {
-    size_t want = 64;
-    while (want < 4 * nfacets) want *= 2;
-    void *h = t->ehash;
-    dd_status st = gen_table_reset(&h, &t->ehash_cap, &t->ehash_gen, want, sizeof *t->ehash);
+    void *h = t->ehash;   /* the mask, not the capacity: small stars stay in cache */
+    dd_status st = gen_table_reset(&h, &t->ehash_cap, &t->ehash_gen, &t->ehash_mask, 4 * nfacets,
+                                   sizeof *t->ehash);
     t->ehash = h;
-    if (st != DD_OK) return st;
-    t->ehash_mask = (uint32_t)want - 1;   /* small stars stay in cache */
-    return DD_OK;
+    return st;
 }
 
 /* Glues the facets of the new cells that contain vertex v: such a facet
