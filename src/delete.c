@@ -13,6 +13,7 @@
 #include "delete.h"
 #include "grr.h"
 #include "qsmall.h"
+#include "wrap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -32,6 +33,7 @@ void dd_delete_ctx_free(dd_del *d)
     dd_free(d->qdt);
     dd_grr_free(d->grr);
     dd_qs_free(d->qs);
+    dd_wrap_free(d->wrap);
     if (d->vscratch_free) d->vscratch_free(d->vscratch);
     free(d);
 }

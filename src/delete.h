@@ -54,6 +54,7 @@ typedef struct dd_del {
 
     struct dd_grr *grr;   /* GRR-CONSTRUCT scratch (grr.c), lazily made   */
     struct dd_qs *qs;     /* compact conflict DT (qsmall.c), lazily made  */
+    struct dd_wrap *wrap; /* gift-wrapping scratch (wrap.c), lazily made  */
     void *vscratch;       /* a strategy's own scratch, kept across calls  */
     void (*vscratch_free)(void *);
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */

@@ -1,17 +1,25 @@
 /*
- * auto.c -- the default strategy: below degree 40 the compact conflict DT
- * (qsmall.c) with the neighbours inserted nearest to q first; from 40 on,
- * grr-hashing.  The crossover is where the bench (make bench, helix and
- * uniform rows) finds the fixed cost of the link DT paid back by guided
- * point location; below it, scanning the few dummy cells is cheaper than
- * maintaining the link.  Nearest-first rather than random order: on the
- * bench's low-degree inputs it builds about a fifth fewer cells (uniform,
- * degree ~15: 1090 vs 1346 over 12 deletions; `dtdel delete --stats`).
- * Not a variant of the paper: a dispatcher over two of its algorithms, so
- * that dd_delete(t, v, NULL) is the fastest correct choice.
+ * auto.c -- the default strategy, a dispatcher over the fastest correct
+ * choice by the cavity's kind and degree (so that dd_delete(t, v, NULL)
+ * is that choice):
+ *  - an interior vertex of degree below 64: gift wrapping (wrap.h), which
+ *    builds only the fill's cells;
+ *  - otherwise, below degree 40, the compact conflict DT (qsmall.c) with
+ *    the neighbours inserted nearest to q first;
+ *  - from 40 on, grr-hashing.
+ * The crossovers are where the bench and the warm harness find them:
+ * gift wrapping against the conflict DT on uniform interior vertices
+ * (degree [12,16) 2.8 vs 3.4 us, [40,48) 36 vs 65 us, [48,64) 58 vs 86 us,
+ * repeated deletions of the same vertices), the conflict DT against
+ * grr-hashing on the helix and uniform rows.  Nearest-first rather than
+ * random order for the conflict DT: on the bench's low-degree inputs it
+ * builds about a fifth fewer cells (uniform, degree ~15: 1090 vs 1346
+ * over 12 deletions; `dtdel delete --stats`).
  */
 #include "../src/qsmall.h"
+#include "../src/wrap.h"
 
+#define AUTO_WRAP_BELOW_DEGREE 64
 #define AUTO_GRR_FROM_DEGREE 40
 
 /* Below the crossover every neighbour set fits the compact structure. */
@@ -21,8 +29,8 @@ extern const dd_variant dd_variant_grr_hashing;
 
 static dd_status auto_fill(dd_del *d)
 {
-    if (d->degree >= AUTO_GRR_FROM_DEGREE)
-        return dd_variant_grr_hashing.fill_cavity(d);
+    if (!d->on_hull && d->degree < AUTO_WRAP_BELOW_DEGREE) return dd_wrap_fill(d);
+    if (d->degree >= AUTO_GRR_FROM_DEGREE) return dd_variant_grr_hashing.fill_cavity(d);
     dd_qs_order_nearest(d);
     dd_status s = dd_del_pick_base(d, d->order.a, d->order.n);
     if (s != DD_OK) return s;
@@ -31,6 +39,6 @@ static dd_status auto_fill(dd_del *d)
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: below degree 40 the compact conflict DT, nearest neighbours first; grr-hashing from 40 on",
+    "default: interior below degree 64 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-hashing",
     auto_fill,
 };

@@ -7,7 +7,8 @@
 #include "../src/delete.h"
 
 extern const dd_variant dd_variant_auto, dd_variant_grr_edge, dd_variant_grr_neighbor, dd_variant_grr_hashing,
-    dd_variant_guide_only, dd_variant_dtq_only, dd_variant_sew_full, dd_variant_grr_brio;
+    dd_variant_guide_only, dd_variant_dtq_only, dd_variant_sew_full, dd_variant_grr_brio,
+    dd_variant_gift_wrap;
 
 const dd_variant *const dd_variant_table[] = {
     &dd_variant_auto,
@@ -18,5 +19,6 @@ const dd_variant *const dd_variant_table[] = {
     &dd_variant_guide_only,
     &dd_variant_dtq_only,
     &dd_variant_sew_full,
+    &dd_variant_gift_wrap,
     NULL,
 };
