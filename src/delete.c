@@ -128,17 +128,26 @@ static dd_status collect_star(dd_del *d)
             }
         }
     }
-    if (s == DD_OK) s = dd_trihash_reset(&d->lhash, d->star.n);
     if (s != DD_OK) return s;
+    d->lhash_ready = 0;
+    d->sew_direct = 0;
+    d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
+    return DD_OK;
+}
+
+dd_status dd_del_link_hash(dd_del *d)
+{
+    if (d->lhash_ready) return DD_OK;
+    dd_tri *t = d->t;
+    dd_status s = dd_trihash_reset(&d->lhash, d->star.n);
     for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
         uint32_t c = d->star.a[k];
         const uint32_t *v = t->tv + 4 * (size_t)c;
-        int i = dd_index_of(t, c, q);
+        int i = dd_index_of(t, c, d->q);
         s = dd_trihash_put(&d->lhash, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
     }
-    if (s != DD_OK) return s;
-    d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
-    return DD_OK;
+    d->lhash_ready = s == DD_OK;
+    return s;
 }
 
 /* Moves four affinely independent points of a[0..n) to a[0..3] (first
@@ -293,17 +302,16 @@ static dd_status fill_coplanar_hull(dd_del *d)
 
 /* ---- step 3: sewing ------------------------------------------------------ */
 
-static dd_status sew(dd_del *d)
+/* Matches every boundary facet of the fill with its link triangle, into
+ * d->sew_out; checks that each link triangle is met exactly once.       */
+static dd_status sew_match(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
     size_t nf = d->fill.n;
+    dd_status s = dd_del_link_hash(d);
+    if (s != DD_OK) return s;
     dd_mark epx = dd_new_epoch(x, 1);
     for (size_t k = 0; k < nf; k++) x->stamp[d->fill.a[k]] = epx;
-    dd_status s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
-    if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
-    if (s != DD_OK) return s;
-    /* Match every boundary facet of the fill with its link triangle; check
-     * that each link triangle is met exactly once.  No change yet.        */
     dd_mark ep = dd_new_epoch(t, 1);
     size_t matched = 0;
     for (size_t k = 0; k < nf; k++) {
@@ -331,6 +339,20 @@ static dd_status sew(dd_del *d)
     if (matched != d->star.n)
         return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: the cavity fill covers %zu of %zu link triangles",
                        t->v2in[d->q], matched, d->star.n);
+    return DD_OK;
+}
+
+static dd_status sew(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    size_t nf = d->fill.n;
+    dd_status s = DD_OK;
+    if (!d->sew_direct) {
+        s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
+        if (s == DD_OK) s = sew_match(d);
+    }
+    if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
+    if (s != DD_OK) return s;
     s = dd_reserve_cells(t, (uint32_t)nf);
     if (s != DD_OK) return s;
 

@@ -48,7 +48,9 @@ typedef struct dd_del {
     dd_vec nbr;           /* P minus DD_INF: the finite neighbours of q   */
     uint32_t base[4];     /* 4 affinely independent points of nbr         */
 
-    dd_trihash lhash;     /* link triangle (vertex triple) -> star slot   */
+    dd_trihash lhash;     /* link triangle (vertex triple) -> star slot,
+                             built on demand: dd_del_link_hash            */
+    int lhash_ready;      /* lhash holds this deletion's link             */
     uint32_t *vmark;      /* per vertex id, epoch marks (cap t->cap_v)    */
     uint32_t vmark_cap, vepoch;
 
@@ -61,7 +63,10 @@ typedef struct dd_del {
     uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
     dd_vec fill;          /* cells of qdt that fill the cavity            */
     dd_vec order;         /* scratch: the strategy's insertion order      */
-    dd_vec sew_out;       /* scratch: per fill facet, its outside facet   */
+    dd_vec sew_out;       /* per fill facet 4k+j, its outside facet (or
+                             DD_NONE: inside the fill); a strategy that
+                             sets sew_direct has filled it                */
+    int sew_direct;       /* the strategy matched the fill to the link    */
     dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
     uint64_t rng;
 
@@ -107,6 +112,10 @@ const dd_variant *dd_find_variant(const char *name);
 dd_status dd_del_star_of(dd_tri *t, uint32_t v, dd_del **out);
 
 /* ---- services for strategies -------------------------------------------- */
+
+/* Builds d->lhash for this deletion's link, once (collect_star does not:
+ * most deletions never look a link triangle up by its vertices).       */
+dd_status dd_del_link_hash(dd_del *d);
 
 uint32_t dd_del_rand(dd_del *d);
 /* Shuffles a[0..n) with d's generator. */

@@ -65,6 +65,10 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
      * fits in one pass's marks, else through its link triangle in
      * collect_star's hash.                                                */
     int by_stamp = n <= DD_EPOCH_STEP_MAX;
+    if (!by_stamp) {
+        dd_status s = dd_del_link_hash(d);
+        if (s != DD_OK) return s;
+    }
     dd_mark base = by_stamp ? dd_new_epoch(t, n) : 0;
     for (uint32_t k = 0; k < n; k++) {
         uint32_t c = d->star.a[k], *w = l->lv + 3 * k;

@@ -22,6 +22,12 @@
 
 #define W_NONE UINT32_MAX
 
+/* A slot of the open-facet table: used iff gen is the table's. */
+typedef struct w_slot {
+    uint64_t key;                 /* w_tri_key of the triangle            */
+    uint32_t rec, gen;
+} w_slot;
+
 struct dd_wrap {
     uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
     const double **pt;            /* local -> point                       */
@@ -29,15 +35,16 @@ struct dd_wrap {
                                      (x_k - q, |x_k - q|^2), rounded      */
     double *o;                    /* scan scratch, per local number       */
     double ierr, oerr;            /* the filters' error bounds (+inf: off) */
-    /* global id -> local number: open addressing, used iff gen matches */
-    uint32_t *lkey, *lval, *lgen, lmask, lcap, lg;
-    /* open facets: key (sorted triple) -> facet record */
-    uint64_t *fkey;
-    uint32_t *fval, *fgen, fmask, fcap, fg;
+    uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
+                                     this deletion's neighbours only      */
+    w_slot *slot;                 /* open facets: key -> facet record     */
+    uint32_t fmask, fbits, fcap, fg;
     /* facet records */
     uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
     uint32_t *own;                /* qdt facet 4c+j on the other side, or
                                      W_NONE for a link triangle           */
+    uint32_t *out;                /* a link triangle's mesh facet outside
+                                     the cavity                           */
     uint8_t *closed;
     uint32_t *stack, nrec, cap_rec;
     uint64_t exact;               /* exact fallbacks (tuning statistic)  */
@@ -48,10 +55,8 @@ void dd_wrap_free(struct dd_wrap *w)
     if (!w) return;
     free(w->pt);
     for (int i = 0; i < 4; i++) free(w->lift[i]);
-    free(w->o);
-    free(w->lkey); free(w->lval); free(w->lgen);
-    free(w->fkey); free(w->fval); free(w->fgen);
-    free(w->tri); free(w->own); free(w->closed); free(w->stack);
+    free(w->o); free(w->loc); free(w->slot);
+    free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack);
     free(w);
 }
 
@@ -63,8 +68,8 @@ static int grow(void **p, size_t n, size_t size)
     return 1;
 }
 
-/* Room for n neighbours (and the local-number table sized for them). */
-static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n)
+/* Room for n neighbours, and local numbers for vertex ids below nv. */
+static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
 {
     if (n > w->cap_n) {
         uint32_t cap = w->cap_n ? w->cap_n : 64;
@@ -75,61 +80,30 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n)
             if (!grow((void **)&w->lift[i], cap, sizeof *w->lift[i])) return DD_ERR_NOMEM;
         w->cap_n = cap;
     }
-    uint32_t lcap = 16;
-    while (lcap < 4 * (size_t)n) lcap *= 2;
-    if (lcap > w->lcap) {
-        if (!grow((void **)&w->lkey, lcap, sizeof *w->lkey) || !grow((void **)&w->lval, lcap, sizeof *w->lval) ||
-            !grow((void **)&w->lgen, lcap, sizeof *w->lgen))
-            return DD_ERR_NOMEM;
-        memset(w->lgen, 0, lcap * sizeof *w->lgen);
-        w->lcap = lcap;
-        w->lg = 0;
+    if (nv > w->cap_loc) {
+        if (!grow((void **)&w->loc, nv, sizeof *w->loc)) return DD_ERR_NOMEM;
+        w->cap_loc = nv;
     }
-    if (++w->lg == 0) {
-        memset(w->lgen, 0, w->lcap * sizeof *w->lgen);
-        w->lg = 1;
-    }
-    w->lmask = lcap - 1;
     return DD_OK;
-}
-
-static inline uint32_t w_hash32(uint32_t x) { return (uint32_t)(dd_mix64(x) >> 32); }
-
-static void w_local_put(struct dd_wrap *w, uint32_t g, uint32_t k)
-{
-    uint32_t h = w_hash32(g) & w->lmask;
-    while (w->lgen[h] == w->lg) h = (h + 1) & w->lmask;
-    w->lgen[h] = w->lg;
-    w->lkey[h] = g;
-    w->lval[h] = k;
-}
-
-static uint32_t w_local_get(const struct dd_wrap *w, uint32_t g)
-{
-    uint32_t h = w_hash32(g) & w->lmask;
-    for (; w->lgen[h] == w->lg; h = (h + 1) & w->lmask)
-        if (w->lkey[h] == g) return w->lval[h];
-    return W_NONE;
 }
 
 /* Empties the open-facet table and sizes it for `expect` facets. */
 static dd_status w_facets_reset(struct dd_wrap *w, size_t expect)
 {
-    uint32_t cap = 64;
-    while (cap < 2 * expect) cap *= 2;
+    uint32_t cap = 64, bits = 6;
+    while (cap < 2 * expect) { cap *= 2; bits++; }
     if (cap > w->fcap) {
-        if (!grow((void **)&w->fkey, cap, sizeof *w->fkey) || !grow((void **)&w->fval, cap, sizeof *w->fval) ||
-            !grow((void **)&w->fgen, cap, sizeof *w->fgen))
-            return DD_ERR_NOMEM;
-        memset(w->fgen, 0, cap * sizeof *w->fgen);
+        if (!grow((void **)&w->slot, cap, sizeof *w->slot)) return DD_ERR_NOMEM;
+        memset(w->slot, 0, cap * sizeof *w->slot);
         w->fcap = cap;
         w->fg = 0;
     }
     if (++w->fg == 0) {
-        memset(w->fgen, 0, w->fcap * sizeof *w->fgen);
+        memset(w->slot, 0, w->fcap * sizeof *w->slot);
         w->fg = 1;
     }
     w->fmask = cap - 1;
+    w->fbits = bits;
     return DD_OK;
 }
 
@@ -142,13 +116,16 @@ static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
     return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
 }
 
-/* The slot of key: where it is, or the empty slot where it would go. */
-static inline uint32_t w_facet_slot(const struct dd_wrap *w, uint64_t key)
+/* The slot of key: where it is, or the empty slot where it would go
+ * (Fibonacci hashing: the top bits of key times 2^64 / golden ratio).   */
+static inline w_slot *w_facet_slot(const struct dd_wrap *w, uint64_t key)
 {
-    uint32_t h = (uint32_t)(dd_mix64(key) >> 32) & w->fmask;
-    while (w->fgen[h] == w->fg && w->fkey[h] != key) h = (h + 1) & w->fmask;
-    return h;
+    uint32_t h = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> (64 - w->fbits));
+    while (w->slot[h].gen == w->fg && w->slot[h].key != key) h = (h + 1) & w->fmask;
+    return &w->slot[h];
 }
+
+static inline int w_used(const struct dd_wrap *w, const w_slot *sl) { return sl->gen == w->fg; }
 
 /* Room for one more facet record, and the table at most half full. */
 static dd_status w_reserve_rec(struct dd_wrap *w)
@@ -156,6 +133,7 @@ static dd_status w_reserve_rec(struct dd_wrap *w)
     if (w->nrec == w->cap_rec) {
         uint32_t cap = w->cap_rec ? 2 * w->cap_rec : 256;
         if (!grow((void **)&w->tri, cap, sizeof *w->tri) || !grow((void **)&w->own, cap, sizeof *w->own) ||
+            !grow((void **)&w->out, cap, sizeof *w->out) ||
             !grow((void **)&w->closed, cap, sizeof *w->closed) || !grow((void **)&w->stack, cap, sizeof *w->stack))
             return DD_ERR_NOMEM;
         w->cap_rec = cap;
@@ -165,26 +143,22 @@ static dd_status w_reserve_rec(struct dd_wrap *w)
         if (s != DD_OK) return s;
         for (uint32_t r = 0; r < w->nrec; r++) {
             uint64_t key = w_tri_key(w->tri[r][0], w->tri[r][1], w->tri[r][2]);
-            uint32_t h = w_facet_slot(w, key);
-            w->fgen[h] = w->fg;
-            w->fkey[h] = key;
-            w->fval[h] = r;
+            w_slot *sl = w_facet_slot(w, key);
+            *sl = (w_slot){key, r, w->fg};
         }
     }
     return DD_OK;
 }
 
 /* Opens triangle (a, b, c), whose other side is qdt facet `own` (W_NONE:
- * a link triangle), at the table slot h found for it.                   */
-static void w_open(struct dd_wrap *w, uint32_t h, uint64_t key, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
+ * a link triangle), at the table slot found for it.                     */
+static void w_open(struct dd_wrap *w, w_slot *sl, uint64_t key, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
 {
     uint32_t r = w->nrec++;
     w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
     w->own[r] = own;
     w->closed[r] = 0;
-    w->fgen[h] = w->fg;
-    w->fkey[h] = key;
-    w->fval[h] = r;
+    *sl = (w_slot){key, r, w->fg};
 }
 
 /* Lifts the neighbours relative to q and sets the filters' bounds.
@@ -379,26 +353,38 @@ static dd_status w_broken(dd_del *d, const char *what)
     return dd_fail(d->t, DD_ERR_INTERNAL, "gift wrapping the cavity of point %u: %s", d->t->v2in[d->q], what);
 }
 
+/* Room for `room` fill cells in all, `made` of them made already. */
+static dd_status w_reserve_fill(dd_del *d, size_t made, size_t room)
+{
+    dd_status s = dd_reserve_cells(d->qdt, (uint32_t)(room - made));
+    if (s == DD_OK) s = dd_vec_reserve(&d->fill, room);
+    if (s == DD_OK) s = dd_vec_reserve(&d->sew_out, 4 * room);
+    return s;
+}
+
 dd_status dd_wrap_fill(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
     if (d->on_hull) return w_broken(d, "a hull vertex");
     struct dd_wrap *w;
     dd_status s = w_get(d, &w);
-    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n);
+    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
     if (s != DD_OK) return s;
     DD_PHASE_BEGIN(d);
     w_sort_ids(d->order.a, d->order.n);
     const uint32_t *gid = d->order.a;
-    w->n = (uint32_t)d->order.n;
-    for (uint32_t k = 0; k < w->n; k++) {
+    const uint32_t n = w->n = (uint32_t)d->order.n;
+    for (uint32_t k = 0; k < n; k++) {
         w->pt[k] = dd_pt(t, gid[k]);
-        w_local_put(w, gid[k], k);
+        w->loc[gid[k]] = k;
     }
     w_lift(w, d->qp);
     dd_qdt_reset(d, 0);
     w->nrec = 0;
-    s = w_facets_reset(w, 4 * (size_t)w->n);
+    size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
+    s = w_facets_reset(w, 4 * (size_t)n);
+    if (s == DD_OK) s = w_reserve_fill(d, 0, room);
+    if (s != DD_OK) return s;
     /* The link triangles, open towards q, all in the table; the wrap
      * starts from one of them and reaches the others through the fill
      * (a triangulated ball: its cells are connected through interior
@@ -409,70 +395,92 @@ dd_status dd_wrap_fill(dd_del *d)
      * is the same computation, as with the other strategies.             */
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
-    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+    for (size_t k = 0; k < d->star.n; k++) {
         uint32_t c = d->star.a[k];
         const uint32_t *v = t->tv + 4 * (size_t)c;
         int i = dd_index_of(t, c, d->q);
-        uint32_t a = w_local_get(w, v[dd_facet[i][0]]), b = w_local_get(w, v[dd_facet[i][1]]),
-                 e = w_local_get(w, v[dd_facet[i][2]]);
-        if (a == W_NONE || b == W_NONE || e == W_NONE) return w_broken(d, "a link vertex is not a neighbour");
+        uint32_t lv[3];
+        for (int j = 0; j < 3; j++) {
+            uint32_t g = v[dd_facet[i][j]];
+            if (g >= t->nvid || w->loc[g] >= n || gid[w->loc[g]] != g)
+                return w_broken(d, "a link vertex is not a neighbour");
+            lv[j] = w->loc[g];
+        }
         s = w_reserve_rec(w);
-        if (s != DD_OK) break;
-        uint64_t key = w_tri_key(a, b, e);
-        uint32_t h = w_facet_slot(w, key);
-        if (w->fgen[h] == w->fg) return w_broken(d, "a link triangle appears twice");
+        if (s != DD_OK) return s;
+        uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
+        w_slot *sl = w_facet_slot(w, key);
+        if (w_used(w, sl)) return w_broken(d, "a link triangle appears twice");
         if (key < kmin) { kmin = key; rmin = w->nrec; }
-        w_open(w, h, key, a, b, e, W_NONE);
+        w->out[w->nrec] = t->tn[4 * (size_t)c + (uint32_t)i];
+        w_open(w, sl, key, lv[0], lv[1], lv[2], W_NONE);
     }
-    if (s != DD_OK) return s;
     if (w->nrec == 0) return w_broken(d, "no link triangle");
     uint32_t *st = w->tri[rmin];
     while (st[0] > st[1] || st[0] > st[2]) {      /* rotate: same orientation */
         uint32_t x0 = st[0];
         st[0] = st[1]; st[1] = st[2]; st[2] = x0;
     }
-    /* Wrap: each open facet gives the cell on its open side. */
-    uint32_t ns = 0;
+    /* Wrap: each open facet gives the cell on its open side.  Each facet
+     * of a new cell goes in d->sew_out for the sew: a link triangle's
+     * outside facet, or DD_NONE inside the fill.                         */
+    uint32_t ns = 0, nlink = 0;
     w->stack[ns++] = rmin;
-    size_t limit = 8 * (size_t)w->n * w->n + 64;     /* |fill| is O(n^2) */
-    while (ns > 0 && s == DD_OK) {
+    size_t limit = 8 * (size_t)n * n + 64;          /* |fill| is O(n^2) */
+    while (ns > 0) {
         uint32_t r = w->stack[--ns];
         if (w->closed[r]) continue;
         w->closed[r] = 1;
         uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2];
         uint32_t p = wrap_scan(w, &x->pred, a, b, e);
         if (p == W_NONE) return w_broken(d, "an open facet has no point beyond it");
-        if (d->fill.n >= limit) return w_broken(d, "the fill does not close");
-        s = dd_reserve_cells(x, 1);
-        if (s == DD_OK) s = dd_vec_reserve(&d->fill, d->fill.n + 1);
-        if (s != DD_OK) break;
+        size_t fp = d->fill.n;
+        if (fp >= limit) return w_broken(d, "the fill does not close");
+        if (fp == room && (s = w_reserve_fill(d, fp, room *= 2)) != DD_OK) return s;
         uint32_t m = dd_new_cell(x), lv[4] = {a, b, e, p};
-        uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m;
+        uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m, *so = d->sew_out.a + 4 * fp;
         for (int i = 0; i < 4; i++) tv[i] = gid[lv[i]];
         tn[3] = w->own[r];
-        if (w->own[r] != W_NONE) x->tn[w->own[r]] = 4 * m + 3;
-        for (uint32_t j = 0; j < 3 && s == DD_OK; j++) {
+        if (w->own[r] != W_NONE) {
+            x->tn[w->own[r]] = 4 * m + 3;
+            so[3] = DD_NONE;
+        } else {
+            so[3] = w->out[r];
+            nlink++;
+        }
+        for (uint32_t j = 0; j < 3; j++) {
             uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
             uint64_t key = w_tri_key(f0, f1, f2);
-            uint32_t h = w_facet_slot(w, key);
-            if (w->fgen[h] == w->fg) {           /* its other side is known */
-                uint32_t o = w->fval[h];
+            w_slot *sl = w_facet_slot(w, key);
+            if (w_used(w, sl)) {                 /* its other side is known */
+                uint32_t o = sl->rec;
                 if (w->closed[o]) return w_broken(d, "a triangle bounds three cells");
                 w->closed[o] = 1;
                 tn[j] = w->own[o];
-                if (w->own[o] != W_NONE) x->tn[w->own[o]] = 4 * m + j;
+                if (w->own[o] != W_NONE) {
+                    x->tn[w->own[o]] = 4 * m + j;
+                    so[j] = DD_NONE;
+                } else {
+                    so[j] = w->out[o];
+                    nlink++;
+                }
                 continue;
             }
             s = w_reserve_rec(w);
-            if (s != DD_OK) break;
-            h = w_facet_slot(w, key);            /* the table may have grown */
+            if (s != DD_OK) return s;
+            sl = w_facet_slot(w, key);           /* the table may have grown */
             tn[j] = DD_NONE;
+            so[j] = DD_NONE;
             w->stack[ns++] = w->nrec;
-            w_open(w, h, key, f1, f0, f2, 4 * m + j);   /* reversed: open outwards */
+            w_open(w, sl, key, f1, f0, f2, 4 * m + j);   /* reversed: open outwards */
         }
         d->fill.a[d->fill.n++] = m;
     }
+    /* Each link triangle closed at most once (above), so all of them
+     * exactly once: the sew needs no matching of its own.               */
+    if (nlink != d->star.n) return w_broken(d, "the fill does not cover the link");
+    d->sew_direct = 1;
     x->tets_created = d->fill.n;
     DD_PHASE_END(d, DD_PH_CONFLICT);
-    return s;
+    return DD_OK;
 }
