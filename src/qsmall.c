@@ -211,19 +211,25 @@ static inline uint32_t qs_outer_bytes(uint32_t w)
  * shifting: degree 6 1.98 vs 1.53 us, 7 2.68 vs 2.65, 8 3.15 vs 4.29,
  * 9 3.63 vs 6.20.                                                        */
 #define QS_SHIFT_FROM 7
-static void qs_shift(struct dd_qs *s)
+int dd_shift_centre(const double *a, const double *b, const double *c, double C[3])
 {
-    s->shifted = 1;
-    const double *a = s->lift[0], *b = s->lift[1], *c = s->lift[2], *q = s->pt[QS_QD];
     double bc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
     double ca[3] = {c[1] * a[2] - c[2] * a[1], c[2] * a[0] - c[0] * a[2], c[0] * a[1] - c[1] * a[0]};
     double ab[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]), C[3];
+    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]);
     for (int i = 0; i < 3; i++) {
         C[i] = (a[3] * bc[i] + b[3] * ca[i] + c[3] * ab[i]) / den;
-        if (!(fabs(C[i]) <= 1e50)) return;         /* also NaN, inf */
+        if (!(fabs(C[i]) <= 1e50)) return 0;       /* also NaN, inf */
     }
-    double w[DD_QS_MAXV], M = 0, m = s->lift_m;
+    return 1;
+}
+
+static void qs_shift(struct dd_qs *s)
+{
+    s->shifted = 1;
+    double C[3], w[DD_QS_MAXV], M = 0, m = s->lift_m;
+    const double *q = s->pt[QS_QD];
+    if (!dd_shift_centre(s->lift[0], s->lift[1], s->lift[2], C)) return;
     for (uint32_t k = 0; k < s->nlift; k++) {
         w[k] = dd_exp_shifted_lift(s->pt[k], q, C);
         if (fabs(w[k]) > M) M = fabs(w[k]);

@@ -40,6 +40,12 @@ dd_status dd_qs_fill(dd_del *d);
  * on the bench's inputs (auto.c).                                        */
 void dd_qs_order_nearest(dd_del *d);
 
+/* The centre C (relative to q) of the sphere through q and the points
+ * with lifts a, b, c ((x - q, |x - q|^2)), for the shifted lifts
+ * |x - q|^2 - 2 (x - q).C of nearly cospherical cavities (qsmall.c,
+ * wrap.c); 0 when it is not finite and below 1e50.                       */
+int dd_shift_centre(const double *a, const double *b, const double *c, double C[3]);
+
 void dd_qs_free(struct dd_qs *s);
 
 #endif

@@ -16,11 +16,17 @@
  * means a broken input and the deletion stops before touching the mesh.
  */
 #include "wrap.h"
+#include "expansion.h"
+#include "qsmall.h"
+
+#include <math.h>
 
 #include <stdlib.h>
 #include <string.h>
 
 #define W_NONE UINT32_MAX
+#define W_BAIL (UINT32_MAX - 1)   /* a degenerate hull case: not for wrap.c */
+#define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
 
 /* A slot of the open-facet table: used iff gen is the table's. */
 typedef struct w_slot {
@@ -35,6 +41,9 @@ struct dd_wrap {
                                      (x_k - q, |x_k - q|^2), rounded      */
     double *o;                    /* scan scratch, per local number       */
     double ierr, oerr;            /* the filters' error bounds (+inf: off) */
+    double m;                     /* max |x_k - q_k| over the neighbours  */
+    const double *q;
+    int shifted;                  /* the shifted lifts were tried         */
     uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
                                      this deletion's neighbours only      */
     w_slot *slot;                 /* open facets: key -> facet record     */
@@ -47,7 +56,6 @@ struct dd_wrap {
                                      the cavity                           */
     uint8_t *closed;
     uint32_t *stack, nrec, cap_rec;
-    uint64_t exact;               /* exact fallbacks (tuning statistic)  */
 };
 
 void dd_wrap_free(struct dd_wrap *w)
@@ -202,13 +210,42 @@ static void w_lift(struct dd_wrap *w, const double *q)
     int ok = m >= 1e-55 && m <= 1e55;
     w->ierr = ok ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
     w->oerr = ok ? 1e-13 * m * m * m : 1.0 / 0.0;
+    w->m = m;
+    w->q = q;
+    w->shifted = !ok;
+}
+
+/* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
+ * wrap_scan have the same entries and at most as many roundings), for
+ * nearly cospherical cavities where the plain filter abstains.  Tried
+ * once per deletion, when a fast scan first fails its check, with at
+ * least 7 neighbours (below that the exact expansions of the shift cost
+ * more than the tests they save, as in qsmall.c); the scan is then run
+ * again.                                                                 */
+static void w_shift(struct dd_wrap *w)
+{
+    w->shifted = 1;
+    double *const *L = w->lift, l[3][4], C[3], M = 0;
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 4; i++) l[j][i] = L[i][j];
+    if (!dd_shift_centre(l[0], l[1], l[2], C)) return;
+    double *o = w->o;                              /* scratch until the next scan */
+    for (uint32_t k = 0; k < w->n; k++) {
+        o[k] = dd_exp_shifted_lift(w->pt[k], w->q, C);
+        if (fabs(o[k]) > M) M = fabs(o[k]);
+    }
+    double err = 5e-12 * w->m * w->m * w->m * M;
+    if (!(err >= 1e-290 && err < w->ierr)) return;
+    memcpy(L[3], o, w->n * sizeof *o);
+    w->ierr = err;
 }
 
 /* The fill cell on the positive side of open facet (a, b, c): the point p
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
  * other such point (perturbed as CGAL does).  The spheres through a, b, c
  * are ordered along their pencil, so the point is a minimum; W_NONE if no
- * point is on the positive side.
+ * point is surely on the positive side (and none on abc's plane), W_BAIL
+ * if none is beyond but some lie on the plane.
  *
  * With rows B = L[b]-L[a], C = L[c]-L[a] (see w_lift) and P = L[p]-L[a],
  * w(X, P) = det4(B, C, X, P) is the in-sphere determinant of a, b, c, x, p
@@ -242,6 +279,7 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
     double K[4] = {0, 0, 0, 0};
     const double oerr = w->oerr, ierr = w->ierr;
     uint32_t best = W_NONE;
+    int zero = 0;
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b || k == c) continue;
         double P[4];
@@ -249,22 +287,26 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         double o = P[0] * m[3] - P[1] * m[1] + P[2] * m[0];
         if (!(o > oerr)) {
             if (o < -oerr) continue;
-            w->exact++;
-            if (dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]) <= 0) continue;
+            int or = dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+            zero |= or == 0;
+            if (or <= 0) continue;
         }
         if (best != W_NONE) {
             double det = K[0] * P[0] + K[1] * P[1] + K[2] * P[2] + K[3] * P[3];
             if (det >= -ierr) {                  /* not surely inside */
                 if (det > ierr) continue;        /* surely outside    */
-                w->exact++;
-                const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], w->pt[best]};
+                    const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], w->pt[best]};
                 if (!dd_points_conflict(pr, cell, -1, -1, w->pt[k])) continue;
             }
         }
         best = k;
         w_cofactors(K, P, m);
     }
-    return best;
+    /* No point beyond: for a hull vertex, abc becomes a hull facet, the
+     * cell (a, b, c, infinite).  With points in abc's plane the coplanar
+     * hull rules of the perturbation would decide: left to the conflict
+     * DT (W_BAIL).                                                       */
+    return best == W_NONE && zero ? W_BAIL : best;
 }
 
 /* The fast scan, without data-dependent branches: o and t for every
@@ -288,6 +330,9 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     w_cofactors(T, N, m);
     const double oerr = w->oerr, ierr = w->ierr;
     const uint32_t n = w->n;
+    /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
+     * o(c) are 0 up to less than oerr (their exact value is 0), so each
+     * counts once among the unsure orientations, never as a candidate. */
     double *o = w->o;
     int unsure = 0;
     double lo = 1.0 / 0.0;
@@ -296,25 +341,56 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
         double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
         double ok = P0 * N[0] + P1 * N[1] + P2 * N[2];
         double tk = P0 * T[0] + P1 * T[1] + P2 * T[2] + P3 * T[3];
-        int cand = (k != a) & (k != b) & (k != c);
-        int pos = cand & (ok > oerr);
-        unsure |= cand & !(ok > oerr) & (ok >= -oerr);
+        int pos = ok > oerr;
+        unsure += !pos & (ok >= -oerr);
         o[k] = pos ? ok : -1.0;                 /* > oerr: a candidate */
         double lam = pos ? tk / ok : 1.0 / 0.0;
         int better = lam < lo;
         lo = better ? lam : lo;
         best = better ? k : best;
     }
-    if (unsure || best == W_NONE) return wrap_scan_exact(w, pr, a, b, c, m);
+    if (unsure != 3 || best == W_NONE) return wrap_scan_exact(w, pr, a, b, c, m);
     double X[4] = {L[0][best] - ax, L[1][best] - ay, L[2][best] - az, L[3][best] - aw};
     w_cofactors(K, X, m);
+    o[best] = -1.0;                             /* not tested against itself */
     int bad = 0;
     for (uint32_t k = 0; k < n; k++) {
         double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
         double det = K[0] * P0 + K[1] * P1 + K[2] * P2 + K[3] * P3;
-        bad |= (o[k] > oerr) & (k != best) & !(det > ierr);
+        bad |= (o[k] > oerr) & !(det > ierr);
     }
-    return bad ? wrap_scan_exact(w, pr, a, b, c, m) : best;
+    if (!bad) return best;
+    return w->shifted || n < 7 ? wrap_scan_exact(w, pr, a, b, c, m) : W_SHIFT;
+}
+
+/* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
+ * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
+ * facet (b, a, p) has no point beyond it.  Seen along the hull edge ab,
+ * the points lie in a wedge of less than a half-turn, and "x beyond the
+ * plane of b, a, p" orders them by angle: one pass keeping the point
+ * furthest round (Jarvis) finds p.  Exact predicates throughout (few
+ * cells of a fill are infinite); W_BAIL when a point is in the plane of
+ * b, a and the best so far, where the wedge may be a half-turn and the
+ * perturbed in-circle rules of the hull would decide.                    */
+static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
+{
+    uint32_t best = W_NONE;
+    for (uint32_t k = 0; k < w->n; k++) {
+        if (k == a || k == b) continue;
+        if (best == W_NONE) {
+            if (dd_orient_coplanar(pr, w->pt[a], w->pt[b], w->pt[k]) != 0) best = k;
+            continue;
+        }
+        int o = dd_orient3d(pr, w->pt[b], w->pt[a], w->pt[best], w->pt[k]);
+        if (o == 0) return W_BAIL;
+        if (o > 0) best = k;
+    }
+    /* Checked against the final point: none beyond, none in its plane. */
+    for (uint32_t k = 0; k < w->n && best != W_NONE; k++) {
+        if (k == a || k == b || k == best) continue;
+        if (dd_orient3d(pr, w->pt[b], w->pt[a], w->pt[best], w->pt[k]) >= 0) return W_BAIL;
+    }
+    return best;
 }
 
 static int cmp_u32(const void *x, const void *y)
@@ -362,10 +438,10 @@ static dd_status w_reserve_fill(dd_del *d, size_t made, size_t room)
     return s;
 }
 
-dd_status dd_wrap_fill(dd_del *d)
+dd_status dd_wrap_fill(dd_del *d, int *declined)
 {
     dd_tri *t = d->t, *x = d->qdt;
-    if (d->on_hull) return w_broken(d, "a hull vertex");
+    *declined = 0;
     struct dd_wrap *w;
     dd_status s = w_get(d, &w);
     if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
@@ -373,7 +449,7 @@ dd_status dd_wrap_fill(dd_del *d)
     DD_PHASE_BEGIN(d);
     w_sort_ids(d->order.a, d->order.n);
     const uint32_t *gid = d->order.a;
-    const uint32_t n = w->n = (uint32_t)d->order.n;
+    const uint32_t n = w->n = (uint32_t)d->order.n, inf = n;   /* DD_INF's local number */
     for (uint32_t k = 0; k < n; k++) {
         w->pt[k] = dd_pt(t, gid[k]);
         w->loc[gid[k]] = k;
@@ -402,6 +478,10 @@ dd_status dd_wrap_fill(dd_del *d)
         uint32_t lv[3];
         for (int j = 0; j < 3; j++) {
             uint32_t g = v[dd_facet[i][j]];
+            if (g == DD_INF) {
+                lv[j] = inf;
+                continue;
+            }
             if (g >= t->nvid || w->loc[g] >= n || gid[w->loc[g]] != g)
                 return w_broken(d, "a link vertex is not a neighbour");
             lv[j] = w->loc[g];
@@ -431,15 +511,32 @@ dd_status dd_wrap_fill(dd_del *d)
         uint32_t r = w->stack[--ns];
         if (w->closed[r]) continue;
         w->closed[r] = 1;
-        uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2];
-        uint32_t p = wrap_scan(w, &x->pred, a, b, e);
+        uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
+        if (a == inf || b == inf || e == inf) {
+            while (e != inf) {                  /* rotate: same orientation */
+                uint32_t a0 = a;
+                a = b; b = e; e = a0;
+            }
+            p = wrap_scan_inf(w, &x->pred, a, b);
+        } else {
+            p = wrap_scan(w, &x->pred, a, b, e);
+            if (p == W_SHIFT) {
+                w_shift(w);
+                p = wrap_scan(w, &x->pred, a, b, e);
+            }
+            if (p == W_NONE && d->on_hull) p = inf;
+        }
+        if (p == W_BAIL) {
+            *declined = 1;
+            return DD_OK;
+        }
         if (p == W_NONE) return w_broken(d, "an open facet has no point beyond it");
         size_t fp = d->fill.n;
         if (fp >= limit) return w_broken(d, "the fill does not close");
         if (fp == room && (s = w_reserve_fill(d, fp, room *= 2)) != DD_OK) return s;
         uint32_t m = dd_new_cell(x), lv[4] = {a, b, e, p};
         uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m, *so = d->sew_out.a + 4 * fp;
-        for (int i = 0; i < 4; i++) tv[i] = gid[lv[i]];
+        for (int i = 0; i < 4; i++) tv[i] = lv[i] == inf ? DD_INF : gid[lv[i]];
         tn[3] = w->own[r];
         if (w->own[r] != W_NONE) {
             x->tn[w->own[r]] = 4 * m + 3;

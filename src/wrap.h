@@ -23,11 +23,14 @@
 
 #include "delete.h"
 
-/* Fills d->qdt / d->fill for the cavity of d->q, which must be interior
- * (!d->on_hull); d->order holds d->nbr and is sorted by vertex id.
- * DD_ERR_INTERNAL (with a message) if the fill does not close, which
- * only a broken triangulation can cause.                                */
-dd_status dd_wrap_fill(dd_del *d);
+/* Fills d->qdt / d->fill for the cavity of d->q and the sew's matching
+ * (d->sew_out, d->sew_direct); d->order holds d->nbr and is sorted by
+ * vertex id.  For a hull vertex whose new hull facets have points in
+ * their planes, *declined = 1 and nothing is filled: the perturbation's
+ * coplanar hull rules are left to the conflict DT.  DD_ERR_INTERNAL
+ * (with a message) if the fill does not close, which only a broken
+ * triangulation can cause.                                               */
+dd_status dd_wrap_fill(dd_del *d, int *declined);
 
 void dd_wrap_free(struct dd_wrap *w);
 

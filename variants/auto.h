@@ -1,0 +1,13 @@
+/*
+ * auto.h -- what gift_wrap.c borrows from auto.c.
+ */
+#ifndef DD_AUTO_H
+#define DD_AUTO_H
+
+#include "../src/delete.h"
+
+/* auto's choice without gift wrapping: below degree 40 the compact
+ * conflict DT, nearest neighbours first; from 40 on, grr-hashing.       */
+dd_status dd_auto_conflict_dt(dd_del *d);
+
+#endif
