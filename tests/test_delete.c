@@ -200,6 +200,55 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
     return p;
 }
 
+/* Gift wrapping (wrap.c) builds the fill's cells and no others: the
+ * cells it reports built equal the cells the deletion added, counted from
+ * the mesh (a link of degree d, the infinite vertex included, is a
+ * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
+ * and hull vertices alike, and for auto, which wraps below degree 64.
+ * The result itself is CGAL's: checked by the tests above.              */
+static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
+{
+    uint32_t np;
+    double *p = gen(ds, n, &np);
+    dd_tri *t = NULL;
+    char msg[256], name[96];
+    snprintf(name, sizeof name, "wrap-only-fill/%s-%u/%s", ds, np, variant);
+    if (!p || dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "setup failed");
+        free(p);
+        return;
+    }
+    int ok = 1, tested = 0;
+    char why[160] = "";
+    for (uint32_t v = 0; v < np && tested < 40; v += 7) {
+        if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 64) continue;
+        size_t before = dd_num_tets(t), star = 2 * (size_t)dd_degree(t, v) - 4;
+        if (dd_delete(t, v, variant) != DD_OK) {
+            snprintf(why, sizeof why, "deleting %u: %s", v, dd_errmsg(t));
+            ok = 0;
+            break;
+        }
+        dd_delete_stats ds_;
+        dd_last_delete_stats(t, &ds_);
+        size_t fill = dd_num_tets(t) + star - before;
+        if (ds_.tets_created != fill) {
+            snprintf(why, sizeof why, "vertex %u (degree %u, hull %d): %llu cells built, fill %zu", v,
+                     ds_.degree, ds_.on_hull, (unsigned long long)ds_.tets_created, fill);
+            ok = 0;
+            break;
+        }
+        if (dd_reinsert(t, v) != DD_OK) {
+            snprintf(why, sizeof why, "re-inserting %u: %s", v, dd_errmsg(t));
+            ok = 0;
+            break;
+        }
+        tested++;
+    }
+    tl_check(st, ok && tested > 0, name, "%s", ok ? "no vertex tested" : why);
+    dd_free(t);
+    free(p);
+}
+
 static void refusals(tl_state *st)
 {
     /* a square pyramid: deleting the apex leaves coplanar points */
@@ -372,6 +421,11 @@ int main(int argc, char **argv)
         p = gen("moment", 100, &np);
         sequence(&st, "moment-100-all-but-4", p, np, np - 4, 8, var, 14);
         free(p);
+    }
+    const char *wrap_sets[][2] = {{"uniform", "2000"}, {"sphere", "1000"}, {"bunny", "2000"}};
+    for (size_t i = 0; i < 3; i++) {
+        wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "gift-wrap");
+        wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "auto");
     }
     refusals(&st);
     return tl_finish(&st);
