@@ -10,9 +10,11 @@
  *      the points of the main one, and list in d->fill the cells of d->qdt
  *      that fill the cavity;
  *   3. sew: match each fill facet that has no fill neighbour to its link
- *      triangle, copy the fill cells into the mesh glued to the outside,
- *      recycle the star.  Steps 1-2 never touch the mesh and step 3 starts
- *      only once every boundary facet is matched: all or nothing.
+ *      triangle (through a hash of the link triangles, unless the strategy
+ *      did the matching itself: d->sew_direct, gift wrapping), copy the
+ *      fill cells into the mesh glued to the outside, recycle the star.
+ *      Steps 1-2 never touch the mesh and step 3 starts only once every
+ *      boundary facet is matched: all or nothing.
  *
  * The conflict DT DT(x)_q(P_i) lives in d->qdt closed by the dummy vertex
  * DD_QD: each boundary triangle abc of DT(x) carries a dummy cell

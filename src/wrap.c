@@ -1,10 +1,11 @@
 /*
- * wrap.c -- gift wrapping of an interior cavity (see wrap.h).
+ * wrap.c -- gift wrapping of a cavity (see wrap.h).
  *
  * Owns: struct dd_wrap (kept in d->wrap across deletions: no allocation
- * once warm), the local numbering of the neighbours, the table of open
- * facets, the filtered scan that finds the fill cell on a facet, and the
- * cells it writes into d->qdt.
+ * once warm), the local numbering of the neighbours (the infinite vertex
+ * is number n), the table of open facets, the scans that find the fill
+ * cell on a facet, the cells it writes into d->qdt and the matching it
+ * hands to the sew (d->sew_out).
  *
  * An open facet is a triangle (a, b, c) of local numbers whose fill cell
  * on the positive side (orient3d(a, b, c, p) > 0) is still unknown.  The
@@ -14,6 +15,9 @@
  * and, for each other facet, closes it if it is open already or opens it
  * reversed.  A triangle meets at most two cells, so a facet closed twice
  * means a broken input and the deletion stops before touching the mesh.
+ * A hull vertex adds cells with the infinite vertex: a finite facet with
+ * no point beyond it becomes a hull facet, and a facet through the
+ * infinite vertex is wrapped around its hull edge (wrap_scan_inf).
  */
 #include "wrap.h"
 #include "expansion.h"

@@ -1,22 +1,24 @@
 /*
- * wrap.h -- the cavity of an interior vertex filled by gift wrapping: a
- * low-degree fast path, not an algorithm of the paper.
+ * wrap.h -- a cavity filled by gift wrapping: the low-degree fast path of
+ * auto.c, not an algorithm of the paper.
  *
  * The fill of q's cavity is exactly the set of cells of DT(P) (P = q's
  * neighbours, perturbed as CGAL does) in conflict with q, and these cells
  * tile the star of q.  So every link triangle abc, seen from q's side, is
- * a facet of exactly one fill cell abcp, and p is the point of P on that
- * side of abc whose sphere through a, b, c holds no other such point; the
- * same holds for every facet between two fill cells.  Gift wrapping
- * finds the fill cell by cell from the link, with no conflict test
- * against q and no cell built that is not kept: DT(x)_q builds every cell
- * of DT(x)_q(P_i) for every i, about five times the fill at degree 15.
+ * a facet of exactly one fill cell abcp, where p is the point of P on
+ * that side of abc whose sphere through a, b, c holds no other such point
+ * (or the infinite vertex, when q is on the hull and no point is on that
+ * side); the same holds for every facet between two fill cells.  Gift
+ * wrapping finds the fill cell by cell from the link, with no conflict
+ * test against q and no cell built that is not kept, where DT(x)_q builds
+ * every cell of DT(x)_q(P_i) for every i: about five times the fill at
+ * degree 15.
  *
  * Cost: one scan of P per fill cell, O(d) lifted dot products each, so
- * O(d * |fill|), about d^2; cheap below a few dozen neighbours (auto.c
- * measures where).  Every comparison is filtered (wrap.c) and falls back
- * to the exact perturbed predicates of pred.c, so the fill is exactly the
- * one the other strategies build.
+ * O(d * |fill|), about d^2: cheaper than the conflict DT, and than GRR
+ * below degree 96 (auto.c).  Every comparison is filtered (wrap.c) and
+ * falls back to the exact perturbed predicates of pred.c, so the fill is
+ * exactly the one the other strategies build.
  */
 #ifndef DD_WRAP_H
 #define DD_WRAP_H

@@ -204,7 +204,7 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
- * and hull vertices alike, and for auto, which wraps below degree 64.
+ * and hull vertices alike, and for auto, which wraps below degree 96.
  * The result itself is CGAL's: checked by the tests above.              */
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {
@@ -221,7 +221,7 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
     int ok = 1, tested = 0;
     char why[160] = "";
     for (uint32_t v = 0; v < np && tested < 40; v += 7) {
-        if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 64) continue;
+        if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 96) continue;
         size_t before = dd_num_tets(t), star = 2 * (size_t)dd_degree(t, v) - 4;
         if (dd_delete(t, v, variant) != DD_OK) {
             snprintf(why, sizeof why, "deleting %u: %s", v, dd_errmsg(t));

@@ -7,7 +7,7 @@
 #include "../src/delete.h"
 
 /* auto's choice without gift wrapping: below degree 40 the compact
- * conflict DT, nearest neighbours first; from 40 on, grr-hashing.       */
+ * conflict DT, nearest neighbours first; from 40 on, grr-neighbor.       */
 dd_status dd_auto_conflict_dt(dd_del *d);
 
 #endif
