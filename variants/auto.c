@@ -41,14 +41,17 @@ dd_status dd_auto_conflict_dt(dd_del *d)
     return dd_qs_fill(d);
 }
 
+dd_status dd_auto_wrap_first(dd_del *d)
+{
+    int declined;
+    dd_status s = dd_wrap_fill(d, &declined);
+    if (s != DD_OK || !declined) return s;
+    return dd_auto_conflict_dt(d);
+}
+
 static dd_status auto_fill(dd_del *d)
 {
-    if (d->degree < AUTO_WRAP_BELOW_DEGREE) {
-        int declined;
-        dd_status s = dd_wrap_fill(d, &declined);
-        if (s != DD_OK || !declined) return s;
-    }
-    return dd_auto_conflict_dt(d);
+    return d->degree < AUTO_WRAP_BELOW_DEGREE ? dd_auto_wrap_first(d) : dd_auto_conflict_dt(d);
 }
 
 const dd_variant dd_variant_auto = {

@@ -1,5 +1,5 @@
 /*
- * auto.h -- what gift_wrap.c borrows from auto.c.
+ * auto.h -- what gift_wrap.c borrows from auto.c: its two paths.
  */
 #ifndef DD_AUTO_H
 #define DD_AUTO_H
@@ -9,5 +9,8 @@
 /* auto's choice without gift wrapping: below degree 40 the compact
  * conflict DT, nearest neighbours first; from 40 on, grr-neighbor.       */
 dd_status dd_auto_conflict_dt(dd_del *d);
+
+/* Gift wrapping (wrap.h), or where it declines, dd_auto_conflict_dt. */
+dd_status dd_auto_wrap_first(dd_del *d);
 
 #endif

@@ -7,14 +7,11 @@
  * facets), auto's conflict-DT strategies fill the cavity.
  */
 #include "auto.h"
-#include "../src/wrap.h"
 
+/* auto's own choice below degree 96, at every degree. */
 static dd_status gift_wrap_fill(dd_del *d)
 {
-    int declined;
-    dd_status s = dd_wrap_fill(d, &declined);
-    if (s != DD_OK || !declined) return s;
-    return dd_auto_conflict_dt(d);
+    return dd_auto_wrap_first(d);
 }
 
 const dd_variant dd_variant_gift_wrap = {
