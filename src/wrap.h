@@ -27,10 +27,13 @@
 
 /* Fills d->qdt / d->fill for the cavity of d->q and the sew's matching
  * (d->sew_out, d->sew_direct); d->order holds d->nbr and is sorted by
- * vertex id.  For a hull vertex whose new hull facets have points in
- * their planes, *declined = 1 and nothing is filled: the perturbation's
- * coplanar hull rules are left to the conflict DT.  DD_ERR_INTERNAL
- * (with a message) if the fill does not close, which only a broken
+ * vertex id.  It declines (*declined = 1, DD_OK; d->qdt and d->fill
+ * then hold scratch that the next strategy resets, and the sew will match
+ * by itself) for a hull vertex whose new hull facets have points in their
+ * planes (the perturbation's coplanar hull rules are left to the conflict
+ * DT), and for a degenerate cavity of 40 neighbours or more where the
+ * filters keep abstaining (wrap.c, W_EXACT_FROM).  DD_ERR_INTERNAL (with
+ * a message) if the fill does not close, which only a broken
  * triangulation can cause.                                               */
 dd_status dd_wrap_fill(dd_del *d, int *declined);
 

@@ -406,6 +406,24 @@ int main(int argc, char **argv)
         single_deletions(&st, "sphere-2200-centre", p, np + 1, 1, 6, 1, np);
         free(p);
     }
+    /* The vertex of highest degree among 3000 integer points of a sphere:
+     * its cavity (degree 50 or more) is so degenerate that gift wrapping
+     * runs past its budget of exact tests and declines (wrap.c,
+     * W_EXACT_FROM); auto and gift-wrap must still give CGAL's result.   */
+    {
+        uint32_t np, best = 0, bd = 0;
+        double *p = gen("cosphere", 3000, &np);
+        char msg[256];
+        dd_tri *t;
+        if (dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
+            for (uint32_t v = 0; v < np; v++)
+                if (dd_is_vertex(t, v) && dd_degree(t, v) > bd) { bd = dd_degree(t, v); best = v; }
+            dd_free(t);
+        }
+        tl_check(&st, bd >= 50, "cosphere-3000/max-degree", "highest degree %u, expected at least 50", bd);
+        single_deletions(&st, "cosphere-3000-max-degree", p, np, 1, 15, 1, best);
+        free(p);
+    }
     for (size_t vi = 0; dd_variant_name(vi); vi++) {
         const char *var = dd_variant_name(vi);
         uint32_t np;
