@@ -91,24 +91,9 @@ void dd_free(dd_tri *t)
 
 /* ---- the vertex-triple hash --------------------------------------------- */
 
-static void sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
-{
-    uint32_t s;
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
-    if (*b > *c) { s = *b; *b = *c; *c = s; }
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
-}
-
-static uint32_t tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
-{
-    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
-               ^ (uint64_t)c * 0x165667B19E3779F9ull;
-    return (uint32_t)(h >> 40) & mask;
-}
-
 static void trihash_insert(dd_tri_slot *s, uint32_t mask, uint32_t gen, const dd_tri_slot *e)
 {
-    for (uint32_t i = tri_hash(e->a, e->b, e->c, mask);; i = (i + 1) & mask)
+    for (uint32_t i = dd_tri_hash(e->a, e->b, e->c, mask);; i = (i + 1) & mask)
         if (s[i].gen != gen) {
             s[i] = *e;
             s[i].gen = gen;
@@ -151,21 +136,25 @@ dd_status dd_trihash_reset(dd_trihash *h, size_t expect)
     return st;
 }
 
+dd_status dd_trihash_grow(dd_trihash *h)
+{
+    uint32_t size = 2 * (h->mask + 1);
+    dd_tri_slot *s = calloc(size, sizeof *s);
+    if (!s) return DD_ERR_NOMEM;
+    for (uint32_t i = 0; i <= h->mask; i++)
+        if (h->s[i].gen == h->gen) trihash_insert(s, size - 1, 1, &h->s[i]);
+    free(h->s);
+    h->s = s;
+    h->alloc = size;
+    h->mask = size - 1;
+    h->gen = 1;
+    return DD_OK;
+}
+
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val)
 {
-    if (2 * (h->n + 1) > h->mask + 1) {   /* half full: rehash twice as large */
-        uint32_t size = 2 * (h->mask + 1);
-        dd_tri_slot *s = calloc(size, sizeof *s);
-        if (!s) return DD_ERR_NOMEM;
-        for (uint32_t i = 0; i <= h->mask; i++)
-            if (h->s[i].gen == h->gen) trihash_insert(s, size - 1, 1, &h->s[i]);
-        free(h->s);
-        h->s = s;
-        h->alloc = size;
-        h->mask = size - 1;
-        h->gen = 1;
-    }
-    sort3u(&a, &b, &c);
+    if (2 * (h->n + 1) > h->mask + 1 && dd_trihash_grow(h) != DD_OK) return DD_ERR_NOMEM;
+    dd_sort3u(&a, &b, &c);
     dd_tri_slot e = {a, b, c, val, 0};
     trihash_insert(h->s, h->mask, h->gen, &e);
     h->n++;
@@ -174,8 +163,8 @@ dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint
 
 uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c)
 {
-    sort3u(&a, &b, &c);
-    for (uint32_t i = tri_hash(a, b, c, h->mask);; i = (i + 1) & h->mask) {
+    dd_sort3u(&a, &b, &c);
+    for (uint32_t i = dd_tri_hash(a, b, c, h->mask);; i = (i + 1) & h->mask) {
         const dd_tri_slot *e = &h->s[i];
         if (e->gen != h->gen) return DD_NONE;
         if (e->a == a && e->b == b && e->c == c) return e->val;

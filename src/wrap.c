@@ -40,12 +40,6 @@
  * grr-neighbor; below 40 wrapping stays ahead: [32,48) 294 vs 403 us). */
 #define W_EXACT_FROM 40
 
-/* A slot of the open-facet table: used iff gen is the table's. */
-typedef struct w_slot {
-    uint64_t key;                 /* w_tri_key of the triangle            */
-    uint32_t rec, gen;
-} w_slot;
-
 struct dd_wrap {
     uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
     const double **pt;            /* local -> point                       */
@@ -60,8 +54,7 @@ struct dd_wrap {
                                      predicates, this deletion            */
     uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
                                      this deletion's neighbours only      */
-    w_slot *slot;                 /* open facets: key -> facet record     */
-    uint32_t fmask, fbits, fcap, fg;
+    dd_trihash ftab;              /* triangle -> its facet record         */
     /* facet records */
     uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
     uint32_t *own;                /* qdt facet 4c+j on the other side, or
@@ -77,7 +70,8 @@ void dd_wrap_free(struct dd_wrap *w)
     if (!w) return;
     free(w->pt);
     for (int i = 0; i < 4; i++) free(w->lift[i]);
-    free(w->o); free(w->loc); free(w->slot);
+    free(w->o); free(w->loc);
+    dd_trihash_free(&w->ftab);
     free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack);
     free(w);
 }
@@ -109,26 +103,8 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
     return DD_OK;
 }
 
-/* Empties the open-facet table and sizes it for `expect` facets. */
-static dd_status w_facets_reset(struct dd_wrap *w, size_t expect)
-{
-    uint32_t cap = 64, bits = 6;
-    while (cap < 2 * expect) { cap *= 2; bits++; }
-    if (cap > w->fcap) {
-        if (!grow((void **)&w->slot, cap, sizeof *w->slot)) return DD_ERR_NOMEM;
-        memset(w->slot, 0, cap * sizeof *w->slot);
-        w->fcap = cap;
-        w->fg = 0;
-    }
-    if (++w->fg == 0) {
-        memset(w->slot, 0, w->fcap * sizeof *w->slot);
-        w->fg = 1;
-    }
-    w->fmask = cap - 1;
-    w->fbits = bits;
-    return DD_OK;
-}
-
+/* A triangle's rank in a canonical order (its sorted local numbers, 21
+ * bits each): picks the link triangle the wrap starts from.             */
 static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
 {
     uint32_t t;
@@ -138,18 +114,7 @@ static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
     return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
 }
 
-/* The slot of key: where it is, or the empty slot where it would go
- * (Fibonacci hashing: the top bits of key times 2^64 / golden ratio).   */
-static inline w_slot *w_facet_slot(const struct dd_wrap *w, uint64_t key)
-{
-    uint32_t h = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> (64 - w->fbits));
-    while (w->slot[h].gen == w->fg && w->slot[h].key != key) h = (h + 1) & w->fmask;
-    return &w->slot[h];
-}
-
-static inline int w_used(const struct dd_wrap *w, const w_slot *sl) { return sl->gen == w->fg; }
-
-/* Room for one more facet record, and the table at most half full. */
+/* Room for one more facet record. */
 static dd_status w_reserve_rec(struct dd_wrap *w)
 {
     if (w->nrec == w->cap_rec) {
@@ -160,27 +125,18 @@ static dd_status w_reserve_rec(struct dd_wrap *w)
             return DD_ERR_NOMEM;
         w->cap_rec = cap;
     }
-    if (2 * ((size_t)w->nrec + 1) > (size_t)w->fmask + 1) {   /* rehash */
-        dd_status s = w_facets_reset(w, 2 * ((size_t)w->nrec + 1));
-        if (s != DD_OK) return s;
-        for (uint32_t r = 0; r < w->nrec; r++) {
-            uint64_t key = w_tri_key(w->tri[r][0], w->tri[r][1], w->tri[r][2]);
-            w_slot *sl = w_facet_slot(w, key);
-            *sl = (w_slot){key, r, w->fg};
-        }
-    }
     return DD_OK;
 }
 
 /* Opens triangle (a, b, c), whose other side is qdt facet `own` (W_NONE:
- * a link triangle), at the table slot found for it.                     */
-static void w_open(struct dd_wrap *w, w_slot *sl, uint64_t key, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
+ * a link triangle), as a new record; *val is its entry in w->ftab.      */
+static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
 {
     uint32_t r = w->nrec++;
     w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
     w->own[r] = own;
     w->closed[r] = 0;
-    *sl = (w_slot){key, r, w->fg};
+    *val = r;
 }
 
 /* Lifts the neighbours relative to q and sets the filters' bounds.
@@ -475,7 +431,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     dd_qdt_reset(d, 0);
     w->nrec = 0;
     size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
-    s = w_facets_reset(w, 4 * (size_t)n);
+    s = dd_trihash_reset(&w->ftab, 4 * (size_t)n);
     if (s == DD_OK) s = w_reserve_fill(d, 0, room);
     if (s != DD_OK) return s;
     /* The link triangles, open towards q, all in the table; the wrap
@@ -503,14 +459,14 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
                 return w_broken(d, "a link vertex is not a neighbour");
             lv[j] = w->loc[g];
         }
-        s = w_reserve_rec(w);
-        if (s != DD_OK) return s;
+        int found;
+        uint32_t *val = dd_trihash_slot(&w->ftab, lv[0], lv[1], lv[2], &found);
+        if (!val || (s = w_reserve_rec(w)) != DD_OK) return DD_ERR_NOMEM;
+        if (found) return w_broken(d, "a link triangle appears twice");
         uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
-        w_slot *sl = w_facet_slot(w, key);
-        if (w_used(w, sl)) return w_broken(d, "a link triangle appears twice");
         if (key < kmin) { kmin = key; rmin = w->nrec; }
         w->out[w->nrec] = t->tn[4 * (size_t)c + (uint32_t)i];
-        w_open(w, sl, key, lv[0], lv[1], lv[2], W_NONE);
+        w_open(w, val, lv[0], lv[1], lv[2], W_NONE);
     }
     if (w->nrec == 0) return w_broken(d, "no link triangle");
     uint32_t *st = w->tri[rmin];
@@ -568,10 +524,11 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         }
         for (uint32_t j = 0; j < 3; j++) {
             uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
-            uint64_t key = w_tri_key(f0, f1, f2);
-            w_slot *sl = w_facet_slot(w, key);
-            if (w_used(w, sl)) {                 /* its other side is known */
-                uint32_t o = sl->rec;
+            int found;
+            uint32_t *val = dd_trihash_slot(&w->ftab, f0, f1, f2, &found);
+            if (!val) return DD_ERR_NOMEM;
+            if (found) {                         /* its other side is known */
+                uint32_t o = *val;
                 if (w->closed[o]) return w_broken(d, "a triangle bounds three cells");
                 w->closed[o] = 1;
                 tn[j] = w->own[o];
@@ -586,11 +543,10 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
             }
             s = w_reserve_rec(w);
             if (s != DD_OK) return s;
-            sl = w_facet_slot(w, key);           /* the table may have grown */
             tn[j] = DD_NONE;
             so[j] = DD_NONE;
             w->stack[ns++] = w->nrec;
-            w_open(w, sl, key, f1, f0, f2, 4 * m + j);   /* reversed: open outwards */
+            w_open(w, val, f1, f0, f2, 4 * m + j);       /* reversed: open outwards */
         }
         d->fill.a[d->fill.n++] = m;
     }
