@@ -204,38 +204,40 @@ static inline uint32_t qs_outer_bytes(uint32_t w)
  * and the filter answers only when |det| > 5e-12 m^3 M (and that bound
  * is at least 1e-290: underflow negligible).  Kept only when it is
  * tighter than the plain bound.  Tried once per deletion, after the
- * fourth exact fallback, and only with at least QS_SHIFT_FROM (finite)
+ * fourth exact fallback, and only with at least DD_SHIFT_FROM (finite)
  * points: it costs an exact expansion a point, which the few tests left
  * below that do not pay back.  Measured on the sphere dataset (hull
  * vertices: one neighbour is infinite), warm deletions with and without
  * shifting: degree 6 1.98 vs 1.53 us, 7 2.68 vs 2.65, 8 3.15 vs 4.29,
  * 9 3.63 vs 6.20.                                                        */
-#define QS_SHIFT_FROM 7
-int dd_shift_centre(const double *a, const double *b, const double *c, double C[3])
+double dd_shift_lifts(const double *const *pts, uint32_t n, const double *q, const double *a, const double *b,
+                      const double *c, double m, double err, double *w)
 {
     double bc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
     double ca[3] = {c[1] * a[2] - c[2] * a[1], c[2] * a[0] - c[0] * a[2], c[0] * a[1] - c[1] * a[0]};
     double ab[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]);
+    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]), C[3], M = 0;
     for (int i = 0; i < 3; i++) {
         C[i] = (a[3] * bc[i] + b[3] * ca[i] + c[3] * ab[i]) / den;
         if (!(fabs(C[i]) <= 1e50)) return 0;       /* also NaN, inf */
     }
-    return 1;
+    for (uint32_t k = 0; k < n; k++) {
+        w[k] = dd_exp_shifted_lift(pts[k], q, C);
+        if (fabs(w[k]) > M) M = fabs(w[k]);
+    }
+    double e = 5e-12 * m * m * m * M;
+    return e >= 1e-290 && e < err ? e : 0;
 }
 
 static void qs_shift(struct dd_qs *s)
 {
     s->shifted = 1;
-    double C[3], w[DD_QS_MAXV], M = 0, m = s->lift_m;
-    const double *q = s->pt[QS_QD];
-    if (!dd_shift_centre(s->lift[0], s->lift[1], s->lift[2], C)) return;
-    for (uint32_t k = 0; k < s->nlift; k++) {
-        w[k] = dd_exp_shifted_lift(s->pt[k], q, C);
-        if (fabs(w[k]) > M) M = fabs(w[k]);
-    }
-    double err = 5e-12 * m * m * m * M;
-    if (!(err >= 1e-290 && err < s->lift_err)) return;
+    const double *pts[DD_QS_MAXV];
+    double w[DD_QS_MAXV];
+    for (uint32_t k = 0; k < s->nlift; k++) pts[k] = s->pt[k];
+    double err = dd_shift_lifts(pts, s->nlift, s->pt[QS_QD], s->lift[0], s->lift[1], s->lift[2], s->lift_m,
+                                s->lift_err, w);
+    if (err == 0) return;
     for (uint32_t k = 0; k < s->nlift; k++) s->lift[k][3] = w[k];
     s->lift_err = err;
 }
@@ -259,7 +261,7 @@ static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
     double det = sign * det4_rows(l, s->lift[x]);
     if (det < -s->lift_err) return 1;      /* negative: inside */
     if (det > s->lift_err) return 0;
-    if (++s->nexact == 4 && !s->shifted && s->nlift >= QS_SHIFT_FROM) qs_shift(s);
+    if (++s->nexact == 4 && !s->shifted && s->nlift >= DD_SHIFT_FROM) qs_shift(s);
     return qs_conflict_exact(s, pr, c, x);
 }
 
@@ -279,11 +281,11 @@ static void qs_lift(struct dd_qs *s, uint32_t n)
     }
     memset(s->lift[QS_QD], 0, sizeof s->lift[QS_QD]);
     /* Outside the range (or NaN): +inf, so the filter never answers. */
-    s->lift_err = m >= 1e-55 && m <= 1e55 ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
+    s->lift_err = dd_lift_err(m);
     s->lift_m = m;
     s->nlift = n;
     s->nexact = 0;
-    s->shifted = !(m >= 1e-55 && m <= 1e55);
+    s->shifted = s->lift_err == 1.0 / 0.0;
 }
 
 /* The star of local vertex x over the boundary facets s->boundary[0..nb)

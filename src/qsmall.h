@@ -40,11 +40,24 @@ dd_status dd_qs_fill(dd_del *d);
  * on the bench's inputs (auto.c).                                        */
 void dd_qs_order_nearest(dd_del *d);
 
-/* The centre C (relative to q) of the sphere through q and the points
- * with lifts a, b, c ((x - q, |x - q|^2)), for the shifted lifts
- * |x - q|^2 - 2 (x - q).C of nearly cospherical cavities (qsmall.c,
- * wrap.c); 0 when it is not finite and below 1e50.                       */
-int dd_shift_centre(const double *a, const double *b, const double *c, double C[3]);
+/* The lifted in-sphere filter of qsmall.c (and wrap.c): the error bound
+ * of a determinant of lifted differences for points within m of q in
+ * each coordinate (derivation above det4_rows in qsmall.c); +inf outside
+ * 1e-55 <= m <= 1e55, where the filter must not answer.                 */
+static inline double dd_lift_err(double m)
+{
+    return m >= 1e-55 && m <= 1e55 ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
+}
+
+/* Shifted lifts for nearly cospherical cavities (qsmall.c): for the points
+ * pts[0..n), within m of q, and the plain lifts a, b, c ((x - q,
+ * |x - q|^2)) of three of them, writes the shifted fourth coordinates to
+ * w[0..n) and returns their filter bound; 0 when the centre is not finite
+ * or the bound is not below err.  Worth trying from DD_SHIFT_FROM points
+ * on.                                                                    */
+#define DD_SHIFT_FROM 7
+double dd_shift_lifts(const double *const *pts, uint32_t n, const double *q, const double *a, const double *b,
+                      const double *c, double m, double err, double *w);
 
 void dd_qs_free(struct dd_qs *s);
 

@@ -20,10 +20,7 @@
  * infinite vertex is wrapped around its hull edge (wrap_scan_inf).
  */
 #include "wrap.h"
-#include "expansion.h"
 #include "qsmall.h"
-
-#include <math.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -177,8 +174,8 @@ static void w_lift(struct dd_wrap *w, const double *q)
         }
         L[3][k] = L[0][k] * L[0][k] + L[1][k] * L[1][k] + L[2][k] * L[2][k];
     }
-    int ok = m >= 1e-55 && m <= 1e55;
-    w->ierr = ok ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
+    w->ierr = dd_lift_err(m);
+    int ok = w->ierr != 1.0 / 0.0;
     w->oerr = ok ? 1e-13 * m * m * m : 1.0 / 0.0;
     w->m = m;
     w->q = q;
@@ -190,23 +187,18 @@ static void w_lift(struct dd_wrap *w, const double *q)
  * wrap_scan have the same entries and at most as many roundings), for
  * nearly cospherical cavities where the plain filter abstains.  Tried
  * once per deletion, when a fast scan first fails its check, with at
- * least 7 neighbours (below that the exact expansions of the shift cost
- * more than the tests they save, as in qsmall.c); the scan is then run
- * again.                                                                 */
+ * least DD_SHIFT_FROM neighbours (below that the exact expansions of the
+ * shift cost more than the tests they save, as in qsmall.c); the scan is
+ * then run again.                                                        */
 static void w_shift(struct dd_wrap *w)
 {
     w->shifted = 1;
-    double *const *L = w->lift, l[3][4], C[3], M = 0;
+    double *const *L = w->lift, l[3][4];
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 4; i++) l[j][i] = L[i][j];
-    if (!dd_shift_centre(l[0], l[1], l[2], C)) return;
     double *o = w->o;                              /* scratch until the next scan */
-    for (uint32_t k = 0; k < w->n; k++) {
-        o[k] = dd_exp_shifted_lift(w->pt[k], w->q, C);
-        if (fabs(o[k]) > M) M = fabs(o[k]);
-    }
-    double err = 5e-12 * w->m * w->m * w->m * M;
-    if (!(err >= 1e-290 && err < w->ierr)) return;
+    double err = dd_shift_lifts(w->pt, w->n, w->q, l[0], l[1], l[2], w->m, w->ierr, o);
+    if (err == 0) return;
     memcpy(L[3], o, w->n * sizeof *o);
     w->ierr = err;
 }
@@ -333,7 +325,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
         bad |= (o[k] > oerr) & !(det > ierr);
     }
     if (!bad) return best;
-    return w->shifted || n < 7 ? wrap_scan_exact(w, pr, a, b, c, m) : W_SHIFT;
+    return w->shifted || n < DD_SHIFT_FROM ? wrap_scan_exact(w, pr, a, b, c, m) : W_SHIFT;
 }
 
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
