@@ -78,6 +78,7 @@ typedef struct dd_del {
     uint64_t fallbacks;           /* sampling fallbacks (guided variants)  */
     uint64_t locate_steps;        /* cells tested by guided/scan location  */
     int forced_fill;              /* fill_coplanar_hull ran                */
+    int wrap_how;                 /* DD_WRAP_*, set by dd_wrap_fill        */
     uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* by deleted degree     */
     double phase[DD_NPHASES];
 #ifdef DD_COUNTERS

@@ -115,6 +115,15 @@ const char *dd_variant_description(size_t i);
 
 #define DD_LINKDEG_BUCKETS 16
 
+/* How gift wrapping (wrap.c) went, in dd_delete_stats.wrap. */
+enum {
+    DD_WRAP_NONE,       /* not tried                                       */
+    DD_WRAP_PROVED,     /* guessed fill proved Delaunay and kept           */
+    DD_WRAP_REFUTED,    /* guessed fill refuted; the scans wrapped again   */
+    DD_WRAP_SCANNED,    /* scans only (a hull vertex, or filters off)      */
+    DD_WRAP_DECLINED    /* left to the conflict DT                         */
+};
+
 /* What the last dd_delete did.  Phase times only in counting builds. */
 typedef struct dd_delete_stats {
     uint32_t degree;          /* neighbours, the infinite vertex included  */
@@ -122,6 +131,7 @@ typedef struct dd_delete_stats {
     int forced_fill;          /* hull vertex with coplanar finite
                                  neighbours: the framework's forced fill
                                  ran instead of the strategy             */
+    int wrap;                 /* gift wrapping's course: DD_WRAP_*        */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
     uint64_t fallbacks;       /* sampling fallbacks of guided strategies   */
     uint64_t locate_steps;    /* cells tested by point location in the

@@ -22,6 +22,7 @@
 #include "wrap.h"
 #include "qsmall.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,6 +48,7 @@ struct dd_wrap {
     double m;                     /* max |x_k - q_k| over the neighbours  */
     const double *q;
     int shifted;                  /* the shifted lifts were tried         */
+    int avx2;                     /* wrap_guess may use AVX2              */
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
     uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
@@ -174,6 +176,8 @@ static void w_lift(struct dd_wrap *w, const double *q)
         }
         L[3][k] = L[0][k] * L[0][k] + L[1][k] * L[1][k] + L[2][k] * L[2][k];
     }
+    for (uint32_t k = w->n; k % 4; k++)            /* wrap_guess's padding */
+        for (int i = 0; i < 4; i++) L[i][k] = NAN;
     w->ierr = dd_lift_err(m);
     int ok = w->ierr != 1.0 / 0.0;
     w->oerr = ok ? 1e-13 * m * m * m : 1.0 / 0.0;
@@ -228,6 +232,31 @@ static inline void w_cofactors(double K[4], const double X[4], const double m[6]
     K[1] = X[0] * m[M23] - X[2] * m[M03] + X[3] * m[M02];
     K[2] = -(X[0] * m[M13] - X[1] * m[M03] + X[3] * m[M01]);
     K[3] = X[0] * m[M12] - X[1] * m[M02] + X[2] * m[M01];
+}
+
+/* The six 2x2 minors of rows B and C, in w_cofactors' order.           */
+static inline void w_minors(double m[6], const double B[4], const double C[4])
+{
+    m[0] = B[0] * C[1] - B[1] * C[0];
+    m[1] = B[0] * C[2] - B[2] * C[0];
+    m[2] = B[0] * C[3] - B[3] * C[0];
+    m[3] = B[1] * C[2] - B[2] * C[1];
+    m[4] = B[1] * C[3] - B[3] * C[1];
+    m[5] = B[2] * C[3] - B[3] * C[2];
+}
+
+/* Facet (a, b, c)'s pencil: minors m of B, C, the normal N (o(P) = N . P)
+ * and T (t(P) = T . P), with rows taken from a.                         */
+static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double m[6],
+                            double N[4], double T[4])
+{
+    double *const *L = w->lift;
+    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+    double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
+    double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
+    w_minors(m, B, C);
+    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+    w_cofactors(T, N, m);
 }
 
 /* The exact scan: one pass keeping the best point so far, each test
@@ -287,12 +316,8 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
 {
     double *const *L = w->lift;
     const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
-    double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
-    double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
-    double m[6] = {B[0] * C[1] - B[1] * C[0], B[0] * C[2] - B[2] * C[0], B[0] * C[3] - B[3] * C[0],
-                   B[1] * C[2] - B[2] * C[1], B[1] * C[3] - B[3] * C[1], B[2] * C[3] - B[3] * C[2]};
-    double N[4] = {m[3], -m[1], m[0], 0}, T[4], K[4];
-    w_cofactors(T, N, m);
+    double m[6], N[4], T[4], K[4];
+    w_pencil(w, a, b, c, m, N, T);
     const double oerr = w->oerr, ierr = w->ierr;
     const uint32_t n = w->n;
     /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
@@ -326,6 +351,79 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     }
     if (!bad) return best;
     return w->shifted || n < DD_SHIFT_FROM ? wrap_scan_exact(w, pr, a, b, c, m) : W_SHIFT;
+}
+
+/* The guessing scan (see dd_wrap_fill): the point beyond abc of least
+ * t/o as in wrap_scan (compared as t x o' < t' x o, no division), and no
+ * check.  Only its orientation is sure: it is beyond abc by more than
+ * the filter's bound, o being evaluated as in wrap_scan.  With AVX2, four
+ * points at a time in the same operations (the same o, bit for bit); the
+ * lifts are padded with NaN to a multiple of four, never beyond.        */
+#if defined(__GNUC__) && defined(__x86_64__)
+#define W_AVX2 1
+#include <immintrin.h>
+
+__attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a,
+                                                             const double N[4], const double T[4], double oerr)
+{
+    const __m256d ax = _mm256_set1_pd(L[0][a]), ay = _mm256_set1_pd(L[1][a]), az = _mm256_set1_pd(L[2][a]),
+                  aw = _mm256_set1_pd(L[3][a]);
+    const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]);
+    const __m256d t0 = _mm256_set1_pd(T[0]), t1 = _mm256_set1_pd(T[1]), t2 = _mm256_set1_pd(T[2]),
+                  t3 = _mm256_set1_pd(T[3]), er = _mm256_set1_pd(oerr), four = _mm256_set1_pd(4);
+    __m256d lt = _mm256_set1_pd(1), lo = _mm256_setzero_pd(), bi = _mm256_setzero_pd();
+    __m256d kv = _mm256_setr_pd(0, 1, 2, 3);
+    for (uint32_t k = 0; k < n; k += 4) {
+        __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
+        __m256d P2 = _mm256_sub_pd(_mm256_loadu_pd(L[2] + k), az), P3 = _mm256_sub_pd(_mm256_loadu_pd(L[3] + k), aw);
+        __m256d ok = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
+        __m256d tk = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, t0), _mm256_mul_pd(P1, t1)),
+                                   _mm256_add_pd(_mm256_mul_pd(P2, t2), _mm256_mul_pd(P3, t3)));
+        __m256d better = _mm256_and_pd(_mm256_cmp_pd(ok, er, _CMP_GT_OQ),
+                                       _mm256_cmp_pd(_mm256_mul_pd(tk, lo), _mm256_mul_pd(lt, ok), _CMP_LT_OQ));
+        lt = _mm256_blendv_pd(lt, tk, better);
+        lo = _mm256_blendv_pd(lo, ok, better);
+        bi = _mm256_blendv_pd(bi, kv, better);
+        kv = _mm256_add_pd(kv, four);
+    }
+    double vt[4], vo[4], vi[4];
+    _mm256_storeu_pd(vt, lt);
+    _mm256_storeu_pd(vo, lo);
+    _mm256_storeu_pd(vi, bi);
+    uint32_t best = W_NONE;
+    double bt = 1, bo = 0;
+    for (int i = 0; i < 4; i++)
+        if (vo[i] > 0 && vt[i] * bo < bt * vo[i]) {
+            bt = vt[i];
+            bo = vo[i];
+            best = (uint32_t)vi[i];
+        }
+    return best;
+}
+#endif
+
+static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+{
+    double *const *L = w->lift;
+    double m[6], N[4], T[4];
+    w_pencil(w, a, b, c, m, N, T);
+    const double oerr = w->oerr;
+#ifdef W_AVX2
+    if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr);
+#endif
+    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+    double lo_t = 1, lo_o = 0;
+    uint32_t best = W_NONE;
+    for (uint32_t k = 0; k < w->n; k++) {
+        double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
+        double ok = P0 * N[0] + P1 * N[1] + P2 * N[2];
+        double tk = P0 * T[0] + P1 * T[1] + P2 * T[2] + P3 * T[3];
+        int better = (ok > oerr) & (tk * lo_o < lo_t * ok);
+        lo_t = better ? tk : lo_t;
+        lo_o = better ? ok : lo_o;
+        best = better ? k : best;
+    }
+    return best;
 }
 
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
@@ -384,6 +482,9 @@ static dd_status w_get(dd_del *d, struct dd_wrap **out)
     if (!d->wrap) {
         d->wrap = calloc(1, sizeof *d->wrap);
         if (!d->wrap) return DD_ERR_NOMEM;
+#ifdef W_AVX2
+        d->wrap->avx2 = __builtin_cpu_supports("avx2");
+#endif
     }
     *out = d->wrap;
     return DD_OK;
@@ -403,37 +504,21 @@ static dd_status w_reserve_fill(dd_del *d, size_t made, size_t room)
     return s;
 }
 
-dd_status dd_wrap_fill(dd_del *d, int *declined)
+/* Opens the link triangles, oriented towards q, as the first records (all
+ * in the table) and returns the record the wrap starts from, *start: the
+ * triangle of least key, rotated to begin with its least local number.
+ * With the neighbours sorted by id, the whole wrap, and so the order and
+ * rotation of the fill cells, does not depend on how the star was stored:
+ * the same deletion repeated is the same computation, as with the other
+ * strategies.                                                            */
+static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
 {
-    dd_tri *t = d->t, *x = d->qdt;
-    *declined = 0;
-    struct dd_wrap *w;
-    dd_status s = w_get(d, &w);
-    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
-    if (s != DD_OK) return s;
-    DD_PHASE_BEGIN(d);
-    w_sort_ids(d->order.a, d->order.n);
-    const uint32_t *gid = d->order.a;
-    const uint32_t n = w->n = (uint32_t)d->order.n, inf = n;   /* DD_INF's local number */
-    for (uint32_t k = 0; k < n; k++) {
-        w->pt[k] = dd_pt(t, gid[k]);
-        w->loc[gid[k]] = k;
-    }
-    w_lift(w, d->qp);
+    dd_tri *t = d->t;
+    const uint32_t n = w->n, inf = n, *gid = d->order.a;
     dd_qdt_reset(d, 0);
     w->nrec = 0;
-    size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
-    s = dd_trihash_reset(&w->ftab, 4 * (size_t)n);
-    if (s == DD_OK) s = w_reserve_fill(d, 0, room);
+    dd_status s = dd_trihash_reset(&w->ftab, 4 * (size_t)n);
     if (s != DD_OK) return s;
-    /* The link triangles, open towards q, all in the table; the wrap
-     * starts from one of them and reaches the others through the fill
-     * (a triangulated ball: its cells are connected through interior
-     * facets).  The start is the triangle of least key, rotated to begin
-     * with its least local number: with the neighbours sorted by id, the
-     * whole wrap, and so the order and rotation of the fill cells, does
-     * not depend on how the star was stored.  The same deletion repeated
-     * is the same computation, as with the other strategies.             */
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
     for (size_t k = 0; k < d->star.n; k++) {
@@ -466,19 +551,45 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         uint32_t x0 = st[0];
         st[0] = st[1]; st[1] = st[2]; st[2] = x0;
     }
-    /* Wrap: each open facet gives the cell on its open side.  Each facet
-     * of a new cell goes in d->sew_out for the sew: a link triangle's
-     * outside facet, or DD_NONE inside the fill.                         */
+    *start = rmin;
+    return DD_OK;
+}
+
+/* Whether (a, b, c) is a rotation of triangle r: the same orientation.  */
+static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
+{
+    return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
+}
+
+enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
+
+/* The wrap from record `start`: each open facet gives the cell on its
+ * open side, found by wrap_scan (wrap_scan_inf through the infinite
+ * vertex) or, when `guess`, by wrap_guess.  Each facet of a new cell goes
+ * in d->sew_out for the sew: a link triangle's outside facet, or DD_NONE
+ * inside the fill.  *outcome: W_DONE, W_DECLINED (see dd_wrap_fill), or
+ * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
+ * (a facet without a point beyond, a triangle met from the wrong side or
+ * by a third cell, a fill too large).                                    */
+static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
+{
+    dd_tri *x = d->qdt;
+    const uint32_t n = w->n, inf = n, *gid = d->order.a;
+    size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
+    dd_status s = w_reserve_fill(d, 0, room);
+    if (s != DD_OK) return s;
+    *outcome = W_DONE;
+#define W_WRONG(why) do { if (guess) { *outcome = W_WRONG_GUESS; return DD_OK; } return w_broken(d, why); } while (0)
     uint32_t ns = 0, nlink = 0;
-    w->stack[ns++] = rmin;
-    size_t limit = 8 * (size_t)n * n + 64;          /* |fill| is O(n^2) */
+    w->stack[ns++] = start;
+    size_t limit = guess ? room : 8 * (size_t)n * n + 64;   /* |fill| is O(n^2) */
     while (ns > 0) {
         uint32_t r = w->stack[--ns];
         if (w->closed[r]) continue;
         w->closed[r] = 1;
         uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
         if (n >= W_EXACT_FROM && w->nexact > 2 * n) {
-            *declined = 1;                      /* see W_EXACT_FROM */
+            *outcome = W_DECLINED;              /* see W_EXACT_FROM */
             return DD_OK;
         }
         if (a == inf || b == inf || e == inf) {
@@ -487,6 +598,8 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
                 a = b; b = e; e = a0;
             }
             p = wrap_scan_inf(w, &x->pred, a, b);
+        } else if (guess) {
+            p = wrap_guess(w, a, b, e);
         } else {
             p = wrap_scan(w, &x->pred, a, b, e);
             if (p == W_SHIFT) {
@@ -496,12 +609,12 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
             if (p == W_NONE && d->on_hull) p = inf;
         }
         if (p == W_BAIL) {
-            *declined = 1;
+            *outcome = W_DECLINED;
             return DD_OK;
         }
-        if (p == W_NONE) return w_broken(d, "an open facet has no point beyond it");
+        if (p == W_NONE) W_WRONG("an open facet has no point beyond it");
         size_t fp = d->fill.n;
-        if (fp >= limit) return w_broken(d, "the fill does not close");
+        if (fp >= limit) W_WRONG("the fill does not close");
         if (fp == room && (s = w_reserve_fill(d, fp, room *= 2)) != DD_OK) return s;
         uint32_t m = dd_new_cell(x), lv[4] = {a, b, e, p};
         uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m, *so = d->sew_out.a + 4 * fp;
@@ -514,6 +627,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
             so[3] = w->out[r];
             nlink++;
         }
+        d->fill.a[d->fill.n++] = m;
         for (uint32_t j = 0; j < 3; j++) {
             uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
             int found;
@@ -521,7 +635,9 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
             if (!val) return DD_ERR_NOMEM;
             if (found) {                         /* its other side is known */
                 uint32_t o = *val;
-                if (w->closed[o]) return w_broken(d, "a triangle bounds three cells");
+                if (w->closed[o]) W_WRONG("a triangle bounds three cells");
+                /* The new cell must lie on the record's open side.       */
+                if (!w_same_turn(w->tri[o], f0, f1)) W_WRONG("a triangle is met from the wrong side");
                 w->closed[o] = 1;
                 tn[j] = w->own[o];
                 if (w->own[o] != W_NONE) {
@@ -540,13 +656,112 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
             w->stack[ns++] = w->nrec;
             w_open(w, val, f1, f0, f2, 4 * m + j);       /* reversed: open outwards */
         }
-        d->fill.a[d->fill.n++] = m;
     }
     /* Each link triangle closed at most once (above), so all of them
      * exactly once: the sew needs no matching of its own.               */
-    if (nlink != d->star.n) return w_broken(d, "the fill does not cover the link");
+    if (nlink != d->star.n) W_WRONG("the fill does not cover the link");
+#undef W_WRONG
+    return DD_OK;
+}
+
+/* Whether every facet between two fill cells is locally Delaunay: the
+ * point across it outside the cell's sphere (filtered as wrap_scan's
+ * check, else the exact perturbed test).  For a guessed fill that is a
+ * triangulation of the cavity this proves it is the Delaunay one: see
+ * dd_wrap_fill.                                                          */
+static int w_locally_delaunay(dd_del *d, struct dd_wrap *w)
+{
+    const dd_tri *x = d->qdt;
+    double *const *L = w->lift;
+    const double ierr = w->ierr;
+    for (size_t f = 0; f < d->fill.n; f++) {
+        uint32_t c = d->fill.a[f], v[4];
+        const uint32_t *tv = x->tv + 4 * (size_t)c, *tn = x->tn + 4 * (size_t)c;
+        for (int i = 0; i < 4; i++) v[i] = w->loc[tv[i]];
+        const uint32_t a = v[0];
+        const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+        double K[4], m[6];
+        int made = 0;
+        for (int j = 0; j < 4; j++) {
+            uint32_t nb = tn[j];
+            if (nb == DD_NONE || nb >> 2 < c) continue;     /* a link facet, or seen */
+            if (!made) {
+                double B[4] = {L[0][v[1]] - ax, L[1][v[1]] - ay, L[2][v[1]] - az, L[3][v[1]] - aw};
+                double C[4] = {L[0][v[2]] - ax, L[1][v[2]] - ay, L[2][v[2]] - az, L[3][v[2]] - aw};
+                double X[4] = {L[0][v[3]] - ax, L[1][v[3]] - ay, L[2][v[3]] - az, L[3][v[3]] - aw};
+                w_minors(m, B, C);
+                w_cofactors(K, X, m);
+                made = 1;
+            }
+            uint32_t y = w->loc[x->tv[nb]];              /* tv[4c'+j']: the apex */
+            double det = K[0] * (L[0][y] - ax) + K[1] * (L[1][y] - ay) + K[2] * (L[2][y] - az)
+                       + K[3] * (L[3][y] - aw);
+            if (det > ierr) continue;                    /* surely outside */
+            if (det < -ierr) return 0;
+            w->nexact++;
+            const double *cell[4] = {w->pt[v[0]], w->pt[v[1]], w->pt[v[2]], w->pt[v[3]]};
+            if (dd_points_conflict(&d->qdt->pred, cell, -1, -1, w->pt[y])) return 0;
+        }
+    }
+    return 1;
+}
+
+dd_status dd_wrap_fill(dd_del *d, int *declined)
+{
+    dd_tri *t = d->t;
+    *declined = 0;
+    struct dd_wrap *w;
+    dd_status s = w_get(d, &w);
+    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
+    if (s != DD_OK) return s;
+    DD_PHASE_BEGIN(d);
+    w_sort_ids(d->order.a, d->order.n);
+    const uint32_t *gid = d->order.a;
+    const uint32_t n = w->n = (uint32_t)d->order.n;   /* DD_INF's local number is n */
+    for (uint32_t k = 0; k < n; k++) {
+        w->pt[k] = dd_pt(t, gid[k]);
+        w->loc[gid[k]] = k;
+    }
+    w_lift(w, d->qp);
+    /* Guess, then prove (an interior vertex with filters on).  The guessed
+     * fill takes each cell's fourth point among the link neighbours of
+     * its facet's corners only (wrap_guess), with no check against the
+     * other points; it is kept when
+     *  - each cell is surely positively oriented (wrap_guess), each facet
+     *    between two cells is met from opposite sides, and the link
+     *    triangles are the free facets, each met once (w_run): then the
+     *    cells cover every point of the cavity exactly once (the degree
+     *    of the map: each point is covered by as many positive cells as
+     *    the link winds round it, once), a triangulation of the cavity;
+     *  - and every facet between two fill cells is locally Delaunay
+     *    (w_locally_delaunay); the link triangles are so already, facing
+     *    cells of DT(S) whose spheres hold no point.
+     * A triangulation of conv(S \ q) whose facets are all locally Delaunay
+     * (perturbed) is its Delaunay triangulation, so the guess is then
+     * exactly the fill the scans would find, at O(1) cost per cell
+     * instead of O(d).  Otherwise the scans wrap from scratch.          */
+    int guess = !d->on_hull && w->ierr != 1.0 / 0.0, outcome;
+    uint32_t start;
+    s = w_open_link(d, w, &start);
+    size_t refuted = 0;                              /* cells of a refuted guess */
+    d->wrap_how = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
+    if (s == DD_OK && guess) {
+        s = w_run(d, w, 1, start, &outcome);
+        if (s == DD_OK && outcome == W_DONE && w_locally_delaunay(d, w)) goto done;
+        d->wrap_how = DD_WRAP_REFUTED;
+        refuted = d->fill.n;
+        if (s == DD_OK) s = w_open_link(d, w, &start);
+    }
+    if (s == DD_OK) s = w_run(d, w, 0, start, &outcome);
+    if (s != DD_OK) return s;
+    if (outcome == W_DECLINED) {
+        d->wrap_how = DD_WRAP_DECLINED;
+        *declined = 1;
+        return DD_OK;
+    }
+done:
     d->sew_direct = 1;
-    x->tets_created = d->fill.n;
+    d->qdt->tets_created = d->fill.n + refuted;
     DD_PHASE_END(d, DD_PH_CONFLICT);
     return DD_OK;
 }

@@ -231,7 +231,8 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
         dd_delete_stats ds_;
         dd_last_delete_stats(t, &ds_);
         size_t fill = dd_num_tets(t) + star - before;
-        if (ds_.tets_created != fill) {
+        /* a refuted guess (wrap_guess_course below) built cells it dropped */
+        if (ds_.wrap != DD_WRAP_REFUTED && ds_.tets_created != fill) {
             snprintf(why, sizeof why, "vertex %u (degree %u, hull %d): %llu cells built, fill %zu", v,
                      ds_.degree, ds_.on_hull, (unsigned long long)ds_.tets_created, fill);
             ok = 0;
@@ -247,6 +248,76 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
     tl_check(st, ok && tested > 0, name, "%s", ok ? "no vertex tested" : why);
     dd_free(t);
     free(p);
+}
+
+/* Two concentric shells of n sphere points each, radii 1 and 2 (the outer
+ * one turned by a fixed rotation), every radius times 1 + 10^-e * [-1,1):
+ * each inner point is an interior vertex whose neighbours are nearly
+ * cospherical, so gift wrapping's guesses (wrap.c) are close calls.
+ * Even indices are the inner shell.                                     */
+static double *shells(uint32_t n, int e, uint32_t *np)
+{
+    uint32_t ns;
+    double *s = gen("sphere", n, &ns), *p = malloc(6 * ns * sizeof *p);
+    tl_rng r = {0x5E11500u + (uint64_t)e};
+    for (uint32_t i = 0; i < ns; i++)
+        for (int k = 0; k < 2; k++) {
+            double f = (k ? 2 : 1) * (1 + pow(10, -e) * (2 * tl_unif(&r) - 1));
+            double x = s[3 * i], y = s[3 * i + 1], *o = p + 3 * (2 * i + (uint32_t)k);
+            if (k) { double x0 = x; x = 0.6 * x - 0.8 * y; y = 0.8 * x0 + 0.6 * y; }
+            o[0] = x * f; o[1] = y * f; o[2] = s[3 * i + 2] * f;
+        }
+    free(s);
+    *np = 2 * ns;
+    return p;
+}
+
+/* Gift wrapping guesses the fill and proves it (wrap.c, dd_wrap_fill):
+ * whatever the proof decides, kept (DD_WRAP_PROVED) or refuted and wrapped
+ * again by the scans (DD_WRAP_REFUTED), the result is CGAL's.  Deletes up
+ * to `k` vertices of the given parity (-1: any) with gift-wrap and counts
+ * both courses; `want` says which must occur (bit 0 proved, bit 1
+ * refuted), so that both sides of the proof are exercised.              */
+static void wrap_guess_course(tl_state *st, const char *name, const double *pts, uint32_t n, int parity,
+                              uint32_t k, int want)
+{
+    char msg[256], tn[128], why[200] = "";
+    dd_tri *t;
+    snprintf(tn, sizeof tn, "wrap-guess/%s", name);
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, tn, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    long course[5] = {0}, bad = 0, done = 0;
+    for (uint32_t v = 0; v < n && done < k; v++) {
+        if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v) || dd_on_hull(t, v)) continue;
+        if (dd_cgal_remove(g, v)) continue;
+        canon ref = theirs(g);
+        dd_cgal_reinsert(g, v);
+        dd_status s = dd_delete(t, v, "gift-wrap");
+        canon now = ours(t);
+        dd_delete_stats ds_;
+        dd_last_delete_stats(t, &ds_);
+        course[ds_.wrap]++;
+        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) {
+            if (bad++ == 0) snprintf(why, sizeof why, "deleting %u (course %d): %s", v, ds_.wrap,
+                                     s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
+        }
+        free(now.a);
+        free(ref.a);
+        if (s == DD_OK && dd_reinsert(t, v) != DD_OK && bad++ == 0)
+            snprintf(why, sizeof why, "re-inserting %u: %s", v, dd_errmsg(t));
+        done++;
+    }
+    int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1;
+    tl_check(st, bad == 0 && done > 0 && (seen & want) == want, tn,
+             "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld", bad, done, why,
+             course[DD_WRAP_PROVED], course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
+    printf("# %s: proved %ld, refuted %ld, scanned %ld, declined %ld\n", tn, course[DD_WRAP_PROVED],
+           course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
+    dd_cgal_free(g);
+    dd_free(t);
 }
 
 static void refusals(tl_state *st)
@@ -444,6 +515,24 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < 3; i++) {
         wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "gift-wrap");
         wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "auto");
+    }
+    /* The guess of gift wrapping, proved and refuted (see above).       */
+    {
+        uint32_t np;
+        double *p = gen("uniform", 2000, &np);
+        wrap_guess_course(&st, "uniform-2000", p, np, -1, small ? 40 : 150, 1);
+        free(p);
+        p = gen("grid-perturbed", 512, &np);
+        wrap_guess_course(&st, "grid-perturbed-512", p, np, -1, small ? 100 : 300, 3);
+        free(p);
+        for (int e = 12; e <= 16; e += 2) {
+            char name[64];
+            p = shells(small ? 150 : 300, e, &np);
+            snprintf(name, sizeof name, "shells-%u-radial-1e-%d", np, e);
+            wrap_guess_course(&st, name, p, np, 0, small ? 60 : 150, e == 16 ? 3 : 1);
+            single_deletions(&st, name, p, np, k / 2, 120 + (uint64_t)e, 1, UINT32_MAX);
+            free(p);
+        }
     }
     refusals(&st);
     return tl_finish(&st);
