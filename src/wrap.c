@@ -62,6 +62,7 @@ struct dd_wrap {
                                      the cavity                           */
     uint8_t *closed;
     uint32_t *stack, nrec, cap_rec;
+    uint32_t *lcell, cap_lcell;   /* fill cell m's local numbers, 4m..4m+3 */
 };
 
 void dd_wrap_free(struct dd_wrap *w)
@@ -71,7 +72,7 @@ void dd_wrap_free(struct dd_wrap *w)
     for (int i = 0; i < 4; i++) free(w->lift[i]);
     free(w->o); free(w->loc);
     dd_trihash_free(&w->ftab);
-    free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack);
+    free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack); free(w->lcell);
     free(w);
 }
 
@@ -402,11 +403,9 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
 }
 #endif
 
-static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4])
 {
     double *const *L = w->lift;
-    double m[6], N[4], T[4];
-    w_pencil(w, a, b, c, m, N, T);
     const double oerr = w->oerr;
 #ifdef W_AVX2
     if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr);
@@ -496,12 +495,33 @@ static dd_status w_broken(dd_del *d, const char *what)
 }
 
 /* Room for `room` fill cells in all, `made` of them made already. */
-static dd_status w_reserve_fill(dd_del *d, size_t made, size_t room)
+static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_t room)
 {
     dd_status s = dd_reserve_cells(d->qdt, (uint32_t)(room - made));
     if (s == DD_OK) s = dd_vec_reserve(&d->fill, room);
     if (s == DD_OK) s = dd_vec_reserve(&d->sew_out, 4 * room);
+    if (s == DD_OK && 4 * room > w->cap_lcell) {
+        if (!grow((void **)&w->lcell, 4 * room, sizeof *w->lcell)) return DD_ERR_NOMEM;
+        w->cap_lcell = (uint32_t)(4 * room);
+    }
     return s;
+}
+
+/* Whether point y is in conflict with fill cell (a, b, c, p) (local
+ * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
+ * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
+ * check, else the exact perturbed test.                                 */
+static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
+{
+    double *const *L = w->lift;
+    const uint32_t a = lv[0];
+    double det = K[0] * (L[0][y] - L[0][a]) + K[1] * (L[1][y] - L[1][a]) + K[2] * (L[2][y] - L[2][a])
+               + K[3] * (L[3][y] - L[3][a]);
+    if (det > w->ierr) return 0;
+    if (det < -w->ierr) return 1;
+    w->nexact++;
+    const double *cell[4] = {w->pt[lv[0]], w->pt[lv[1]], w->pt[lv[2]], w->pt[lv[3]]};
+    return dd_points_conflict(pr, cell, -1, -1, w->pt[y]);
 }
 
 /* Opens the link triangles, oriented towards q, as the first records (all
@@ -576,11 +596,12 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     dd_tri *x = d->qdt;
     const uint32_t n = w->n, inf = n, *gid = d->order.a;
     size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
-    dd_status s = w_reserve_fill(d, 0, room);
+    dd_status s = w_reserve_fill(d, w, 0, room);
     if (s != DD_OK) return s;
     *outcome = W_DONE;
 #define W_WRONG(why) do { if (guess) { *outcome = W_WRONG_GUESS; return DD_OK; } return w_broken(d, why); } while (0)
     uint32_t ns = 0, nlink = 0;
+    double mb[6] = {0}, N[4], T[4], K[4] = {0};     /* guess: the new cell's pencil */
     w->stack[ns++] = start;
     size_t limit = guess ? room : 8 * (size_t)n * n + 64;   /* |fill| is O(n^2) */
     while (ns > 0) {
@@ -599,7 +620,8 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             }
             p = wrap_scan_inf(w, &x->pred, a, b);
         } else if (guess) {
-            p = wrap_guess(w, a, b, e);
+            w_pencil(w, a, b, e, mb, N, T);
+            p = wrap_guess(w, a, N, T);
         } else {
             p = wrap_scan(w, &x->pred, a, b, e);
             if (p == W_SHIFT) {
@@ -615,10 +637,24 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         if (p == W_NONE) W_WRONG("an open facet has no point beyond it");
         size_t fp = d->fill.n;
         if (fp >= limit) W_WRONG("the fill does not close");
-        if (fp == room && (s = w_reserve_fill(d, fp, room *= 2)) != DD_OK) return s;
+        if (fp == room && (s = w_reserve_fill(d, w, fp, room *= 2)) != DD_OK) return s;
         uint32_t m = dd_new_cell(x), lv[4] = {a, b, e, p};
         uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m, *so = d->sew_out.a + 4 * fp;
-        for (int i = 0; i < 4; i++) tv[i] = lv[i] == inf ? DD_INF : gid[lv[i]];
+        for (int i = 0; i < 4; i++) {
+            tv[i] = lv[i] == inf ? DD_INF : gid[lv[i]];
+            w->lcell[4 * (size_t)m + i] = lv[i];
+        }
+        if (guess) {                             /* for w_conflicts */
+            double *const *L = w->lift;
+            double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
+            w_cofactors(K, X, mb);
+        }
+        /* A guess must be locally Delaunay on each facet it shares with a
+         * fill cell (see dd_wrap_fill); the scans' cells are so.         */
+#define W_CHECK_FACET(own)                                                                   \
+        if (guess && (own) != W_NONE && w_conflicts(w, &x->pred, lv, K, w->lcell[own]))    \
+            W_WRONG("")
+        W_CHECK_FACET(w->own[r]);
         tn[3] = w->own[r];
         if (w->own[r] != W_NONE) {
             x->tn[w->own[r]] = 4 * m + 3;
@@ -638,6 +674,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
                 if (w->closed[o]) W_WRONG("a triangle bounds three cells");
                 /* The new cell must lie on the record's open side.       */
                 if (!w_same_turn(w->tri[o], f0, f1)) W_WRONG("a triangle is met from the wrong side");
+                W_CHECK_FACET(w->own[o]);
                 w->closed[o] = 1;
                 tn[j] = w->own[o];
                 if (w->own[o] != W_NONE) {
@@ -660,50 +697,9 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     /* Each link triangle closed at most once (above), so all of them
      * exactly once: the sew needs no matching of its own.               */
     if (nlink != d->star.n) W_WRONG("the fill does not cover the link");
+#undef W_CHECK_FACET
 #undef W_WRONG
     return DD_OK;
-}
-
-/* Whether every facet between two fill cells is locally Delaunay: the
- * point across it outside the cell's sphere (filtered as wrap_scan's
- * check, else the exact perturbed test).  For a guessed fill that is a
- * triangulation of the cavity this proves it is the Delaunay one: see
- * dd_wrap_fill.                                                          */
-static int w_locally_delaunay(dd_del *d, struct dd_wrap *w)
-{
-    const dd_tri *x = d->qdt;
-    double *const *L = w->lift;
-    const double ierr = w->ierr;
-    for (size_t f = 0; f < d->fill.n; f++) {
-        uint32_t c = d->fill.a[f], v[4];
-        const uint32_t *tv = x->tv + 4 * (size_t)c, *tn = x->tn + 4 * (size_t)c;
-        for (int i = 0; i < 4; i++) v[i] = w->loc[tv[i]];
-        const uint32_t a = v[0];
-        const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
-        double K[4], m[6];
-        int made = 0;
-        for (int j = 0; j < 4; j++) {
-            uint32_t nb = tn[j];
-            if (nb == DD_NONE || nb >> 2 < c) continue;     /* a link facet, or seen */
-            if (!made) {
-                double B[4] = {L[0][v[1]] - ax, L[1][v[1]] - ay, L[2][v[1]] - az, L[3][v[1]] - aw};
-                double C[4] = {L[0][v[2]] - ax, L[1][v[2]] - ay, L[2][v[2]] - az, L[3][v[2]] - aw};
-                double X[4] = {L[0][v[3]] - ax, L[1][v[3]] - ay, L[2][v[3]] - az, L[3][v[3]] - aw};
-                w_minors(m, B, C);
-                w_cofactors(K, X, m);
-                made = 1;
-            }
-            uint32_t y = w->loc[x->tv[nb]];              /* tv[4c'+j']: the apex */
-            double det = K[0] * (L[0][y] - ax) + K[1] * (L[1][y] - ay) + K[2] * (L[2][y] - az)
-                       + K[3] * (L[3][y] - aw);
-            if (det > ierr) continue;                    /* surely outside */
-            if (det < -ierr) return 0;
-            w->nexact++;
-            const double *cell[4] = {w->pt[v[0]], w->pt[v[1]], w->pt[v[2]], w->pt[v[3]]};
-            if (dd_points_conflict(&d->qdt->pred, cell, -1, -1, w->pt[y])) return 0;
-        }
-    }
-    return 1;
 }
 
 dd_status dd_wrap_fill(dd_del *d, int *declined)
@@ -734,7 +730,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
      *    of the map: each point is covered by as many positive cells as
      *    the link winds round it, once), a triangulation of the cavity;
      *  - and every facet between two fill cells is locally Delaunay
-     *    (w_locally_delaunay); the link triangles are so already, facing
+     *    (w_run, w_conflicts); the link triangles are so already, facing
      *    cells of DT(S) whose spheres hold no point.
      * A triangulation of conv(S \ q) whose facets are all locally Delaunay
      * (perturbed) is its Delaunay triangulation, so the guess is then
@@ -747,7 +743,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     d->wrap_how = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
     if (s == DD_OK && guess) {
         s = w_run(d, w, 1, start, &outcome);
-        if (s == DD_OK && outcome == W_DONE && w_locally_delaunay(d, w)) goto done;
+        if (s == DD_OK && outcome == W_DONE) goto done;
         d->wrap_how = DD_WRAP_REFUTED;
         refuted = d->fill.n;
         if (s == DD_OK) s = w_open_link(d, w, &start);
