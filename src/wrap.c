@@ -115,11 +115,12 @@ static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
     return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
 }
 
-/* Room for one more facet record. */
-static dd_status w_reserve_rec(struct dd_wrap *w)
+/* Room for `more` more facet records. */
+static dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
 {
-    if (w->nrec == w->cap_rec) {
-        uint32_t cap = w->cap_rec ? 2 * w->cap_rec : 256;
+    if (w->nrec + more > w->cap_rec) {
+        uint32_t cap = w->cap_rec ? w->cap_rec : 256;
+        while (cap < w->nrec + more) cap *= 2;
         if (!grow((void **)&w->tri, cap, sizeof *w->tri) || !grow((void **)&w->own, cap, sizeof *w->own) ||
             !grow((void **)&w->out, cap, sizeof *w->out) ||
             !grow((void **)&w->closed, cap, sizeof *w->closed) || !grow((void **)&w->stack, cap, sizeof *w->stack))
@@ -544,13 +545,16 @@ static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], con
 static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
 {
     dd_tri *t = d->t;
-    const uint32_t n = w->n, inf = n, *gid = d->order.a;
+    const uint32_t n = w->n, inf = n;
     dd_qdt_reset(d, 0);
     w->nrec = 0;
     dd_status s = dd_trihash_reset(&w->ftab, 4 * (size_t)n);
     if (s != DD_OK) return s;
+    if ((s = w_reserve_recs(w, d->star.n)) != DD_OK) return s;
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
+    /* Every vertex of a star cell but q is a neighbour (collect_star), so
+     * w->loc holds the local number of each finite link vertex.         */
     for (size_t k = 0; k < d->star.n; k++) {
         uint32_t c = d->star.a[k];
         const uint32_t *v = t->tv + 4 * (size_t)c;
@@ -558,17 +562,11 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
         uint32_t lv[3];
         for (int j = 0; j < 3; j++) {
             uint32_t g = v[dd_facet[i][j]];
-            if (g == DD_INF) {
-                lv[j] = inf;
-                continue;
-            }
-            if (g >= t->nvid || w->loc[g] >= n || gid[w->loc[g]] != g)
-                return w_broken(d, "a link vertex is not a neighbour");
-            lv[j] = w->loc[g];
+            lv[j] = g == DD_INF ? inf : w->loc[g];
         }
         int found;
         uint32_t *val = dd_trihash_slot(&w->ftab, lv[0], lv[1], lv[2], &found);
-        if (!val || (s = w_reserve_rec(w)) != DD_OK) return DD_ERR_NOMEM;
+        if (!val) return DD_ERR_NOMEM;
         if (found) return w_broken(d, "a link triangle appears twice");
         uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
         if (key < kmin) { kmin = key; rmin = w->nrec; }
@@ -696,7 +694,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
                 }
                 continue;
             }
-            s = w_reserve_rec(w);
+            s = w_reserve_recs(w, 1);
             if (s != DD_OK) return s;
             tn[j] = DD_NONE;
             so[j] = DD_NONE;
