@@ -36,7 +36,9 @@
  * (n = 50: 1183), where the conflict DT makes far fewer: from 40
  * neighbours on, wrapping declines once its exact tests pass 2n (warm,
  * cosphere degree [48,64): 719 us wrapping against 383 us for
- * grr-neighbor; below 40 wrapping stays ahead: [32,48) 294 vs 403 us). */
+ * grr-neighbor; below 40 wrapping stays ahead: [32,48) 294 vs 403 us).
+ * The budget counts the exact tests of a guess's proof too: on the
+ * moment curve from degree about 300 the proof alone passes it.       */
 #define W_EXACT_FROM 40
 
 struct dd_wrap {
@@ -436,6 +438,21 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
     return tie ? W_TIE : best;
 }
 
+/* Whether every point but a, b, c is surely behind facet (a, b, c) of
+ * normal N (pencil of w_pencil; o evaluated as in wrap_scan, whose test
+ * this is): then abc is a facet of the hull of the neighbours.          */
+static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
+{
+    double *const *L = w->lift;
+    const double ax = L[0][a], ay = L[1][a], az = L[2][a];
+    int sure = 0;
+    for (uint32_t k = 0; k < w->n; k++) {
+        double ok = (L[0][k] - ax) * N[0] + (L[1][k] - ay) * N[1] + (L[2][k] - az) * N[2];
+        sure += ok < -w->oerr;
+    }
+    return sure == (int)w->n - 3;
+}
+
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
  * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
  * facet (b, a, p) has no point beyond it.  Seen along the hull edge ab,
@@ -611,7 +628,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     uint32_t ns = 0, nlink = 0;
     double mb[6] = {0}, N[4], T[4], K[4] = {0};     /* guess: the new cell's pencil */
     w->stack[ns++] = start;
-    size_t limit = guess ? room : 8 * (size_t)n * n + 64;   /* |fill| is O(n^2) */
+    size_t limit = 8 * (size_t)n * n + 64;          /* |fill| is O(n^2) */
     while (ns > 0) {
         uint32_t r = w->stack[--ns];
         if (w->closed[r]) continue;
@@ -630,6 +647,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         } else if (guess) {
             w_pencil(w, a, b, e, mb, N, T);
             p = wrap_guess(w, a, N, T);
+            if (p == W_NONE) p = d->on_hull && w_all_behind(w, a, N) ? inf : W_TIE;
         } else {
             p = wrap_scan(w, &x->pred, a, b, e);
             if (p == W_SHIFT) {
@@ -652,15 +670,17 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             tv[i] = lv[i] == inf ? DD_INF : gid[lv[i]];
             w->lcell[4 * (size_t)m + i] = lv[i];
         }
-        if (guess) {                             /* for w_conflicts */
+        const int finite = a != inf && b != inf && e != inf && p != inf;
+        if (guess && finite) {                   /* for w_conflicts */
             double *const *L = w->lift;
             double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
             w_cofactors(K, X, mb);
         }
         /* A guess must be locally Delaunay on each facet it shares with a
-         * fill cell (see dd_wrap_fill); the scans' cells are so.         */
-#define W_CHECK_FACET(own)                                                                   \
-        if (guess && (own) != W_NONE && w_conflicts(w, &x->pred, lv, K, w->lcell[own]))    \
+         * finite fill cell (see dd_wrap_fill); the scans' cells are so.  */
+#define W_CHECK_FACET(own)                                                                 \
+        if (guess && finite && (own) != W_NONE && w->lcell[own] != inf &&                \
+            w_conflicts(w, &x->pred, lv, K, w->lcell[own]))                               \
             W_WRONG("")
         W_CHECK_FACET(w->own[r]);
         tn[3] = w->own[r];
@@ -734,24 +754,34 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
 #else
     w->avx2 = w->has_avx2;
 #endif
-    /* Guess, then prove (an interior vertex with filters on).  The guessed
-     * fill takes each cell's fourth point among the link neighbours of
-     * its facet's corners only (wrap_guess), with no check against the
-     * other points; it is kept when
-     *  - each cell is surely positively oriented (wrap_guess), each facet
-     *    between two cells is met from opposite sides, and the link
-     *    triangles are the free facets, each met once (w_run): then the
-     *    cells cover every point of the cavity exactly once (the degree
-     *    of the map: each point is covered by as many positive cells as
-     *    the link winds round it, once), a triangulation of the cavity;
-     *  - and every facet between two fill cells is locally Delaunay
-     *    (w_run, w_conflicts); the link triangles are so already, facing
-     *    cells of DT(S) whose spheres hold no point.
+    /* Guess, then prove (filters on).  The guessed fill takes for each
+     * finite facet the point of least t/o beyond it (wrap_guess: one pass,
+     * no check against the other points), or, for a hull vertex, the
+     * infinite vertex when every other point is surely behind the facet
+     * (w_all_behind); facets through the infinite vertex get the exact
+     * Jarvis step of the scans (wrap_scan_inf).  The guess is kept when
+     *  - each finite cell is surely positively oriented (wrap_guess), each
+     *    facet between two cells is met from opposite sides, and the link
+     *    triangles are the free facets, each met once (w_run).  For an
+     *    interior vertex the cells then cover every point of the cavity
+     *    exactly once (the degree of the map: each point is covered by as
+     *    many positive cells as the link winds round it, once).  For a
+     *    hull vertex, the infinite cells' facets are facets of the hull
+     *    of the neighbours (all points behind them), forming a patch of
+     *    that hull bounded by the link's hull edges, oriented: the patch
+     *    the scans find.  The finite cells' boundary is then the same
+     *    chain as that of the true fill, and by the same degree argument
+     *    they tile the part of the cavity inside conv(S \ q);
+     *  - and every facet between two finite fill cells is locally Delaunay
+     *    (w_run, w_conflicts).  The link triangles are so already, facing
+     *    cells of DT(S) whose spheres hold no point, and the facets on the
+     *    new hull are convex edges and faces, all points being behind.
      * A triangulation of conv(S \ q) whose facets are all locally Delaunay
      * (perturbed) is its Delaunay triangulation, so the guess is then
-     * exactly the fill the scans would find, at O(1) cost per cell
-     * instead of O(d).  Otherwise the scans wrap from scratch.          */
-    int guess = !d->on_hull && w->ierr != 1.0 / 0.0, outcome;
+     * exactly the fill the scans would find, at the cost of one pass per
+     * cell instead of two and no branch per point.  Otherwise the scans
+     * wrap from scratch.                                                 */
+    int guess = w->ierr != 1.0 / 0.0, outcome;
     uint32_t start;
     s = w_open_link(d, w, &start);
     size_t refuted = 0;                              /* cells of a refuted guess */

@@ -16,13 +16,12 @@
  *
  * Cost: one scan of P per fill cell, O(d) lifted dot products each, so
  * O(d * |fill|), about d^2: cheaper than the conflict DT, and than GRR
- * below degree 96 (auto.c).  For an interior vertex the wrap first
- * guesses, one pass per cell with no check (four points at a time with
- * AVX2), and keeps the guess when it proves to be a triangulation of the
- * cavity whose facets are all locally Delaunay: then it is DT(S \ q)'s
- * fill.  Otherwise, and for hull vertices, the certified scans wrap: each
- * comparison filtered (wrap.c) and else decided by the exact perturbed
- * predicates of pred.c.  Either way the fill is exactly the one the other
+ * below degree 256 (auto.c).  The wrap first guesses, one pass per cell
+ * with no check (four points at a time with AVX2), and keeps the guess
+ * when it proves to be a triangulation of the cavity whose facets are
+ * all locally Delaunay: then it is DT(S \ q)'s fill.  Otherwise the
+ * certified scans wrap: each comparison filtered (wrap.c) and else
+ * decided by the exact perturbed predicates of pred.c.  Either way the fill is exactly the one the other
  * strategies build.
  */
 #ifndef DD_WRAP_H

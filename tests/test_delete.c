@@ -204,7 +204,7 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
- * and hull vertices alike, and for auto, which wraps below degree 96.
+ * and hull vertices alike, and for auto, which wraps below degree 256.
  * The result itself is CGAL's: checked by the tests above.              */
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {
@@ -221,7 +221,7 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
     int ok = 1, tested = 0;
     char why[160] = "";
     for (uint32_t v = 0; v < np && tested < 40; v += 7) {
-        if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 96) continue;
+        if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 256) continue;
         size_t before = dd_num_tets(t), star = 2 * (size_t)dd_degree(t, v) - 4;
         if (dd_delete(t, v, variant) != DD_OK) {
             snprintf(why, sizeof why, "deleting %u: %s", v, dd_errmsg(t));
@@ -291,7 +291,7 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
     dd_cgal *g = dd_cgal_build(pts, n);
     long course[5] = {0}, bad = 0, done = 0;
     for (uint32_t v = 0; v < n && done < k; v++) {
-        if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v) || dd_on_hull(t, v)) continue;
+        if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
         if (dd_cgal_remove(g, v)) continue;
         canon ref = theirs(g);
         dd_cgal_reinsert(g, v);
@@ -457,6 +457,27 @@ int main(int argc, char **argv)
         p[3 * n] = 0.5; p[3 * n + 1] = 0.5; p[3 * n + 2] = -1; n++;
         single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1, UINT32_MAX);
     }
+    /* A nearly flat hull: a 7x7 grid lifted by 10^-e * [-1,1) (e = 13..16)
+     * under an apex, so that deleting a grid vertex opens hull facets with
+     * points a hair's breadth beyond or behind them, within the
+     * orientation filter's bound: gift wrapping's guess may not take such
+     * a facet for a hull facet (w_all_behind).                          */
+    for (int e = 13; e <= 16; e++) {
+        double p[3 * 51];
+        uint32_t n = 0;
+        tl_rng r = {0xF1A7u + (uint64_t)e};
+        for (int x = 0; x < 7; x++)
+            for (int y = 0; y < 7; y++) {
+                p[3 * n] = x; p[3 * n + 1] = y; p[3 * n + 2] = pow(10, -e) * (2 * tl_unif(&r) - 1);
+                n++;
+            }
+        p[3 * n] = 3.2; p[3 * n + 1] = 2.9; p[3 * n + 2] = 4; n++;
+        p[3 * n] = 1.1; p[3 * n + 1] = 0.7; p[3 * n + 2] = 9; n++;
+        char name[64];
+        snprintf(name, sizeof name, "near-flat-grid-1e-%d", e);
+        single_deletions(&st, name, p, n, 40, 30 + (uint64_t)e, 1, UINT32_MAX);
+        wrap_guess_course(&st, name, p, n, -1, 49, 0);
+    }
     /* The centre of 300 points on a sphere: its star is the whole ball, so
      * deleting it fills a cavity with 300 boundary vertices and
      * re-inserting it refills one; both are beyond the direct edge table
@@ -524,6 +545,14 @@ int main(int argc, char **argv)
         free(p);
         p = gen("grid-perturbed", 512, &np);
         wrap_guess_course(&st, "grid-perturbed-512", p, np, -1, small ? 100 : 300, 3);
+        free(p);
+        /* hull vertices: every point of a sphere (nearly cospherical, so
+         * some guesses are refuted), and the moment curve                */
+        p = gen("sphere", 1000, &np);
+        wrap_guess_course(&st, "sphere-1000", p, np, -1, small ? 100 : 300, 3);
+        free(p);
+        p = gen("moment", 128, &np);
+        wrap_guess_course(&st, "moment-128", p, np, -1, small ? 20 : 128, 1);
         free(p);
         for (int e = 12; e <= 16; e += 2) {
             char name[64];

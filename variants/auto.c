@@ -2,21 +2,26 @@
  * auto.c -- the default strategy, a dispatcher over the fastest correct
  * choice by the cavity's degree (so that dd_delete(t, v, NULL) is that
  * choice):
- *  - below degree 96: gift wrapping (wrap.h), which builds only the
+ *  - below degree 256: gift wrapping (wrap.h), which builds only the
  *    fill's cells, unless it declines (a hull vertex with coplanar points
- *    on its new hull facets);
+ *    on its new hull facets, or a degenerate cavity past its budget of
+ *    exact tests);
  *  - otherwise, below degree 40, the compact conflict DT (qsmall.c) with
  *    the neighbours inserted nearest to q first;
  *  - from 40 on, grr-neighbor.
- * The crossovers are where `make bench` (47bce1d and after) finds them:
- * gift wrapping beats the conflict DT on every low-degree row (uniform
- * [12,16) 2.96 vs 4.27 us, sphere [4,8) 0.8 vs 1.9 us), and grr at
- * [64,96) on the moment curve (31 vs 39-41 us) and the helix (69 vs
- * 68-71 us), but not at [96,128) (helix 154 vs 77-88 us): its cost is
- * about d times the fill's size.  grr-neighbor is the fastest GRR from
- * degree 64 on in the last two bench runs (moment, degree 1023: 2370x
- * and 2231x against 1926x and 1811x for grr-hashing).  Nearest-first
- * rather than random order for the conflict DT: on the bench's
+ * The crossovers: gift wrapping beats the conflict DT on every
+ * low-degree row of `make bench` (47bce1d: uniform [12,16) 2.96 vs 4.27
+ * us, sphere [4,8) 0.8 vs 1.9 us).  Since it guesses and proves (wrap.c)
+ * it also beats grr-neighbor up to degree 255 (median of 5 repetitions,
+ * gift-wrap vs auto then grr-neighbor: moment [150,256) 63 vs 133 us,
+ * helix [96,256) 81 vs 153 us, moment 256 94 vs 165 us), but not from
+ * about 300 on, where the moment curve and the helix are so nearly
+ * degenerate that the proof runs past the budget and the wrap declines
+ * (moment 384: 859 vs 243 us; helix n = 32000, [300,450): 698 vs 318
+ * us).  grr-neighbor is the fastest GRR from degree 64 on in the bench
+ * runs of 47bce1d and 81975a5 (moment, degree 1023: 2370x and 2231x
+ * against 1926x and 1811x for grr-hashing).  Nearest-first rather than
+ * random order for the conflict DT: on the bench's
  * low-degree inputs it builds about a fifth fewer cells (uniform, degree
  * ~15: 1090 vs 1346 over 12 deletions; `dtdel delete --stats`).
  */
@@ -24,7 +29,7 @@
 #include "../src/qsmall.h"
 #include "../src/wrap.h"
 
-#define AUTO_WRAP_BELOW_DEGREE 96
+#define AUTO_WRAP_BELOW_DEGREE 256
 #define AUTO_GRR_FROM_DEGREE 40
 
 /* Below the crossover every neighbour set fits the compact structure. */
@@ -56,6 +61,6 @@ static dd_status auto_fill(dd_del *d)
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: below degree 96 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
+    "default: below degree 256 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
     auto_fill,
 };
