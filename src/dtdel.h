@@ -120,7 +120,7 @@ enum {
     DD_WRAP_NONE,       /* not tried                                       */
     DD_WRAP_PROVED,     /* guessed fill proved Delaunay and kept           */
     DD_WRAP_REFUTED,    /* guessed fill refuted; the scans wrapped again   */
-    DD_WRAP_SCANNED,    /* scans only (a hull vertex, or filters off)      */
+    DD_WRAP_SCANNED,    /* scans only (filters off: coordinates out of range) */
     DD_WRAP_DECLINED    /* left to the conflict DT                         */
 };
 

@@ -110,10 +110,7 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
  * bits each): picks the link triangle the wrap starts from.             */
 static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
 {
-    uint32_t t;
-    if (a > b) { t = a; a = b; b = t; }
-    if (b > c) { t = b; b = c; c = t; }
-    if (a > b) { t = a; a = b; b = t; }
+    dd_sort3u(&a, &b, &c);
     return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
 }
 
@@ -250,6 +247,22 @@ static inline void w_minors(double m[6], const double B[4], const double C[4])
     m[5] = B[2] * C[3] - B[3] * C[2];
 }
 
+/* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
+ * and its orientation o(P) = N . P: the one evaluation of o that every
+ * scan uses, so that the orientation filter's bound (w_lift) covers each
+ * (the AVX2 guess repeats these operations lane by lane).                */
+static inline double w_row_o(double *const *L, uint32_t k, const double A[4], const double N[4], double P[4])
+{
+    for (int i = 0; i < 4; i++) P[i] = L[i][k] - A[i];
+    return P[0] * N[0] + P[1] * N[1] + P[2] * N[2];
+}
+
+/* t(P) = T . P (see w_cofactors).                                       */
+static inline double w_t(const double P[4], const double T[4])
+{
+    return P[0] * T[0] + P[1] * T[1] + P[2] * T[2] + P[3] * T[3];
+}
+
 /* Facet (a, b, c)'s pencil: minors m of B, C, the normal N (o(P) = N . P)
  * and T (t(P) = T . P), with rows taken from a.                         */
 static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double m[6],
@@ -264,6 +277,23 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     w_cofactors(T, N, m);
 }
 
+/* Whether point y is in conflict with fill cell (a, b, c, p) (local
+ * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
+ * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
+ * check, else the exact perturbed test.                                 */
+static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
+{
+    double *const *L = w->lift;
+    const uint32_t a = lv[0];
+    const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
+    double det = w_t(P, K);
+    if (det > w->ierr) return 0;
+    if (det < -w->ierr) return 1;
+    w->nexact++;
+    const double *cell[4] = {w->pt[lv[0]], w->pt[lv[1]], w->pt[lv[2]], w->pt[lv[3]]};
+    return dd_points_conflict(pr, cell, -1, -1, w->pt[y]);
+}
+
 /* The exact scan: one pass keeping the best point so far, each test
  * filtered (bounds of w_lift) and else decided by the exact perturbed
  * predicates.  Its branches depend on the data, which costs where the
@@ -273,15 +303,14 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
                                 const double m[6])
 {
     double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, N[4] = {m[3], -m[1], m[0], 0};
     double K[4] = {0, 0, 0, 0};
-    const double oerr = w->oerr, ierr = w->ierr;
-    uint32_t best = W_NONE;
+    const double oerr = w->oerr;
+    uint32_t best = W_NONE, cell[4] = {a, b, c, W_NONE};
     int zero = 0;
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b || k == c) continue;
-        double P[4];
-        for (int i = 0; i < 4; i++) P[i] = L[i][k] - L[i][a];
-        double o = P[0] * m[3] - P[1] * m[1] + P[2] * m[0];
+        double P[4], o = w_row_o(L, k, A, N, P);
         if (!(o > oerr)) {
             if (o < -oerr) continue;
             w->nexact++;
@@ -289,16 +318,8 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
             zero |= or == 0;
             if (or <= 0) continue;
         }
-        if (best != W_NONE) {
-            double det = K[0] * P[0] + K[1] * P[1] + K[2] * P[2] + K[3] * P[3];
-            if (det >= -ierr) {                  /* not surely inside */
-                if (det > ierr) continue;        /* surely outside    */
-                    w->nexact++;
-                const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], w->pt[best]};
-                if (!dd_points_conflict(pr, cell, -1, -1, w->pt[k])) continue;
-            }
-        }
-        best = k;
+        if (best != W_NONE && !w_conflicts(w, pr, cell, K, k)) continue;
+        best = cell[3] = k;
         w_cofactors(K, P, m);
     }
     /* No point beyond: for a hull vertex, abc becomes a hull facet, the
@@ -320,7 +341,7 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
 static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
 {
     double *const *L = w->lift;
-    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double m[6], N[4], T[4], K[4];
     w_pencil(w, a, b, c, m, N, T);
     const double oerr = w->oerr, ierr = w->ierr;
@@ -333,9 +354,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     double lo = 1.0 / 0.0;
     uint32_t best = W_NONE;
     for (uint32_t k = 0; k < n; k++) {
-        double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
-        double ok = P0 * N[0] + P1 * N[1] + P2 * N[2];
-        double tk = P0 * T[0] + P1 * T[1] + P2 * T[2] + P3 * T[3];
+        double P[4], ok = w_row_o(L, k, A, N, P), tk = w_t(P, T);
         int pos = ok > oerr;
         unsure += !pos & (ok >= -oerr);
         o[k] = pos ? ok : -1.0;                 /* > oerr: a candidate */
@@ -345,13 +364,15 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
         best = better ? k : best;
     }
     if (unsure != 3 || best == W_NONE) return wrap_scan_exact(w, pr, a, b, c, m);
-    double X[4] = {L[0][best] - ax, L[1][best] - ay, L[2][best] - az, L[3][best] - aw};
+    double X[4];
+    w_row_o(L, best, A, N, X);
     w_cofactors(K, X, m);
     o[best] = -1.0;                             /* not tested against itself */
     int bad = 0;
     for (uint32_t k = 0; k < n; k++) {
-        double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
-        double det = K[0] * P0 + K[1] * P1 + K[2] * P2 + K[3] * P3;
+        double P[4];
+        w_row_o(L, k, A, N, P);
+        double det = w_t(P, K);
         bad |= (o[k] > oerr) & !(det > ierr);
     }
     if (!bad) return best;
@@ -421,14 +442,12 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
 #ifdef W_AVX2
     if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr);
 #endif
-    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double lo_t = 1, lo_o = 0;
     uint32_t best = W_NONE;
     int tie = 0;
     for (uint32_t k = 0; k < w->n; k++) {
-        double P0 = L[0][k] - ax, P1 = L[1][k] - ay, P2 = L[2][k] - az, P3 = L[3][k] - aw;
-        double ok = P0 * N[0] + P1 * N[1] + P2 * N[2];
-        double tk = P0 * T[0] + P1 * T[1] + P2 * T[2] + P3 * T[3];
+        double P[4], ok = w_row_o(L, k, A, N, P), tk = w_t(P, T);
         int pos = ok > oerr, better = pos & (tk * lo_o < lo_t * ok);
         tie |= pos & (tk * lo_o == lo_t * ok);
         lo_t = better ? tk : lo_t;
@@ -444,11 +463,11 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
 static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
 {
     double *const *L = w->lift;
-    const double ax = L[0][a], ay = L[1][a], az = L[2][a];
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     int sure = 0;
     for (uint32_t k = 0; k < w->n; k++) {
-        double ok = (L[0][k] - ax) * N[0] + (L[1][k] - ay) * N[1] + (L[2][k] - az) * N[2];
-        sure += ok < -w->oerr;
+        double P[4];
+        sure += w_row_o(L, k, A, N, P) < -w->oerr;
     }
     return sure == (int)w->n - 3;
 }
@@ -533,23 +552,6 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
         w->cap_lcell = (uint32_t)(4 * room);
     }
     return s;
-}
-
-/* Whether point y is in conflict with fill cell (a, b, c, p) (local
- * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
- * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
- * check, else the exact perturbed test.                                 */
-static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
-{
-    double *const *L = w->lift;
-    const uint32_t a = lv[0];
-    double det = K[0] * (L[0][y] - L[0][a]) + K[1] * (L[1][y] - L[1][a]) + K[2] * (L[2][y] - L[2][a])
-               + K[3] * (L[3][y] - L[3][a]);
-    if (det > w->ierr) return 0;
-    if (det < -w->ierr) return 1;
-    w->nexact++;
-    const double *cell[4] = {w->pt[lv[0]], w->pt[lv[1]], w->pt[lv[2]], w->pt[lv[3]]};
-    return dd_points_conflict(pr, cell, -1, -1, w->pt[y]);
 }
 
 /* Opens the link triangles, oriented towards q, as the first records (all
@@ -647,7 +649,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         } else if (guess) {
             w_pencil(w, a, b, e, mb, N, T);
             p = wrap_guess(w, a, N, T);
-            if (p == W_NONE) p = d->on_hull && w_all_behind(w, a, N) ? inf : W_TIE;
+            if (p == W_NONE && d->on_hull && w_all_behind(w, a, N)) p = inf;
         } else {
             p = wrap_scan(w, &x->pred, a, b, e);
             if (p == W_SHIFT) {
