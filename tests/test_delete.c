@@ -458,7 +458,7 @@ int main(int argc, char **argv)
         single_deletions(&st, "apex-over-grid", p, n, 40, 5, 1, UINT32_MAX);
     }
     /* A nearly flat hull: a 7x7 grid lifted by 10^-e * [-1,1) (e = 13..16)
-     * under an apex, so that deleting a grid vertex opens hull facets with
+     * under two apexes, so that deleting a grid vertex opens hull facets with
      * points a hair's breadth beyond or behind them, within the
      * orientation filter's bound: gift wrapping's guess may not take such
      * a facet for a hull facet (w_all_behind).                          */
