@@ -556,7 +556,11 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
 
 /* Opens the link triangles, oriented towards q, as the first records (all
  * in the table) and returns the record the wrap starts from, *start: the
- * triangle of least key, rotated to begin with its least local number.
+ * triangle of least key, rotated to begin with its least local number;
+ * for a hull vertex, the least among the triangles through the infinite
+ * vertex, so that the wrap's first step is wrap_scan_inf: when the hull
+ * is degenerate there (coplanar neighbours, W_BAIL: a grid's face) the
+ * wrap declines before any other work.
  * With the neighbours sorted by id, the whole wrap, and so the order and
  * rotation of the fill cells, does not depend on how the star was stored:
  * the same deletion repeated is the same computation, as with the other
@@ -587,7 +591,8 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
         uint32_t *val = dd_trihash_slot(&w->ftab, lv[0], lv[1], lv[2], &found);
         if (!val) return DD_ERR_NOMEM;
         if (found) return w_broken(d, "a link triangle appears twice");
-        uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
+        uint64_t key = w_tri_key(lv[0], lv[1], lv[2]) |
+                       (uint64_t)(lv[0] != inf && lv[1] != inf && lv[2] != inf) << 63;
         if (key < kmin) { kmin = key; rmin = w->nrec; }
         w->out[w->nrec] = t->tn[4 * (size_t)c + (uint32_t)i];
         w_open(w, val, lv[0], lv[1], lv[2], W_NONE);

@@ -16,7 +16,11 @@
  * of a sphere of radius ~2^26 and 53-bit points of an exact tilted plane
  * (exact zeros whose double and double-double evaluations round: these
  * stress the error bounds of stages A and C -- shrinking those bounds by
- * 2^-3 resp. 2^-8 makes this test fail), each perturbed by one ulp in
+ * 2^-3 resp. 2^-8 makes this test fail), integer points of spheres of
+ * norm 3001, 2^19 - 1 and 2^19 + 4321 (exact zeros on either side of the
+ * 20-bit limit of stage B's integer evaluation), and five corners of
+ * cubes of side 2^k - 1 (the integer evaluation's largest values: a limit
+ * raised past 20 bits overflows and fails), each perturbed by one ulp in
  * some rounds, translated by 1e6 or 1e15 and scaled by powers of two.
  * Checks that every stage of both predicates ran, that coordinates
  * outside the safe range (1e-200, 1e200, NaN, ...) give DD_EXP_UNSAFE,
@@ -53,18 +57,23 @@ typedef struct tally {
 
 enum kind {
     K_GRID, K_SPHERE, K_MOMENT, K_UNIFORM, K_UNIT_SPHERE, K_PLANE, K_MIXED,
-    K_WIDE, K_BIG_SPHERE, K_TILTED, K_NKINDS
+    K_WIDE, K_BIG_SPHERE, K_TILTED, K_MID_SPHERE, K_NKINDS
 };
 static const char *const kind_name[K_NKINDS] = {
     "grid", "sphere", "moment-curve", "uniform", "unit-sphere",
     "coplanar-inexact", "mixed-magnitude", "wide-exponent",
-    "big-sphere", "tilted-plane"
+    "big-sphere", "tilted-plane", "mid-sphere"
 };
 
 
 static pool spheres[6];
 static const int64_t sphere_r2[6] = {9, 50, 81, 338, 3000, 12345};
 static pool big_sphere;
+/* Norms 3001, 2^19 - 1 and 2^19 + 4321: differences of up to about 2^13,
+ * just under 2^20, and just over it, around the 20-bit limit of stage B's
+ * integer evaluation (expansion.c, insphere_int).                        */
+static pool mid_spheres[3];
+static const int64_t mid_norm[3] = {3001, (1LL << 19) - 1, (1LL << 19) + 4321};
 
 static int64_t int_sqrt(int64_t v)   /* floor(sqrt(v)), v >= 0 */
 {
@@ -177,6 +186,11 @@ static int generate(tl_rng *r, int kind, double q[5][3])
          * cospherical, and ~135-bit determinants, so doubles and double-
          * doubles both round (stresses the stage A and C error bounds)  */
         tl_pick(r, &big_sphere, 5, q);
+        return 1;
+    case K_MID_SPHERE:
+        /* integer points of spheres of norm up to ~2^19: exactly
+         * cospherical, the heads integers of 10 to 21 bits              */
+        tl_pick(r, &mid_spheres[tl_int(r, 0, 2)], 5, q);
         return 1;
     default: { /* K_TILTED: the plane z = x + y through 53-bit points of
                 * several binades, x + y exact: inexact differences, and
@@ -397,7 +411,7 @@ static void run_kind(tl_state *st, dd_pred *pr, tl_rng *r, int kind, long rounds
     tl_check(st, t.mismatches == 0, name, "%ld of %ld tuples differ from GMP; first: %s",
              t.mismatches, t.tuples, t.first);
     if (kind == K_SPHERE || kind == K_PLANE || kind == K_MIXED || kind == K_BIG_SPHERE
-        || kind == K_TILTED) {
+        || kind == K_TILTED || kind == K_MID_SPHERE) {
         snprintf(name, sizeof name, "expansion/%s%s-exact-zero", tag, kind_name[kind]);
         tl_check(st, cosph > rounds / 4 && cosph_zero == cosph, name,
                  "%ld of %ld exactly degenerate tuples gave insphere 0", cosph_zero, cosph);
@@ -407,6 +421,43 @@ static void run_kind(tl_state *st, dd_pred *pr, tl_rng *r, int kind, long rounds
     total->mismatches += t.mismatches;
     for (int w = 0; w < 2; w++)
         for (int s = 0; s < 5; s++) total->stage[w][s] += t.stage[w][s];
+}
+
+/* ---- the integer stage's limit -------------------------------------------- */
+
+/* Five corners of a cube of side M = 2^k - 1 are cospherical; with one of
+ * them as t the heads are 0 or +-M and the cofactors reach 3 M^3 (row
+ * (M, M, M) against two edges): the largest values stage B's integer
+ * evaluation can meet for k = 20, and past 2^63 from k = 21 on, where it
+ * must not be used.  Every 5-subset, in two orders, at k = 10, 20, 21, 22
+ * and 30, must give insphere 0 (raising the 20-bit limit fails here).   */
+static void check_cube_corners(tl_state *st)
+{
+    static const int ks[5] = {10, 20, 21, 22, 30};
+    long wrong = 0, n = 0;
+    char first[160] = "";
+    for (int ki = 0; ki < 5; ki++) {
+        double m = ldexp(1.0, ks[ki]) - 1.0;
+        for (int mask = 0; mask < 256; mask++) {
+            if (__builtin_popcount((unsigned)mask) != 5) continue;
+            double q[5][3];
+            int k = 0;
+            for (int c = 0; c < 8; c++)
+                if (mask >> c & 1) {
+                    for (int x = 0; x < 3; x++) q[k][x] = (c >> x & 1) ? m : 0.0;
+                    k++;
+                }
+            for (int order = 0; order < 2; order++) {
+                int s = order ? dd_insphere_exp(q[4], q[2], q[0], q[3], q[1])
+                              : dd_insphere_exp(q[0], q[1], q[2], q[3], q[4]);
+                n++;
+                if (s != 0 && wrong++ == 0)
+                    snprintf(first, sizeof first, "k = %d, corners 0x%02x, order %d: %d", ks[ki], mask, order, s);
+            }
+        }
+    }
+    tl_check(st, wrong == 0, "expansion/cube-corners-integer-limit", "%ld of %ld cospherical corner tuples nonzero; first: %s",
+             wrong, n, first);
 }
 
 /* ---- safe range ------------------------------------------------------------- */
@@ -577,6 +628,7 @@ static void bench(dd_pred *pr)
     bench_kind(pr, K_GRID, 0, "integer grid");
     bench_kind(pr, K_SPHERE, 0, "integer sphere (cospherical)");
     bench_kind(pr, K_SPHERE, 1, "integer sphere, 1 ulp");
+    bench_kind(pr, K_MID_SPHERE, 0, "sphere r up to 2^19 (cospherical)");
     bench_kind(pr, K_BIG_SPHERE, 0, "big sphere r~2^26 (cospherical)");
     bench_kind(pr, K_BIG_SPHERE, 1, "big sphere, 1 ulp");
     bench_kind(pr, K_UNIT_SPHERE, 0, "unit sphere, rounded");
@@ -652,6 +704,7 @@ int main(int argc, char **argv)
     {
         tl_rng rs = {99};
         big_sphere = four_square_sphere(&rs, (1LL << 26) + 4321, 600);
+        for (int i = 0; i < 3; i++) mid_spheres[i] = four_square_sphere(&rs, mid_norm[i], 600);
     }
     if (do_bench) bench(&pr);
     {
@@ -660,7 +713,7 @@ int main(int argc, char **argv)
     }
 
     tl_rng r = {20240611};
-    long per_kind = small ? 10000 : 100000;   /* 10 kinds: 10^5 or 10^6 tuples */
+    long per_kind = small ? 10000 : 100000;   /* 11 kinds: >= 10^5 or 10^6 tuples */
     tally total;
     memset(&total, 0, sizeof total);
     int fma = dd_exp_force_plain(0);          /* the run-time choice */
@@ -705,9 +758,11 @@ int main(int argc, char **argv)
         printf("# plain pass: stage C TWO-PRODUCT %s\n", plain_fma ? "FMA (build targets FMA)" : "Dekker");
     }
     check_range(&st, &pr, &r);
+    check_cube_corners(&st);
 
     for (int i = 0; i < 6; i++) free(spheres[i].p);
     free(big_sphere.p);
+    for (int i = 0; i < 3; i++) free(mid_spheres[i].p);
     dd_pred_clear(&pr);
     exact_clear();
     return tl_finish(&st);
