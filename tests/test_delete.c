@@ -204,7 +204,7 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
- * and hull vertices alike, and for auto, which wraps below degree 256.
+ * and hull vertices alike, and for auto, which wraps below degree 300.
  * The result itself is CGAL's: checked by the tests above.              */
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {

@@ -2,10 +2,10 @@
  * auto.c -- the default strategy, a dispatcher over the fastest correct
  * choice by the cavity's degree (so that dd_delete(t, v, NULL) is that
  * choice):
- *  - below degree 256: gift wrapping (wrap.h), which builds only the
+ *  - below degree 300: gift wrapping (wrap.h), which builds only the
  *    fill's cells, unless it declines (a hull vertex with coplanar points
- *    on its new hull facets, or a degenerate cavity past its budget of
- *    exact tests);
+ *    on its new hull facets, a refuted guess from 40 neighbours on, or a
+ *    degenerate cavity past its budget of exact tests);
  *  - otherwise, below degree 40, the compact conflict DT (qsmall.c) with
  *    the neighbours inserted nearest to q first;
  *  - from 40 on, grr-neighbor.
@@ -14,12 +14,18 @@
  * us, sphere [4,8) 0.8 vs 1.9 us).  Since it guesses and proves (wrap.c)
  * it also beats grr-neighbor up to degree 255 (median of 5 repetitions,
  * gift-wrap vs auto then grr-neighbor: moment [150,256) 63 vs 133 us,
- * helix [96,256) 81 vs 153 us, moment 256 94 vs 165 us), but not from
- * about 300 on, where the moment curve and the helix are so nearly
- * degenerate that the proof runs past the budget and the wrap declines
- * (moment 384: 859 vs 243 us; helix n = 32000, [300,450): 698 vs 318
- * us).  grr-neighbor is the fastest GRR from degree 64 on in the bench
- * runs of 47bce1d and 81975a5 (moment, degree 1023: 2370x and 2231x
+ * helix [96,256) 81 vs 153 us), and on to degree 300 where the guess
+ * holds (median of 5 deletions per vertex, 3 to 12 vertices, gift-wrap
+ * vs grr-neighbor: moment n = 256, degree 256: 115-141 vs 161-171 us;
+ * helix n = 16000, degree 241-286: 116-164 vs 184-209 us).  Where the
+ * guess is refuted from 40 neighbours on, the wrap declines at once
+ * (wrap.c), so the loss is the refuted guess: moment n = 264-300 (t =
+ * i/512, more nearly degenerate than n = 256): 200-300 vs 166-195 us.
+ * Further on the guesses are refuted or the proof runs past the budget
+ * (helix n = 64000, degree 404-563: 750-890 us against 310-450 us), so
+ * grr-neighbor takes over there.  grr-neighbor is the fastest GRR from
+ * degree 64 on in the bench runs of 47bce1d and 81975a5 (moment, degree
+ * 1023: 2370x and 2231x
  * against 1926x and 1811x for grr-hashing).  Nearest-first rather than
  * random order for the conflict DT: on the bench's
  * low-degree inputs it builds about a fifth fewer cells (uniform, degree
@@ -29,7 +35,7 @@
 #include "../src/qsmall.h"
 #include "../src/wrap.h"
 
-#define AUTO_WRAP_BELOW_DEGREE 256
+#define AUTO_WRAP_BELOW_DEGREE 300
 #define AUTO_GRR_FROM_DEGREE 40
 
 /* Below the crossover every neighbour set fits the compact structure. */
@@ -61,6 +67,6 @@ static dd_status auto_fill(dd_del *d)
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: below degree 256 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
+    "default: below degree 300 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
     auto_fill,
 };
