@@ -38,7 +38,12 @@
  * cosphere degree [48,64): 719 us wrapping against 383 us for
  * grr-neighbor; below 40 wrapping stays ahead: [32,48) 294 vs 403 us).
  * The budget counts the exact tests of a guess's proof too: on the
- * moment curve from degree about 300 the proof alone passes it.       */
+ * moment curve from degree about 300 the proof alone passes it.  From
+ * 40 neighbours on, a refuted guess declines too, without the scans:
+ * such cavities are nearly degenerate, where the scans make O(n) exact
+ * tests a cell (moment n = 272: refuted after ~140 exact tests, then
+ * about 400 more, ~1 us each, before the budget declined anyway: 370-540
+ * us against 200-250 us declining at once).                            */
 #define W_EXACT_FROM 40
 
 struct dd_wrap {
@@ -788,7 +793,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
      * exactly the fill the scans would find, at the cost of one pass per
      * cell instead of two and no branch per point.  Otherwise the scans
      * wrap from scratch.                                                 */
-    int guess = w->ierr != 1.0 / 0.0, outcome;
+    int guess = w->ierr != 1.0 / 0.0, outcome = W_WRONG_GUESS;   /* no guess: scan */
     uint32_t start;
     s = w_open_link(d, w, &start);
     size_t refuted = 0;                              /* cells of a refuted guess */
@@ -798,20 +803,14 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         if (s == DD_OK && outcome == W_DONE) goto done;
         d->wrap_how = DD_WRAP_REFUTED;
         refuted = d->fill.n;
-        if (s == DD_OK && n >= W_EXACT_FROM) {
-            /* A refuted guess from 40 neighbours on: the cavity is nearly
-             * degenerate (ties, or wrong double guesses), where the scans
-             * would make O(n) exact tests per cell; the conflict DT wins
-             * there (moment n = 272: refuted after ~140 exact tests, then
-             * scanning to the budget and declining: 370-540 us; declining
-             * at once: see auto.c).                                        */
-            d->wrap_how = DD_WRAP_DECLINED;
-            *declined = 1;
-            return DD_OK;
-        }
-        if (s == DD_OK) s = w_open_link(d, w, &start);
+        /* A guess that declined is final: the budget is spent for the
+         * scans too, and W_BAIL means coplanar points on hull facets near
+         * q, left to the conflict DT anyway.  So is a refuted guess from
+         * W_EXACT_FROM neighbours on.                                     */
+        if (n >= W_EXACT_FROM) outcome = W_DECLINED;
+        if (s == DD_OK && outcome != W_DECLINED) s = w_open_link(d, w, &start);
     }
-    if (s == DD_OK) s = w_run(d, w, 0, start, &outcome);
+    if (s == DD_OK && outcome != W_DECLINED) s = w_run(d, w, 0, start, &outcome);
     if (s != DD_OK) return s;
     if (outcome == W_DECLINED) {
         d->wrap_how = DD_WRAP_DECLINED;

@@ -21,8 +21,8 @@
  * when it proves to be a triangulation of the cavity whose facets are
  * all locally Delaunay: then it is DT(S \ q)'s fill.  Otherwise the
  * certified scans wrap: each comparison filtered (wrap.c) and else
- * decided by the exact perturbed predicates of pred.c.  Either way the fill is exactly the one the other
- * strategies build.
+ * decided by the exact perturbed predicates of pred.c.  Either way the
+ * fill is exactly the one the other strategies build.
  */
 #ifndef DD_WRAP_H
 #define DD_WRAP_H
@@ -35,10 +35,10 @@
  * then hold scratch that the next strategy resets, and the sew will match
  * by itself) for a hull vertex whose new hull facets have points in their
  * planes (the perturbation's coplanar hull rules are left to the conflict
- * DT), and for a degenerate cavity of 40 neighbours or more where the
- * filters keep abstaining (wrap.c, W_EXACT_FROM).  DD_ERR_INTERNAL (with
- * a message) if the fill does not close, which only a broken
- * triangulation can cause.                                               */
+ * DT), and for a cavity of 40 neighbours or more whose guess is refuted
+ * or whose exact tests pass the budget (wrap.c, W_EXACT_FROM).
+ * DD_ERR_INTERNAL (with a message) if the fill does not close, which only
+ * a broken triangulation can cause.                                      */
 dd_status dd_wrap_fill(dd_del *d, int *declined);
 
 void dd_wrap_free(struct dd_wrap *w);

@@ -25,11 +25,10 @@
  * (helix n = 64000, degree 404-563: 750-890 us against 310-450 us), so
  * grr-neighbor takes over there.  grr-neighbor is the fastest GRR from
  * degree 64 on in the bench runs of 47bce1d and 81975a5 (moment, degree
- * 1023: 2370x and 2231x
- * against 1926x and 1811x for grr-hashing).  Nearest-first rather than
- * random order for the conflict DT: on the bench's
- * low-degree inputs it builds about a fifth fewer cells (uniform, degree
- * ~15: 1090 vs 1346 over 12 deletions; `dtdel delete --stats`).
+ * 1023: 2370x and 2231x against 1926x and 1811x for grr-hashing).
+ * Nearest-first rather than random order for the conflict DT: on the
+ * bench's low-degree inputs it builds about a fifth fewer cells (uniform,
+ * degree ~15: 1090 vs 1346 over 12 deletions; `dtdel delete --stats`).
  */
 #include "auto.h"
 #include "../src/qsmall.h"

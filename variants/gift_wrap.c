@@ -3,12 +3,13 @@
  * cells found one by one from the link, no conflict DT.  Not a variant of
  * the paper: the low-degree fast path of auto.c, listed on its own so
  * that the bench times it and the tests check it at every degree.  When
- * the wrap declines (a hull vertex with coplanar points on its new hull
- * facets), auto's conflict-DT strategies fill the cavity.
+ * the wrap declines (wrap.h: coplanar points on new hull facets, or a
+ * nearly degenerate cavity of 40 neighbours or more), auto's conflict-DT
+ * strategies fill the cavity.
  */
 #include "auto.h"
 
-/* auto's own choice below degree 96, at every degree. */
+/* auto's own choice below degree 300, at every degree. */
 static dd_status gift_wrap_fill(dd_del *d)
 {
     return dd_auto_wrap_first(d);
