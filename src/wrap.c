@@ -299,6 +299,23 @@ static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], con
     return dd_points_conflict(pr, cell, -1, -1, w->pt[y]);
 }
 
+/* Whether finite facet (a, b, c), with no point beyond it but some in its
+ * plane, is a facet of the hull: no point of its plane in the perturbed
+ * circle of a, b, c (the conflict test of the infinite cell (a, b, c,
+ * INF), as in the conflict DT); else W_BAIL.  The points beyond none, the
+ * cell on the facet's positive side can only be infinite; the check keeps
+ * the wrap from building on a hull triangle that the coplanar rules of the
+ * perturbation would split otherwise.                                    */
+static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
+{
+    const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], NULL};
+    for (uint32_t k = 0; k < w->n; k++) {
+        if (k == a || k == b || k == c) continue;
+        if (dd_points_conflict(pr, cell, 3, -1, w->pt[k])) return W_BAIL;
+    }
+    return W_NONE;
+}
+
 /* The exact scan: one pass keeping the best point so far, each test
  * filtered (bounds of w_lift) and else decided by the exact perturbed
  * predicates.  Its branches depend on the data, which costs where the
@@ -328,10 +345,8 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         w_cofactors(K, P, m);
     }
     /* No point beyond: for a hull vertex, abc becomes a hull facet, the
-     * cell (a, b, c, infinite).  With points in abc's plane the coplanar
-     * hull rules of the perturbation would decide: left to the conflict
-     * DT (W_BAIL).                                                       */
-    return best == W_NONE && zero ? W_BAIL : best;
+     * cell (a, b, c, infinite), if the points in its plane allow.        */
+    return best == W_NONE && zero ? w_flat_hull(w, pr, a, b, c) : best;
 }
 
 /* The fast scan, without data-dependent branches: o and t for every
@@ -479,31 +494,73 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
 
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
  * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
- * facet (b, a, p) has no point beyond it.  Seen along the hull edge ab,
- * the points lie in a wedge of less than a half-turn, and "x beyond the
- * plane of b, a, p" orders them by angle: one pass keeping the point
- * furthest round (Jarvis) finds p.  Exact predicates throughout (few
- * cells of a fill are infinite); W_BAIL when a point is in the plane of
- * b, a and the best so far, where the wedge may be a half-turn and the
- * perturbed in-circle rules of the hull would decide.                    */
+ * facet (b, a, p) has no point beyond it and, among the points of its
+ * plane, none in the perturbed circle of b, a, p (the conflict test of
+ * the infinite cell: a flat face of the hull, a grid's or a cosphere's,
+ * is triangulated by the coplanar in-circle rules).  Exact predicates
+ * throughout (few cells of a fill are infinite).
+ *  1. Seen along the hull edge ab, the points lie in a wedge of at most a
+ *     half-turn, and "x beyond the plane of b, a, p" orders them by
+ *     angle: one pass keeping the point furthest round (Jarvis) finds the
+ *     plane of the facet.  When the wedge is a half-turn (ab a diagonal
+ *     of a flat face), no point of one edge of the wedge is beyond one of
+ *     the other: the pass may skip a point of the far edge while its best
+ *     is on the near one.
+ *  2. The check: no point beyond; those in the plane (flat) are marked in
+ *     w->o, and z is a point behind it.  Only a point so skipped can be
+ *     beyond the pass's best: it becomes the best and the check starts
+ *     again, once.
+ *  3. For a flat face, the points of the plane on p's side of line ab
+ *     (the side of p as seen from the plane of a, b, z) are ordered by
+ *     the perturbed circles through a and b: one pass keeping the point
+ *     in conflict with the best so far, then a check that none is.
+ * W_BAIL, left to the conflict DT, when every point is in one plane or a
+ * check fails.                                                           */
 static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
 {
-    uint32_t best = W_NONE;
+    const double *const *pt = w->pt;
+    uint32_t best = W_NONE, z = W_NONE;
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b) continue;
         if (best == W_NONE) {
-            if (dd_orient_coplanar(pr, w->pt[a], w->pt[b], w->pt[k]) != 0) best = k;
+            if (dd_orient_coplanar(pr, pt[a], pt[b], pt[k]) != 0) best = k;
             continue;
         }
-        int o = dd_orient3d(pr, w->pt[b], w->pt[a], w->pt[best], w->pt[k]);
-        if (o == 0) return W_BAIL;
-        if (o > 0) best = k;
+        if (dd_orient3d(pr, pt[b], pt[a], pt[best], pt[k]) > 0) best = k;
     }
-    /* Checked against the final point: none beyond, none in its plane. */
-    for (uint32_t k = 0; k < w->n && best != W_NONE; k++) {
+    if (best == W_NONE) return W_NONE;
+    int flat = 0;
+    double *mark = w->o;
+    for (uint32_t k = 0, again = 1; k < w->n; k++) {
+        mark[k] = 0;
         if (k == a || k == b || k == best) continue;
-        if (dd_orient3d(pr, w->pt[b], w->pt[a], w->pt[best], w->pt[k]) >= 0) return W_BAIL;
+        int o = dd_orient3d(pr, pt[b], pt[a], pt[best], pt[k]);
+        if (o > 0) {
+            if (!again--) return W_BAIL;
+            best = k;                   /* the pass again, from inside the wedge */
+            flat = 0;
+            z = W_NONE;
+            k = UINT32_MAX;
+            continue;
+        }
+        if (o < 0 && z == W_NONE) z = k;
+        flat |= o == 0;
+        mark[k] = o == 0;
     }
+    if (!flat) return best;
+    if (z == W_NONE) return W_BAIL;
+    const int side = dd_orient3d(pr, pt[a], pt[b], pt[z], pt[best]);
+    for (uint32_t k = 0; k < w->n; k++)
+        mark[k] = mark[k] != 0 && dd_orient3d(pr, pt[a], pt[b], pt[z], pt[k]) == side;
+    const double *cell[4] = {pt[a], pt[b], NULL, pt[best]};
+    for (uint32_t k = 0; k < w->n; k++)
+        if (mark[k] != 0 && k != best && dd_points_conflict(pr, cell, 2, -1, pt[k])) {
+            mark[best] = 1;
+            best = k;
+            cell[3] = pt[k];
+        }
+    for (uint32_t k = 0; k < w->n; k++)
+        if (mark[k] != 0 && k != best && dd_points_conflict(pr, cell, 2, -1, pt[k])) return W_BAIL;
     return best;
 }
 
@@ -565,7 +622,8 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
  * for a hull vertex, the least among the triangles through the infinite
  * vertex, so that the wrap's first step is wrap_scan_inf: when the hull
  * is degenerate there (coplanar neighbours, W_BAIL: a grid's face) the
- * wrap declines before any other work.
+ * wrap declines before any other work (every neighbour in one plane, or a
+ * check of wrap_scan_inf failing).
  * With the neighbours sorted by id, the whole wrap, and so the order and
  * rotation of the fill cells, does not depend on how the star was stored:
  * the same deletion repeated is the same computation, as with the other

@@ -320,6 +320,51 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
     dd_free(t);
 }
 
+/* Flat faces of the hull (wrap.c: w_flat_hull, wrap_scan_inf): on a
+ * grid, a cosphere or stacked layers, the hull's faces hold many coplanar
+ * points, which the coplanar in-circle rules of the perturbation
+ * triangulate.  Every hull vertex of degree below W_EXACT_FROM (40) is
+ * deleted with `variant`: the result is CGAL's, the mesh passes dd_check,
+ * and gift wrapping finished the fill itself (no decline to the conflict
+ * DT) whenever it ran.                                                   */
+static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
+{
+    char msg[256], tn[128], why[200] = "";
+    dd_tri *t;
+    snprintf(tn, sizeof tn, "wrap-flat-hull/%s/%s", name, variant);
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, tn, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    long course[5] = {0}, bad = 0, done = 0;
+    for (uint32_t v = 0; v < n; v++) {
+        if (!dd_is_vertex(t, v) || !dd_on_hull(t, v) || dd_degree(t, v) >= 40) continue;
+        if (dd_cgal_remove(g, v)) continue;
+        canon ref = theirs(g);
+        dd_cgal_reinsert(g, v);
+        dd_status s = dd_delete(t, v, variant);
+        canon now = ours(t);
+        dd_delete_stats ds_;
+        dd_last_delete_stats(t, &ds_);
+        course[ds_.wrap]++;
+        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) {
+            if (bad++ == 0) snprintf(why, sizeof why, "deleting %u (course %d): %s", v, ds_.wrap,
+                                     s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
+        }
+        free(now.a);
+        free(ref.a);
+        if (s == DD_OK && dd_reinsert(t, v) != DD_OK && bad++ == 0)
+            snprintf(why, sizeof why, "re-inserting %u: %s", v, dd_errmsg(t));
+        done++;
+    }
+    tl_check(st, bad == 0 && done > 0 && course[DD_WRAP_DECLINED] == 0, tn,
+             "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld", bad, done, why,
+             course[DD_WRAP_PROVED], course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
+    dd_cgal_free(g);
+    dd_free(t);
+}
+
 static void refusals(tl_state *st)
 {
     /* a square pyramid: deleting the apex leaves coplanar points */
@@ -560,6 +605,21 @@ int main(int argc, char **argv)
             snprintf(name, sizeof name, "shells-%u-radial-1e-%d", np, e);
             wrap_guess_course(&st, name, p, np, 0, small ? 60 : 150, e == 16 ? 3 : 1);
             single_deletions(&st, name, p, np, k / 2, 120 + (uint64_t)e, 1, UINT32_MAX);
+            free(p);
+        }
+    }
+    {
+        const struct { const char *ds; uint32_t n; double scale; } flat[] = {
+            {"grid", 216, 1}, {"grid", 512, 1}, {"grid", 343, 1e-200}, {"cosphere", 300, 1},
+            {"cosphere", small ? 600 : 1000, 1}, {"layers", 128, 1}};
+        for (size_t i = 0; i < sizeof flat / sizeof *flat; i++) {
+            uint32_t np;
+            double *p = gen(flat[i].ds, flat[i].n, &np);
+            for (uint32_t j = 0; j < 3 * np; j++) p[j] *= flat[i].scale;
+            char name[64];
+            snprintf(name, sizeof name, "%s-%u%s", flat[i].ds, np, flat[i].scale != 1 ? "-x1e-200" : "");
+            wrap_flat_hull(&st, name, p, np, "gift-wrap");
+            wrap_flat_hull(&st, name, p, np, "auto");
             free(p);
         }
     }
