@@ -492,13 +492,37 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
     return sure == (int)w->n - 3;
 }
 
+/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it. */
+static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
+{
+    double *const *L = w->lift;
+    const double B[4] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a], 0};
+    const double C[4] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a], 0};
+    double m[6];
+    w_minors(m, B, C);
+    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+}
+
+/* orient3d(a, b, c, k), N being w_normal(a, b, c): filtered as in the
+ * scans (w_row_o and the bound oerr), else exact.                        */
+static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                           const double N[4], uint32_t k)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double P[4], o = w_row_o(L, k, A, N, P);
+    if (o > w->oerr) return 1;
+    if (o < -w->oerr) return -1;
+    return dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+}
+
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
  * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
  * facet (b, a, p) has no point beyond it and, among the points of its
  * plane, none in the perturbed circle of b, a, p (the conflict test of
  * the infinite cell: a flat face of the hull, a grid's or a cosphere's,
- * is triangulated by the coplanar in-circle rules).  Exact predicates
- * throughout (few cells of a fill are infinite).
+ * is triangulated by the coplanar in-circle rules).  Orientations are
+ * filtered as in the scans (w_orient), else exact.
  *  1. Seen along the hull edge ab, the points lie in a wedge of at most a
  *     half-turn, and "x beyond the plane of b, a, p" orders them by
  *     angle: one pass keeping the point furthest round (Jarvis) finds the
@@ -506,7 +530,8 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
  *     of a flat face), no point of one edge of the wedge is beyond one of
  *     the other: the pass may skip a point of the far edge while its best
  *     is on the near one.
- *  2. The check: no point beyond; those in the plane (flat) are marked in
+ *  2. The check (first that every point is surely behind, w_all_behind):
+ *     no point beyond; those in the plane (flat) are marked in
  *     w->o, and z is a point behind it.  Only a point so skipped can be
  *     beyond the pass's best: it becomes the best and the check starts
  *     again, once.
@@ -520,24 +545,26 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
 {
     const double *const *pt = w->pt;
     uint32_t best = W_NONE, z = W_NONE;
+    double N[4];
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b) continue;
         if (best == W_NONE) {
-            if (dd_orient_coplanar(pr, pt[a], pt[b], pt[k]) != 0) best = k;
+            if (dd_orient_coplanar(pr, pt[a], pt[b], pt[k]) != 0) w_normal(w, b, a, best = k, N);
             continue;
         }
-        if (dd_orient3d(pr, pt[b], pt[a], pt[best], pt[k]) > 0) best = k;
+        if (w_orient(w, pr, b, a, best, N, k) > 0) w_normal(w, b, a, best = k, N);
     }
     if (best == W_NONE) return W_NONE;
+    if (w_all_behind(w, b, N)) return best;     /* the check, without branches */
     int flat = 0;
     double *mark = w->o;
     for (uint32_t k = 0, again = 1; k < w->n; k++) {
         mark[k] = 0;
         if (k == a || k == b || k == best) continue;
-        int o = dd_orient3d(pr, pt[b], pt[a], pt[best], pt[k]);
+        int o = w_orient(w, pr, b, a, best, N, k);
         if (o > 0) {
             if (!again--) return W_BAIL;
-            best = k;                   /* the pass again, from inside the wedge */
+            w_normal(w, b, a, best = k, N);     /* the pass again, from inside the wedge */
             flat = 0;
             z = W_NONE;
             k = UINT32_MAX;
