@@ -31,19 +31,21 @@
 #define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
 #define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
 
-/* On degenerate cavities (integer points of a sphere: cosphere) the
- * filters abstain on most tests and a wrap makes about n^2/2 exact ones
- * (n = 50: 1183), where the conflict DT makes far fewer: from 40
- * neighbours on, wrapping declines once its exact tests pass 2n (warm,
+/* On degenerate cavities the filters abstain on most tests and a wrap
+ * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
+ * ~1 us each), where the conflict DT makes far fewer: from 40 neighbours
+ * on, wrapping declines once its exact tests pass 2n (then, warm,
  * cosphere degree [48,64): 719 us wrapping against 383 us for
- * grr-neighbor; below 40 wrapping stays ahead: [32,48) 294 vs 403 us).
+ * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
  * The budget counts the exact tests of a guess's proof too: on the
  * moment curve from degree about 300 the proof alone passes it.  From
  * 40 neighbours on, a refuted guess declines too, without the scans:
  * such cavities are nearly degenerate, where the scans make O(n) exact
  * tests a cell (moment n = 272: refuted after ~140 exact tests, then
  * about 400 more, ~1 us each, before the budget declined anyway: 370-540
- * us against 200-250 us declining at once).                            */
+ * us against 200-250 us declining at once).  Neither holds for wholly
+ * cospherical neighbours (w_cospherical): their in-sphere tests are the
+ * perturbation's alone, cheap and not counted.                          */
 #define W_EXACT_FROM 40
 
 struct dd_wrap {
@@ -56,6 +58,8 @@ struct dd_wrap {
     double m;                     /* max |x_k - q_k| over the neighbours  */
     const double *q;
     int shifted;                  /* the shifted lifts were tried         */
+    int cosph;                    /* every neighbour on one sphere (the
+                                     scans' in-sphere tests are all 0)   */
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
@@ -290,13 +294,17 @@ static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], con
 {
     double *const *L = w->lift;
     const uint32_t a = lv[0];
-    const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
-    double det = w_t(P, K);
-    if (det > w->ierr) return 0;
-    if (det < -w->ierr) return 1;
+    const double *const *pt = w->pt;
+    if (!w->cosph) {
+        const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
+        double det = w_t(P, K);
+        if (det > w->ierr) return 0;
+        if (det < -w->ierr) return 1;
+    }
+    if (w->cosph) return dd_insphere_symbolic(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
     w->nexact++;
-    const double *cell[4] = {w->pt[lv[0]], w->pt[lv[1]], w->pt[lv[2]], w->pt[lv[3]]};
-    return dd_points_conflict(pr, cell, -1, -1, w->pt[y]);
+    const double *cell[4] = {pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]]};
+    return dd_points_conflict(pr, cell, -1, -1, pt[y]);
 }
 
 /* Whether finite facet (a, b, c), with no point beyond it but some in its
@@ -364,6 +372,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double m[6], N[4], T[4], K[4];
     w_pencil(w, a, b, c, m, N, T);
+    if (w->cosph) return wrap_scan_exact(w, pr, a, b, c, m);   /* every t/o ties */
     const double oerr = w->oerr, ierr = w->ierr;
     const uint32_t n = w->n;
     /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
@@ -827,6 +836,33 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     return DD_OK;
 }
 
+/* Whether every neighbour lies on one sphere, exactly: the sphere of a
+ * link triangle's corners and a first point off its plane holds each of
+ * the others (dd_insphere 0).  Then every in-sphere determinant of the
+ * scans is 0 (five lifted points of one sphere lie in one hyperplane),
+ * and w_conflicts asks the perturbation alone (dd_insphere_symbolic):
+ * integer points of a sphere (the cosphere set), where the exact stages
+ * cost most of a deletion otherwise.  Generic points stop at the first
+ * test, which the filter answers.                                       */
+static int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
+{
+    const double *const *pt = w->pt;
+    const uint32_t n = w->n;
+    for (size_t r = 0; r < nlink; r++) {
+        const uint32_t a = w->tri[r][0], b = w->tri[r][1], c = w->tri[r][2];
+        if (a == n || b == n || c == n) continue;       /* through the infinite vertex */
+        uint32_t e = W_NONE;
+        for (uint32_t k = 0; k < n && e == W_NONE; k++)
+            if (k != a && k != b && k != c && dd_orient3d(pr, pt[a], pt[b], pt[c], pt[k]) != 0) e = k;
+        if (e == W_NONE) return 0;
+        for (uint32_t k = 0; k < n; k++)
+            if (k != a && k != b && k != c && k != e && dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
+                return 0;
+        return 1;
+    }
+    return 0;
+}
+
 dd_status dd_wrap_fill(dd_del *d, int *declined)
 {
     dd_tri *t = d->t;
@@ -844,6 +880,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         w->loc[gid[k]] = k;
     }
     w_lift(w, d->qp);
+    w->cosph = 0;                                    /* the scans may set it */
     /* The sanitizer build of the tests takes the plain C scan for vertices
      * of odd index, so that both scans are tested with the same inputs.  */
 #ifdef DD_TEST_BUILD
@@ -892,8 +929,13 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
          * scans too, and W_BAIL means coplanar points on hull facets near
          * q, left to the conflict DT anyway.  So is a refuted guess from
          * W_EXACT_FROM neighbours on.                                     */
-        if (n >= W_EXACT_FROM) outcome = W_DECLINED;
+        if (s == DD_OK && outcome != W_DECLINED) {
+            w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
+            if (n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
+        }
         if (s == DD_OK && outcome != W_DECLINED) s = w_open_link(d, w, &start);
+    } else if (s == DD_OK) {
+        w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
     }
     if (s == DD_OK && outcome != W_DECLINED) s = w_run(d, w, 0, start, &outcome);
     if (s != DD_OK) return s;

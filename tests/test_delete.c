@@ -544,9 +544,11 @@ int main(int argc, char **argv)
         free(p);
     }
     /* The vertex of highest degree among 3000 integer points of a sphere:
-     * its cavity (degree 50 or more) is so degenerate that gift wrapping
-     * runs past its budget of exact tests and declines (wrap.c,
-     * W_EXACT_FROM); auto and gift-wrap must still give CGAL's result.   */
+     * its cavity (degree 50 or more) is wholly degenerate, every in-sphere
+     * test a tie.  Gift wrapping sees that its neighbours are cospherical
+     * and asks the perturbation alone (wrap.c, w_cospherical), so it wraps
+     * the cavity itself instead of declining at its budget of exact tests
+     * (W_EXACT_FROM); every variant must give CGAL's result.             */
     {
         uint32_t np, best = 0, bd = 0;
         double *p = gen("cosphere", 3000, &np);
@@ -559,6 +561,25 @@ int main(int argc, char **argv)
         }
         tl_check(&st, bd >= 50, "cosphere-3000/max-degree", "highest degree %u, expected at least 50", bd);
         single_deletions(&st, "cosphere-3000-max-degree", p, np, 1, 15, 1, best);
+        if (dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
+            dd_delete_stats ds_ = {0};
+            dd_status s = dd_delete(t, best, "gift-wrap");
+            dd_last_delete_stats(t, &ds_);
+            tl_check(&st, s == DD_OK && ds_.wrap != DD_WRAP_DECLINED, "cosphere-3000-max-degree/wrapped",
+                     "status %s, course %d (declined: %d)", dd_status_name(s), ds_.wrap, DD_WRAP_DECLINED);
+            dd_free(t);
+        }
+        free(p);
+    }
+    /* Integer points of a sphere, every 7th moved off it (radius times
+     * 1 + 2^-40): most cavities are cospherical but for a point or two,
+     * which gift wrapping's test of cospherical neighbours must see.    */
+    {
+        uint32_t np;
+        double *p = gen("cosphere", 300, &np);
+        for (uint32_t i = 0; i < np; i += 7)
+            for (int c = 0; c < 3; c++) p[3 * i + c] *= 1 + ldexp(1, -40);
+        single_deletions(&st, "cosphere-300-every-7th-off", p, np, k, 16, 1, UINT32_MAX);
         free(p);
     }
     for (size_t vi = 0; dd_variant_name(vi); vi++) {
