@@ -27,7 +27,7 @@
 #include <string.h>
 
 #define W_NONE UINT32_MAX
-#define W_BAIL (UINT32_MAX - 1)   /* a degenerate hull case: not for wrap.c */
+#define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
 #define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
 #define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
 
@@ -222,8 +222,8 @@ static void w_shift(struct dd_wrap *w)
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
  * other such point (perturbed as CGAL does).  The spheres through a, b, c
  * are ordered along their pencil, so the point is a minimum; W_NONE if no
- * point is surely on the positive side (and none on abc's plane), W_BAIL
- * if none is beyond but some lie on the plane.
+ * point is surely on the positive side (and none on abc's plane); if
+ * none is beyond but some lie on the plane, what w_flat_hull says.
  *
  * With rows B = L[b]-L[a], C = L[c]-L[a] (see w_lift) and P = L[p]-L[a],
  * w(X, P) = det4(B, C, X, P) is the in-sphere determinant of a, b, c, x, p
@@ -656,10 +656,9 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
  * in the table) and returns the record the wrap starts from, *start: the
  * triangle of least key, rotated to begin with its least local number;
  * for a hull vertex, the least among the triangles through the infinite
- * vertex, so that the wrap's first step is wrap_scan_inf: when the hull
- * is degenerate there (coplanar neighbours, W_BAIL: a grid's face) the
- * wrap declines before any other work (every neighbour in one plane, or a
- * check of wrap_scan_inf failing).
+ * vertex, so that the wrap's first step is wrap_scan_inf: where it
+ * cannot settle the hull (W_BAIL: every neighbour in one plane, or one
+ * of its checks failing) the wrap declines before any other work.
  * With the neighbours sorted by id, the whole wrap, and so the order and
  * rotation of the fill cells, does not depend on how the star was stored:
  * the same deletion repeated is the same computation, as with the other

@@ -33,10 +33,12 @@
  * (d->sew_out, d->sew_direct); d->order holds d->nbr and is sorted by
  * vertex id.  It declines (*declined = 1, DD_OK; d->qdt and d->fill
  * then hold scratch that the next strategy resets, and the sew will match
- * by itself) for a hull vertex whose new hull facets have points in their
- * planes (the perturbation's coplanar hull rules are left to the conflict
- * DT), and for a cavity of 40 neighbours or more whose guess is refuted
- * or whose exact tests pass the budget (wrap.c, W_EXACT_FROM).
+ * by itself) for a cavity of 40 neighbours or more, not all on one
+ * sphere, whose guess is refuted or whose exact tests pass the budget
+ * (wrap.c, W_EXACT_FROM), and for the flat hull cases that its checks do
+ * not settle (every neighbour in one plane; wrap.c, W_BAIL).  Flat hull
+ * faces are otherwise triangulated by the perturbation's coplanar rules
+ * (wrap_scan_inf, w_flat_hull).
  * DD_ERR_INTERNAL (with a message) if the fill does not close, which only
  * a broken triangulation can cause.                                      */
 dd_status dd_wrap_fill(dd_del *d, int *declined);

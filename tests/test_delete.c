@@ -272,6 +272,31 @@ static double *shells(uint32_t n, int e, uint32_t *np)
     return p;
 }
 
+/* Deletes v with `variant` and re-inserts it, against CGAL's deletion of
+ * v in g: counts the wrap's course, and a wrong result, a failed dd_check
+ * or a failed step in *bad (the first one said in why).  0 when CGAL
+ * refuses to delete v (nothing done), else 1.                          */
+static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long course[5], long *bad,
+                    char *why, size_t nwhy)
+{
+    if (dd_cgal_remove(g, v)) return 0;
+    canon ref = theirs(g);
+    dd_cgal_reinsert(g, v);
+    dd_status s = dd_delete(t, v, variant);
+    canon now = ours(t);
+    dd_delete_stats ds_;
+    dd_last_delete_stats(t, &ds_);
+    course[ds_.wrap]++;
+    if ((s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) && (*bad)++ == 0)
+        snprintf(why, nwhy, "deleting %u (course %d): %s", v, ds_.wrap,
+                 s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
+    free(now.a);
+    free(ref.a);
+    if (s == DD_OK && dd_reinsert(t, v) != DD_OK && (*bad)++ == 0)
+        snprintf(why, nwhy, "re-inserting %u: %s", v, dd_errmsg(t));
+    return 1;
+}
+
 /* Gift wrapping guesses the fill and proves it (wrap.c, dd_wrap_fill):
  * whatever the proof decides, kept (DD_WRAP_PROVED) or refuted and wrapped
  * again by the scans (DD_WRAP_REFUTED), the result is CGAL's.  Deletes up
@@ -292,23 +317,7 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
     long course[5] = {0}, bad = 0, done = 0;
     for (uint32_t v = 0; v < n && done < k; v++) {
         if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
-        if (dd_cgal_remove(g, v)) continue;
-        canon ref = theirs(g);
-        dd_cgal_reinsert(g, v);
-        dd_status s = dd_delete(t, v, "gift-wrap");
-        canon now = ours(t);
-        dd_delete_stats ds_;
-        dd_last_delete_stats(t, &ds_);
-        course[ds_.wrap]++;
-        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) {
-            if (bad++ == 0) snprintf(why, sizeof why, "deleting %u (course %d): %s", v, ds_.wrap,
-                                     s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
-        }
-        free(now.a);
-        free(ref.a);
-        if (s == DD_OK && dd_reinsert(t, v) != DD_OK && bad++ == 0)
-            snprintf(why, sizeof why, "re-inserting %u: %s", v, dd_errmsg(t));
-        done++;
+        done += wrap_one(t, g, v, "gift-wrap", course, &bad, why, sizeof why);
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1;
     tl_check(st, bad == 0 && done > 0 && (seen & want) == want, tn,
@@ -340,23 +349,7 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
     long course[5] = {0}, bad = 0, done = 0;
     for (uint32_t v = 0; v < n; v++) {
         if (!dd_is_vertex(t, v) || !dd_on_hull(t, v) || dd_degree(t, v) >= 40) continue;
-        if (dd_cgal_remove(g, v)) continue;
-        canon ref = theirs(g);
-        dd_cgal_reinsert(g, v);
-        dd_status s = dd_delete(t, v, variant);
-        canon now = ours(t);
-        dd_delete_stats ds_;
-        dd_last_delete_stats(t, &ds_);
-        course[ds_.wrap]++;
-        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) {
-            if (bad++ == 0) snprintf(why, sizeof why, "deleting %u (course %d): %s", v, ds_.wrap,
-                                     s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
-        }
-        free(now.a);
-        free(ref.a);
-        if (s == DD_OK && dd_reinsert(t, v) != DD_OK && bad++ == 0)
-            snprintf(why, sizeof why, "re-inserting %u: %s", v, dd_errmsg(t));
-        done++;
+        done += wrap_one(t, g, v, variant, course, &bad, why, sizeof why);
     }
     tl_check(st, bad == 0 && done > 0 && course[DD_WRAP_DECLINED] == 0, tn,
              "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld", bad, done, why,

@@ -3,9 +3,10 @@
  * choice by the cavity's degree (so that dd_delete(t, v, NULL) is that
  * choice):
  *  - below degree 300: gift wrapping (wrap.h), which builds only the
- *    fill's cells, unless it declines (a hull vertex with coplanar points
- *    on its new hull facets, a refuted guess from 40 neighbours on, or a
- *    degenerate cavity past its budget of exact tests);
+ *    fill's cells, unless it declines (a refuted guess from 40
+ *    neighbours on, a degenerate cavity past its budget of exact tests,
+ *    both unless the neighbours are cospherical; a hull whose neighbours
+ *    all lie in one plane);
  *  - otherwise, below degree 40, the compact conflict DT (qsmall.c) with
  *    the neighbours inserted nearest to q first;
  *  - from 40 on, grr-neighbor.

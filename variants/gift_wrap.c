@@ -3,9 +3,9 @@
  * cells found one by one from the link, no conflict DT.  Not a variant of
  * the paper: the low-degree fast path of auto.c, listed on its own so
  * that the bench times it and the tests check it at every degree.  When
- * the wrap declines (wrap.h: coplanar points on new hull facets, or a
- * nearly degenerate cavity of 40 neighbours or more), auto's conflict-DT
- * strategies fill the cavity.
+ * the wrap declines (wrap.h: a nearly degenerate cavity of 40 neighbours
+ * or more, or a rare flat hull case), auto's conflict-DT strategies fill
+ * the cavity.
  */
 #include "auto.h"
 
@@ -17,6 +17,6 @@ static dd_status gift_wrap_fill(dd_del *d)
 
 const dd_variant dd_variant_gift_wrap = {
     "gift-wrap",
-    "the fill found cell by cell from the link by gift wrapping (coplanar hull cases: as auto without it)",
+    "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it)",
     gift_wrap_fill,
 };
