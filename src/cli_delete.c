@@ -163,9 +163,10 @@ int cmd_delete(int argc, char **argv)
                 static const char *const wrap[] = {"", " (gift wrap: guess proved)",
                                                    " (gift wrap: guess refuted, then scanned)",
                                                    " (gift wrap: scanned)", " (gift wrap declined)"};
+                const char *course = st.wrap > 0 && st.wrap < (int)(sizeof wrap / sizeof *wrap) ? wrap[st.wrap] : "";
                 fprintf(stderr, "vertex %u: degree %u%s, %llu cells built%s, %llu fallbacks, %llu location tests,"
                                 " link deletions by degree:", vs[k], st.degree, st.on_hull ? " (hull)" : "",
-                        (unsigned long long)st.tets_created, st.wrap > 0 && st.wrap < 5 ? wrap[st.wrap] : "",
+                        (unsigned long long)st.tets_created, course,
                         (unsigned long long)st.fallbacks, (unsigned long long)st.locate_steps);
                 for (int b = 3; b < DD_LINKDEG_BUCKETS; b++)
                     if (st.link_deletions[b]) fprintf(stderr, " %d%s:%u", b, b == DD_LINKDEG_BUCKETS - 1 ? "+" : "", st.link_deletions[b]);

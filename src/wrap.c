@@ -256,6 +256,12 @@ static inline void w_minors(double m[6], const double B[4], const double C[4])
     m[5] = B[2] * C[3] - B[3] * C[2];
 }
 
+/* The normal N of the minors' plane: o(P) = N . P is orient3d.        */
+static inline void w_normal_of(const double m[6], double N[4])
+{
+    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+}
+
 /* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
  * and its orientation o(P) = N . P: the one evaluation of o that every
  * scan uses, so that the orientation filter's bound (w_lift) covers each
@@ -282,26 +288,25 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
     double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
     w_minors(m, B, C);
-    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+    w_normal_of(m, N);
     w_cofactors(T, N, m);
 }
 
 /* Whether point y is in conflict with fill cell (a, b, c, p) (local
  * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
  * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
- * check, else the exact perturbed test.                                 */
+ * check, else the exact perturbed test (for cospherical neighbours, its
+ * perturbation alone: see w_cospherical).                              */
 static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
 {
     double *const *L = w->lift;
     const uint32_t a = lv[0];
     const double *const *pt = w->pt;
-    if (!w->cosph) {
-        const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
-        double det = w_t(P, K);
-        if (det > w->ierr) return 0;
-        if (det < -w->ierr) return 1;
-    }
     if (w->cosph) return dd_insphere_symbolic(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
+    const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
+    double det = w_t(P, K);
+    if (det > w->ierr) return 0;
+    if (det < -w->ierr) return 1;
     w->nexact++;
     const double *cell[4] = {pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]]};
     return dd_points_conflict(pr, cell, -1, -1, pt[y]);
@@ -333,8 +338,9 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
                                 const double m[6])
 {
     double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, N[4] = {m[3], -m[1], m[0], 0};
-    double K[4] = {0, 0, 0, 0};
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double N[4], K[4] = {0, 0, 0, 0};
+    w_normal_of(m, N);
     const double oerr = w->oerr;
     uint32_t best = W_NONE, cell[4] = {a, b, c, W_NONE};
     int zero = 0;
@@ -501,7 +507,8 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
     return sure == (int)w->n - 3;
 }
 
-/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it. */
+/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
+ * (the lift column left out: N does not use it).                       */
 static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
 {
     double *const *L = w->lift;
@@ -509,7 +516,7 @@ static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     const double C[4] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a], 0};
     double m[6];
     w_minors(m, B, C);
-    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+    w_normal_of(m, N);
 }
 
 /* orient3d(a, b, c, k), N being w_normal(a, b, c): filtered as in the
@@ -891,8 +898,8 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
      * finite facet the point of least t/o beyond it (wrap_guess: one pass,
      * no check against the other points), or, for a hull vertex, the
      * infinite vertex when every other point is surely behind the facet
-     * (w_all_behind); facets through the infinite vertex get the exact
-     * Jarvis step of the scans (wrap_scan_inf).  The guess is kept when
+     * (w_all_behind); facets through the infinite vertex get the Jarvis
+     * step of the scans (wrap_scan_inf), which is certified.  The guess is kept when
      *  - each finite cell is surely positively oriented (wrap_guess), each
      *    facet between two cells is met from opposite sides, and the link
      *    triangles are the free facets, each met once (w_run).  For an
@@ -924,17 +931,16 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         if (s == DD_OK && outcome == W_DONE) goto done;
         d->wrap_how = DD_WRAP_REFUTED;
         refuted = d->fill.n;
-        /* A guess that declined is final: the budget is spent for the
-         * scans too, and W_BAIL means coplanar points on hull facets near
-         * q, left to the conflict DT anyway.  So is a refuted guess from
-         * W_EXACT_FROM neighbours on.                                     */
-        if (s == DD_OK && outcome != W_DECLINED) {
-            w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
-            if (n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
-        }
-        if (s == DD_OK && outcome != W_DECLINED) s = w_open_link(d, w, &start);
-    } else if (s == DD_OK) {
+    }
+    /* A guess that declined is final: the budget is spent for the scans
+     * too, and W_BAIL is a flat hull case the scans would not settle
+     * either.  So is a refuted guess from W_EXACT_FROM neighbours on,
+     * unless they are cospherical.  The link triangles are still the
+     * first records (w_open_link), for w_cospherical.                   */
+    if (s == DD_OK && outcome != W_DECLINED) {
         w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
+        if (guess && n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
+        else if (guess) s = w_open_link(d, w, &start);
     }
     if (s == DD_OK && outcome != W_DECLINED) s = w_run(d, w, 0, start, &outcome);
     if (s != DD_OK) return s;
