@@ -256,7 +256,9 @@ static const command commands[] = {
      "FILE) and writes the canonical form (as tets).  NAME: an engine\n"
      "strategy (dtdel variants), cgal or cgal-rnd; default: the fastest.\n"
      "--stats: per deletion on stderr, cells built, fallbacks, location tests,\n"
-     "link deletions by degree (and predicate counts in build/count/dtdel).", cmd_delete},
+     "link deletions by degree, gift wrapping's course and lifts (integer:\n"
+     "every test exact in doubles) and its tests left to the exact\n"
+     "predicates (and predicate counts in build/count/dtdel).", cmd_delete},
     {"time", "time FILE --vertex I --variant NAME [--repeat R]",
      "Prints one number: the median microseconds of deleting vertex I alone\n"
      "over R repetitions (default 5); the vertex is re-inserted, untimed,\n"

@@ -132,6 +132,10 @@ typedef struct dd_delete_stats {
                                  neighbours: the framework's forced fill
                                  ran instead of the strategy             */
     int wrap;                 /* gift wrapping's course: DD_WRAP_*        */
+    int wrap_integer;         /* the wrap's lifts were integers: each of
+                                 its tests exact in doubles (wrap.c)      */
+    uint32_t wrap_expansions; /* the wrap's tests left to the exact
+                                 predicates' expansions                   */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
     uint64_t fallbacks;       /* sampling fallbacks of guided strategies   */
     uint64_t locate_steps;    /* cells tested by point location in the

@@ -54,12 +54,17 @@ struct dd_wrap {
     double *lift[4];              /* lift[i][k]: coordinate i of
                                      (x_k - q, |x_k - q|^2), rounded      */
     double *o;                    /* scan scratch, per local number       */
+    uint32_t *tmp;                /* w_sort_ids' and w_lex_ranks' scratch */
+    uint32_t *lexr;               /* lexicographic rank, per local number */
+    int lex_ok;                   /* lexr made for this deletion          */
     double ierr, oerr;            /* the filters' error bounds (+inf: off) */
     double m;                     /* max |x_k - q_k| over the neighbours  */
     const double *q;
     int shifted;                  /* the shifted lifts were tried         */
     int cosph;                    /* every neighbour on one sphere (the
                                      scans' in-sphere tests are all 0)   */
+    int exact;                    /* integer lifts: every evaluation of
+                                     the scans is exact (see w_lift)     */
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
@@ -82,7 +87,7 @@ void dd_wrap_free(struct dd_wrap *w)
     if (!w) return;
     free(w->pt);
     for (int i = 0; i < 4; i++) free(w->lift[i]);
-    free(w->o); free(w->loc);
+    free(w->o); free(w->tmp); free(w->lexr); free(w->loc);
     dd_trihash_free(&w->ftab);
     free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack); free(w->lcell);
     free(w);
@@ -102,7 +107,8 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
     if (n > w->cap_n) {
         uint32_t cap = w->cap_n ? w->cap_n : 64;
         while (cap < n) cap *= 2;
-        if (!grow((void **)&w->pt, cap, sizeof *w->pt) || !grow((void **)&w->o, cap, sizeof *w->o))
+        if (!grow((void **)&w->pt, cap, sizeof *w->pt) || !grow((void **)&w->o, cap, sizeof *w->o) ||
+            !grow((void **)&w->tmp, cap, sizeof *w->tmp) || !grow((void **)&w->lexr, cap, sizeof *w->lexr))
             return DD_ERR_NOMEM;
         for (int i = 0; i < 4; i++)
             if (!grow((void **)&w->lift[i], cap, sizeof *w->lift[i])) return DD_ERR_NOMEM;
@@ -173,15 +179,32 @@ static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uin
  *
  * Both only for 1e-55 <= m <= 1e55 (no overflow; underflow errors far
  * below the bounds); otherwise the bounds are +inf and the exact
- * predicates decide every test.                                          */
+ * predicates decide every test.
+ *
+ * Integer points.  When q and every neighbour have integer coordinates
+ * and m <= W_INT_M = 256, each x_k - q is exact and every lift is an
+ * integer: columns 0-2 at most m, column 3 at most 3m^2, so the rows'
+ * entries are at most 2m and 3m^2.  Every quantity the scans certify
+ * with is then a sum of products of integers below 2^53, computed
+ * exactly: the minors at most 8m^2 (xyz) and 12m^3 (with the lift), o at
+ * most 48m^3, the cofactors K at most 72m^4, the in-sphere determinant
+ * K . P at most 576m^5 < 6.4e14.  The bounds become 0 (w->exact): a test
+ * is decided by its sign, and 0 is exactly 0, where orient3d is 0 and the
+ * in-sphere test is the perturbation's alone (dd_insphere_symbolic): no
+ * exact expansion at all (grids, cospheres, stacked layers, where they
+ * were a quarter of a deletion).  t, which only ranks candidates, may
+ * round.                                                                 */
+#define W_INT_M 256.0
 static void w_lift(struct dd_wrap *w, const double *q)
 {
     double m = 0;
     double *L[4] = {w->lift[0], w->lift[1], w->lift[2], w->lift[3]};
+    int integral = floor(q[0]) == q[0] && floor(q[1]) == q[1] && floor(q[2]) == q[2];
     for (uint32_t k = 0; k < w->n; k++) {
         const double *p = w->pt[k];
         for (int i = 0; i < 3; i++) {
             L[i][k] = p[i] - q[i];
+            integral &= floor(p[i]) == p[i];
             double a = L[i][k] < 0 ? -L[i][k] : L[i][k];
             if (a > m) m = a;
         }
@@ -189,13 +212,15 @@ static void w_lift(struct dd_wrap *w, const double *q)
     }
     for (uint32_t k = w->n; k % 4; k++)            /* wrap_guess's padding */
         for (int i = 0; i < 4; i++) L[i][k] = NAN;
-    w->ierr = dd_lift_err(m);
+    w->exact = integral && m <= W_INT_M;
+    w->ierr = w->exact ? 0 : dd_lift_err(m);
     int ok = w->ierr != 1.0 / 0.0;
-    w->oerr = ok ? 1e-13 * m * m * m : 1.0 / 0.0;
+    w->oerr = w->exact ? 0 : ok ? 1e-13 * m * m * m : 1.0 / 0.0;
     w->m = m;
     w->q = q;
-    w->shifted = !ok;
+    w->shifted = !ok || w->exact;                    /* nothing to shift for */
     w->nexact = 0;
+    w->lex_ok = 0;
 }
 
 /* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
@@ -292,6 +317,93 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     w_cofactors(T, N, m);
 }
 
+/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
+ * (the lift column left out: N does not use it).                       */
+static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
+{
+    double *const *L = w->lift;
+    const double B[4] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a], 0};
+    const double C[4] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a], 0};
+    double m[6];
+    w_minors(m, B, C);
+    w_normal_of(m, N);
+}
+
+/* orient3d(a, b, c, k), N being w_normal(a, b, c): filtered as in the
+ * scans (w_row_o and the bound oerr), else exact.                        */
+static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                           const double N[4], uint32_t k)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double P[4], o = w_row_o(L, k, A, N, P);
+    if (o > w->oerr) return 1;
+    if (o < -w->oerr) return -1;
+    return w->exact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+}
+
+/* Lexicographic ranks of the neighbours (w->lexr), made the first time
+ * the perturbation is asked this deletion: index sort by dd_lex_cmp,
+ * insertion while short, else bottom-up merges through w->tmp.          */
+static void w_lex_ranks(struct dd_wrap *w)
+{
+    const uint32_t n = w->n;
+    const double *const *pt = w->pt;
+    uint32_t *a = w->tmp, *b = w->lexr;
+    for (uint32_t k = 0; k < n; k++) a[k] = k;
+    for (uint32_t i = 1; i < n && n <= 32; i++) {
+        uint32_t v = a[i], j = i;
+        for (; j > 0 && dd_lex_cmp(pt[a[j - 1]], pt[v]) > 0; j--) a[j] = a[j - 1];
+        a[j] = v;
+    }
+    for (uint32_t width = 1; n > 32 && width < n; width *= 2) {
+        for (uint32_t lo = 0; lo < n; lo += 2 * width) {
+            uint32_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
+            uint32_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi) b[k++] = dd_lex_cmp(pt[a[j]], pt[a[i]]) < 0 ? a[j++] : a[i++];
+            while (i < mid) b[k++] = a[i++];
+            while (j < hi) b[k++] = a[j++];
+        }
+        uint32_t *x = a;
+        a = b;
+        b = x;
+    }
+    if (a == w->lexr) memcpy(w->tmp, a, n * sizeof *a);
+    for (uint32_t k = 0; k < n; k++) w->lexr[w->tmp[k]] = k;
+    w->lex_ok = 1;
+}
+
+/* dd_insphere_symbolic on local numbers: the perturbation's sign for y
+ * and the positively oriented cell lv, when their in-sphere determinant
+ * is exactly 0 (+1 inside).  The same rule: of the five points, the two
+ * lexicographically largest in turn; y itself gives -1, a corner the
+ * orientation of the cell with y in its place, if not 0.  The ranks are
+ * w_lex_ranks', the orientations w_orient's (with integer lifts exact in
+ * doubles, else filtered): the orientations and the order of
+ * dd_insphere_symbolic, whose five-point sort and exact calls were most
+ * of a cospherical deletion.                                             */
+static int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
+{
+    if (!w->lex_ok) w_lex_ranks(w);
+    const uint32_t *r = w->lexr, rk[5] = {r[lv[0]], r[lv[1]], r[lv[2]], r[lv[3]], r[y]};
+    int top[2] = {0, 0};
+    for (int i = 1; i < 5; i++)
+        if (rk[i] > rk[top[0]]) top[0] = i;
+    top[1] = top[0] == 0 ? 1 : 0;
+    for (int i = 0; i < 5; i++)
+        if (i != top[0] && rk[i] > rk[top[1]]) top[1] = i;
+    for (int step = 0; step < 2; step++) {
+        if (top[step] == 4) return -1;               /* y itself */
+        uint32_t v[4] = {lv[0], lv[1], lv[2], lv[3]};
+        v[top[step]] = y;
+        double N[4];
+        w_normal(w, v[0], v[1], v[2], N);
+        int o = w_orient(w, pr, v[0], v[1], v[2], N, v[3]);
+        if (o != 0) return o;
+    }
+    return -1;
+}
+
 /* Whether point y is in conflict with fill cell (a, b, c, p) (local
  * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
  * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
@@ -302,11 +414,12 @@ static int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], con
     double *const *L = w->lift;
     const uint32_t a = lv[0];
     const double *const *pt = w->pt;
-    if (w->cosph) return dd_insphere_symbolic(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
+    if (w->cosph) return w_symbolic(w, pr, lv, y) > 0;
     const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
     double det = w_t(P, K);
     if (det > w->ierr) return 0;
     if (det < -w->ierr) return 1;
+    if (w->exact) return w_symbolic(w, pr, lv, y) > 0;
     w->nexact++;
     const double *cell[4] = {pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]]};
     return dd_points_conflict(pr, cell, -1, -1, pt[y]);
@@ -349,8 +462,11 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         double P[4], o = w_row_o(L, k, A, N, P);
         if (!(o > oerr)) {
             if (o < -oerr) continue;
-            w->nexact++;
-            int or = dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+            int or = 0;                             /* w->exact: o is exactly 0 */
+            if (!w->exact) {
+                w->nexact++;
+                or = dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+            }
             zero |= or == 0;
             if (or <= 0) continue;
         }
@@ -415,15 +531,18 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
 }
 
 /* The guessing scan (see dd_wrap_fill): the point beyond abc of least
- * t/o as in wrap_scan (compared as t x o' < t' x o, no division), and no
- * check.  Only its orientation is sure: it is beyond abc by more than
- * the filter's bound, o being evaluated as in wrap_scan.  With AVX2, four
- * points at a time in the same operations (the same o, bit for bit); the
- * lifts are padded with NaN to a multiple of four, never beyond.  W_TIE
- * when two candidates compare equal: on cospherical points (grids) the
- * perturbation decides such ties, which a guess would get wrong about
- * half the time (grid 20^3: 198 of 300 guesses refuted), so the scans
- * wrap at once.                                                          */
+ * t/o as in wrap_scan, and no check.  Only its orientation is sure: it is
+ * beyond abc by more than the filter's bound, o being evaluated as in
+ * wrap_scan.  The ratios are compared as quotients r = t/o (a guess needs
+ * no exact order, and a running minimum of quotients keeps the loop's
+ * carried dependency to one min, where comparing t x o' < t' x o chained
+ * two products, a compare and a blend per step: the guess at degree ~150,
+ * 0.93 -> 0.75 ns a point).  With AVX2, four points at a time in the same
+ * operations (the same o and r, bit for bit); the lifts are padded with
+ * NaN to a multiple of four, never beyond.  W_TIE when two candidates'
+ * quotients are equal: on cospherical points (grids) the perturbation
+ * decides such ties, which a guess would get wrong about half the time
+ * (grid 20^3: 198 of 300 guesses refuted), so the scans wrap at once.   */
 #if defined(__GNUC__) && defined(__x86_64__)
 #define W_AVX2 1
 #include <immintrin.h>
@@ -435,8 +554,9 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
                   aw = _mm256_set1_pd(L[3][a]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]);
     const __m256d t0 = _mm256_set1_pd(T[0]), t1 = _mm256_set1_pd(T[1]), t2 = _mm256_set1_pd(T[2]),
-                  t3 = _mm256_set1_pd(T[3]), er = _mm256_set1_pd(oerr), four = _mm256_set1_pd(4);
-    __m256d lt = _mm256_set1_pd(1), lo = _mm256_setzero_pd(), bi = _mm256_setzero_pd(), tie = lo;
+                  t3 = _mm256_set1_pd(T[3]), er = _mm256_set1_pd(oerr), four = _mm256_set1_pd(4),
+                  inf = _mm256_set1_pd(1.0 / 0.0);
+    __m256d br = inf, bi = _mm256_setzero_pd(), tie = bi;
     __m256d kv = _mm256_setr_pd(0, 1, 2, 3);
     for (uint32_t k = 0; k < n; k += 4) {
         __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
@@ -444,26 +564,23 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
         __m256d ok = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
         __m256d tk = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, t0), _mm256_mul_pd(P1, t1)),
                                    _mm256_add_pd(_mm256_mul_pd(P2, t2), _mm256_mul_pd(P3, t3)));
-        __m256d pos = _mm256_cmp_pd(ok, er, _CMP_GT_OQ), u = _mm256_mul_pd(tk, lo), v = _mm256_mul_pd(lt, ok);
-        __m256d better = _mm256_and_pd(pos, _mm256_cmp_pd(u, v, _CMP_LT_OQ));
-        tie = _mm256_or_pd(tie, _mm256_and_pd(pos, _mm256_cmp_pd(u, v, _CMP_EQ_OQ)));
-        lt = _mm256_blendv_pd(lt, tk, better);
-        lo = _mm256_blendv_pd(lo, ok, better);
-        bi = _mm256_blendv_pd(bi, kv, better);
+        __m256d pos = _mm256_cmp_pd(ok, er, _CMP_GT_OQ);
+        __m256d r = _mm256_blendv_pd(inf, _mm256_div_pd(tk, ok), pos);
+        tie = _mm256_or_pd(tie, _mm256_and_pd(pos, _mm256_cmp_pd(r, br, _CMP_EQ_OQ)));
+        bi = _mm256_blendv_pd(bi, kv, _mm256_cmp_pd(r, br, _CMP_LT_OQ));
+        br = _mm256_min_pd(r, br);
         kv = _mm256_add_pd(kv, four);
     }
     if (_mm256_movemask_pd(tie)) return W_TIE;
-    double vt[4], vo[4], vi[4];
-    _mm256_storeu_pd(vt, lt);
-    _mm256_storeu_pd(vo, lo);
+    double vr[4], vi[4];
+    _mm256_storeu_pd(vr, br);
     _mm256_storeu_pd(vi, bi);
     uint32_t best = W_NONE;
-    double bt = 1, bo = 0;
+    double b = 1.0 / 0.0;
     for (int i = 0; i < 4; i++)
-        if (vo[i] > 0 && vt[i] * bo <= bt * vo[i]) {
-            if (vt[i] * bo == bt * vo[i]) return W_TIE;
-            bt = vt[i];
-            bo = vo[i];
+        if (vr[i] < 1.0 / 0.0 && vr[i] <= b) {
+            if (vr[i] == b) return W_TIE;
+            b = vr[i];
             best = (uint32_t)vi[i];
         }
     return best;
@@ -478,16 +595,16 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
     if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr);
 #endif
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double lo_t = 1, lo_o = 0;
+    double br = 1.0 / 0.0;
     uint32_t best = W_NONE;
     int tie = 0;
     for (uint32_t k = 0; k < w->n; k++) {
-        double P[4], ok = w_row_o(L, k, A, N, P), tk = w_t(P, T);
-        int pos = ok > oerr, better = pos & (tk * lo_o < lo_t * ok);
-        tie |= pos & (tk * lo_o == lo_t * ok);
-        lo_t = better ? tk : lo_t;
-        lo_o = better ? ok : lo_o;
-        best = better ? k : best;
+        double P[4], ok = w_row_o(L, k, A, N, P);
+        int pos = ok > oerr;
+        double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
+        tie |= pos & (r == br);
+        best = r < br ? k : best;
+        br = r < br ? r : br;
     }
     return tie ? W_TIE : best;
 }
@@ -505,31 +622,6 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
         sure += w_row_o(L, k, A, N, P) < -w->oerr;
     }
     return sure == (int)w->n - 3;
-}
-
-/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
- * (the lift column left out: N does not use it).                       */
-static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
-{
-    double *const *L = w->lift;
-    const double B[4] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a], 0};
-    const double C[4] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a], 0};
-    double m[6];
-    w_minors(m, B, C);
-    w_normal_of(m, N);
-}
-
-/* orient3d(a, b, c, k), N being w_normal(a, b, c): filtered as in the
- * scans (w_row_o and the bound oerr), else exact.                        */
-static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                           const double N[4], uint32_t k)
-{
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double P[4], o = w_row_o(L, k, A, N, P);
-    if (o > w->oerr) return 1;
-    if (o < -w->oerr) return -1;
-    return dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
 }
 
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
@@ -607,25 +699,40 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     return best;
 }
 
-static int cmp_u32(const void *x, const void *y)
+/* Sorts a[0..n) increasingly; tmp has room for n.  Insertion sort while
+ * n is small, else least-significant-digit radix sort by bytes, skipping
+ * the bytes all ids share (at degree ~150 qsort's compare calls were a
+ * tenth of a deletion).                                                 */
+static void w_sort_ids(uint32_t *a, size_t n, uint32_t *tmp)
 {
-    uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
-    return a < b ? -1 : a > b;
-}
-
-/* Sorts a[0..n) increasingly (n is small but for a few vertices). */
-static void w_sort_ids(uint32_t *a, size_t n)
-{
-    if (n > 64) {
-        qsort(a, n, sizeof *a, cmp_u32);
+    if (n <= 32) {
+        for (size_t i = 1; i < n; i++) {
+            uint32_t v = a[i];
+            size_t j = i;
+            for (; j > 0 && a[j - 1] > v; j--) a[j] = a[j - 1];
+            a[j] = v;
+        }
         return;
     }
-    for (size_t i = 1; i < n; i++) {
-        uint32_t v = a[i];
-        size_t j = i;
-        for (; j > 0 && a[j - 1] > v; j--) a[j] = a[j - 1];
-        a[j] = v;
+    uint32_t cnt[4][256];
+    memset(cnt, 0, sizeof cnt);
+    for (size_t i = 0; i < n; i++)
+        for (int b = 0; b < 4; b++) cnt[b][a[i] >> (8 * b) & 255]++;
+    uint32_t *src = a, *dst = tmp;
+    for (int b = 0; b < 4; b++) {
+        if (cnt[b][src[0] >> (8 * b) & 255] == n) continue;    /* one value: already in order */
+        uint32_t sum = 0;
+        for (int v = 0; v < 256; v++) {
+            uint32_t c = cnt[b][v];
+            cnt[b][v] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++) dst[cnt[b][src[i] >> (8 * b) & 255]++] = src[i];
+        uint32_t *x = src;
+        src = dst;
+        dst = x;
     }
+    if (src != a) memcpy(a, src, n * sizeof *a);
 }
 
 static dd_status w_get(dd_del *d, struct dd_wrap **out)
@@ -842,6 +949,26 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     return DD_OK;
 }
 
+/* w_cospherical with integer lifts (w->exact): the same tests as
+ * determinants of the lifts, each exact (see w_lift).                    */
+static int w_cospherical_exact(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double m[6], N[4], T[4], K[4], P[4];
+    w_pencil(w, a, b, c, m, N, T);
+    uint32_t e = W_NONE;
+    for (uint32_t k = 0; k < w->n && e == W_NONE; k++)
+        if (w_row_o(L, k, A, N, P) != 0) e = k;
+    if (e == W_NONE) return 0;
+    w_cofactors(K, P, m);
+    for (uint32_t k = 0; k < w->n; k++) {
+        w_row_o(L, k, A, N, P);
+        if (w_t(P, K) != 0) return 0;
+    }
+    return 1;
+}
+
 /* Whether every neighbour lies on one sphere, exactly: the sphere of a
  * link triangle's corners and a first point off its plane holds each of
  * the others (dd_insphere 0).  Then every in-sphere determinant of the
@@ -857,6 +984,7 @@ static int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
     for (size_t r = 0; r < nlink; r++) {
         const uint32_t a = w->tri[r][0], b = w->tri[r][1], c = w->tri[r][2];
         if (a == n || b == n || c == n) continue;       /* through the infinite vertex */
+        if (w->exact) return w_cospherical_exact(w, a, b, c);
         uint32_t e = W_NONE;
         for (uint32_t k = 0; k < n && e == W_NONE; k++)
             if (k != a && k != b && k != c && dd_orient3d(pr, pt[a], pt[b], pt[c], pt[k]) != 0) e = k;
@@ -878,7 +1006,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
     if (s != DD_OK) return s;
     DD_PHASE_BEGIN(d);
-    w_sort_ids(d->order.a, d->order.n);
+    w_sort_ids(d->order.a, d->order.n, w->tmp);
     const uint32_t *gid = d->order.a;
     const uint32_t n = w->n = (uint32_t)d->order.n;   /* DD_INF's local number is n */
     for (uint32_t k = 0; k < n; k++) {
@@ -886,6 +1014,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
         w->loc[gid[k]] = k;
     }
     w_lift(w, d->qp);
+    d->wrap_integer = w->exact;
     w->cosph = 0;                                    /* the scans may set it */
     /* The sanitizer build of the tests takes the plain C scan for vertices
      * of odd index, so that both scans are tested with the same inputs.  */
@@ -946,10 +1075,12 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     if (s != DD_OK) return s;
     if (outcome == W_DECLINED) {
         d->wrap_how = DD_WRAP_DECLINED;
+        d->wrap_expansions = w->nexact;
         *declined = 1;
         return DD_OK;
     }
 done:
+    d->wrap_expansions = w->nexact;
     d->sew_direct = 1;
     d->qdt->tets_created = d->fill.n + refuted;
     DD_PHASE_END(d, DD_PH_CONFLICT);

@@ -274,10 +274,11 @@ static double *shells(uint32_t n, int e, uint32_t *np)
 
 /* Deletes v with `variant` and re-inserts it, against CGAL's deletion of
  * v in g: counts the wrap's course, and a wrong result, a failed dd_check
- * or a failed step in *bad (the first one said in why).  0 when CGAL
- * refuses to delete v (nothing done), else 1.                          */
+ * or a failed step in *bad (the first one said in why); the deletion's
+ * statistics in *out unless NULL.  0 when CGAL refuses to delete v
+ * (nothing done), else 1.                                               */
 static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long course[5], long *bad,
-                    char *why, size_t nwhy)
+                    char *why, size_t nwhy, dd_delete_stats *out)
 {
     if (dd_cgal_remove(g, v)) return 0;
     canon ref = theirs(g);
@@ -286,6 +287,7 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     canon now = ours(t);
     dd_delete_stats ds_;
     dd_last_delete_stats(t, &ds_);
+    if (out) *out = ds_;
     course[ds_.wrap]++;
     if ((s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) && (*bad)++ == 0)
         snprintf(why, nwhy, "deleting %u (course %d): %s", v, ds_.wrap,
@@ -325,7 +327,7 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
     for (uint32_t v = 0; v < n && done < k; v++) {
         if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
         if (hull_below && (!dd_on_hull(t, v) || dd_degree(t, v) >= hull_below)) continue;
-        done += wrap_one(t, g, v, variant, course, &bad, why, sizeof why);
+        done += wrap_one(t, g, v, variant, course, &bad, why, sizeof why, NULL);
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1 |
                (course[DD_WRAP_DECLINED] == 0) << 2;
@@ -351,6 +353,47 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-flat-hull/%s/%s", name, variant);
     wrap_course(st, tn, pts, n, variant, -1, 40, UINT32_MAX, 4);
+}
+
+/* Integer lifts (wrap.c, w_lift): when q and its neighbours have integer
+ * coordinates and lie within W_INT_M = 256 of each other per coordinate,
+ * every test of the wrap is exact in doubles: none may be left to the
+ * exact predicates, and a zero is decided by the perturbation alone.  A
+ * k x k x k grid scaled by s has each vertex's neighbours exactly s away
+ * in some coordinate and no further, so s = 256 is wrapped with integer
+ * lifts and s = 257 with rounded ones; an offset of 2^50 keeps the lifts
+ * integers.  Integer points of a sphere halved and moved by 1/4 stay
+ * exactly cospherical with no integer coordinate: their wrap asks the
+ * perturbation with rounded lifts (w_symbolic's filtered orientations).
+ * Every vertex is deleted (wrap_one: against CGAL, dd_check), and each
+ * wrap must have taken the lifts `want` says (1: integer).              */
+static void wrap_integer(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
+                         int want)
+{
+    char msg[256], why[200] = "", tn[128];
+    snprintf(tn, sizeof tn, "wrap-integer/%s/%s", name, variant);
+    dd_tri *t;
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, tn, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0;
+    for (uint32_t v = 0; v < n; v++) {
+        if (!dd_is_vertex(t, v)) continue;
+        dd_delete_stats ds_;
+        memset(&ds_, 0, sizeof ds_);
+        if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
+        done++;
+        if (ds_.wrap == DD_WRAP_NONE) continue;          /* forced fill: no wrap */
+        wrong_lifts += ds_.wrap_integer != want;
+        if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
+    }
+    tl_check(st, bad == 0 && done > 0 && wrong_lifts == 0 && expansions == 0, tn,
+             "%ld of %ld wrong (%s); %ld wraps with %s lifts; %ld tests left to the exact predicates "
+             "with integer lifts", bad, done, why, wrong_lifts, want ? "rounded" : "integer", expansions);
+    dd_cgal_free(g);
+    dd_free(t);
 }
 
 static void refusals(tl_state *st)
@@ -629,6 +672,22 @@ int main(int argc, char **argv)
             snprintf(name, sizeof name, "%s-%u%s", flat[i].ds, np, flat[i].scale != 1 ? "-x1e-200" : "");
             wrap_flat_hull(&st, name, p, np, "gift-wrap");
             wrap_flat_hull(&st, name, p, np, "auto");
+            free(p);
+        }
+    }
+    {
+        const struct { const char *ds; uint32_t n; double scale, offset; int want; } ints[] = {
+            {"grid", 216, 1, 0, 1}, {"grid", 216, 256, 0, 1}, {"grid", 216, 257, 0, 0},
+            {"grid", 216, 3, 1125899906842624.0 /* 2^50 */, 1}, {"cosphere", 300, 1, 0, 1},
+            {"layers", 128, 1, 0, 1}, {"cosphere", 300, 0.5, 0.25, 0}};
+        for (size_t i = 0; i < sizeof ints / sizeof *ints; i++) {
+            uint32_t np;
+            double *p = gen(ints[i].ds, ints[i].n, &np);
+            for (uint32_t j = 0; j < 3 * np; j++) p[j] = p[j] * ints[i].scale + ints[i].offset;
+            char name[64];
+            snprintf(name, sizeof name, "%s-%u-x%g+%g", ints[i].ds, np, ints[i].scale, ints[i].offset);
+            wrap_integer(&st, name, p, np, "gift-wrap", ints[i].want);
+            wrap_integer(&st, name, p, np, "auto", ints[i].want);
             free(p);
         }
     }
