@@ -204,7 +204,7 @@ static void w_lift(struct dd_wrap *w, const double *q)
         const double *p = w->pt[k];
         for (int i = 0; i < 3; i++) {
             L[i][k] = p[i] - q[i];
-            integral &= floor(p[i]) == p[i];
+            integral = integral && floor(p[i]) == p[i];
             double a = L[i][k] < 0 ? -L[i][k] : L[i][k];
             if (a > m) m = a;
         }
