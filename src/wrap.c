@@ -572,18 +572,15 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
         kv = _mm256_add_pd(kv, four);
     }
     if (_mm256_movemask_pd(tie)) return W_TIE;
-    double vr[4], vi[4];
-    _mm256_storeu_pd(vr, br);
+    /* the least lane, without a branch on which lane holds it */
+    __m256d lo = _mm256_min_pd(br, _mm256_permute2f128_pd(br, br, 1));
+    lo = _mm256_min_pd(lo, _mm256_permute_pd(lo, 5));
+    if (_mm256_cvtsd_f64(lo) == 1.0 / 0.0) return W_NONE;
+    unsigned at = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(br, lo, _CMP_EQ_OQ));
+    if (at & (at - 1)) return W_TIE;                 /* two lanes equal */
+    double vi[4];
     _mm256_storeu_pd(vi, bi);
-    uint32_t best = W_NONE;
-    double b = 1.0 / 0.0;
-    for (int i = 0; i < 4; i++)
-        if (vr[i] < 1.0 / 0.0 && vr[i] <= b) {
-            if (vr[i] == b) return W_TIE;
-            b = vr[i];
-            best = (uint32_t)vi[i];
-        }
-    return best;
+    return (uint32_t)vi[__builtin_ctz(at)];
 }
 #endif
 
