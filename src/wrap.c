@@ -190,7 +190,7 @@ static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uin
  * most 48m^3, the cofactors K at most 72m^4, the in-sphere determinant
  * K . P at most 576m^5 < 6.4e14.  The bounds become 0 (w->exact): a test
  * is decided by its sign, and 0 is exactly 0, where orient3d is 0 and the
- * in-sphere test is the perturbation's alone (dd_insphere_symbolic): no
+ * in-sphere test is the perturbation's alone (w_symbolic): no
  * exact expansion at all (grids, cospheres, stacked layers, where they
  * were a quarter of a deletion).  t, which only ranks candidates, may
  * round.                                                                 */
@@ -329,17 +329,25 @@ static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     w_normal_of(m, N);
 }
 
-/* orient3d(a, b, c, k), N being w_normal(a, b, c): filtered as in the
- * scans (w_row_o and the bound oerr), else exact.                        */
+/* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
+ * filter's answer, else 0 with integer lifts (o is exact), else the exact
+ * predicate.                                                              */
+static inline int w_sign_o(const struct dd_wrap *w, dd_pred *pr, double o, uint32_t a, uint32_t b, uint32_t c,
+                           uint32_t k)
+{
+    if (o > w->oerr) return 1;
+    if (o < -w->oerr) return -1;
+    return w->exact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+}
+
+/* orient3d(a, b, c, k), N being w_normal(a, b, c) (w_sign_o).           */
 static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
                            const double N[4], uint32_t k)
 {
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double P[4], o = w_row_o(L, k, A, N, P);
-    if (o > w->oerr) return 1;
-    if (o < -w->oerr) return -1;
-    return w->exact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+    double P[4];
+    return w_sign_o(w, pr, w_row_o(L, k, A, N, P), a, b, c, k);
 }
 
 /* Lexicographic ranks of the neighbours (w->lexr), made the first time
@@ -462,11 +470,8 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         double P[4], o = w_row_o(L, k, A, N, P);
         if (!(o > oerr)) {
             if (o < -oerr) continue;
-            int or = 0;                             /* w->exact: o is exactly 0 */
-            if (!w->exact) {
-                w->nexact++;
-                or = dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
-            }
+            w->nexact += !w->exact;                 /* integer lifts: o is exact */
+            int or = w_sign_o(w, pr, o, a, b, c, k);
             zero |= or == 0;
             if (or <= 0) continue;
         }
@@ -946,49 +951,39 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     return DD_OK;
 }
 
-/* w_cospherical with integer lifts (w->exact): the same tests as
- * determinants of the lifts, each exact (see w_lift).                    */
-static int w_cospherical_exact(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
-{
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double m[6], N[4], T[4], K[4], P[4];
-    w_pencil(w, a, b, c, m, N, T);
-    uint32_t e = W_NONE;
-    for (uint32_t k = 0; k < w->n && e == W_NONE; k++)
-        if (w_row_o(L, k, A, N, P) != 0) e = k;
-    if (e == W_NONE) return 0;
-    w_cofactors(K, P, m);
-    for (uint32_t k = 0; k < w->n; k++) {
-        w_row_o(L, k, A, N, P);
-        if (w_t(P, K) != 0) return 0;
-    }
-    return 1;
-}
-
 /* Whether every neighbour lies on one sphere, exactly: the sphere of a
  * link triangle's corners and a first point off its plane holds each of
- * the others (dd_insphere 0).  Then every in-sphere determinant of the
+ * the others (in-sphere 0).  Then every in-sphere determinant of the
  * scans is 0 (five lifted points of one sphere lie in one hyperplane),
- * and w_conflicts asks the perturbation alone (dd_insphere_symbolic):
- * integer points of a sphere (the cosphere set), where the exact stages
- * cost most of a deletion otherwise.  Generic points stop at the first
- * test, which the filter answers.                                       */
+ * and w_conflicts asks the perturbation alone (w_symbolic): integer
+ * points of a sphere (the cosphere set), where the exact stages cost
+ * most of a deletion otherwise.  The tests are the scans' (w_orient, and
+ * the lifted determinant filtered by ierr, else dd_insphere; with
+ * integer lifts both exact), so generic points stop at the first one.  */
 static int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
 {
+    double *const *L = w->lift;
     const double *const *pt = w->pt;
     const uint32_t n = w->n;
     for (size_t r = 0; r < nlink; r++) {
         const uint32_t a = w->tri[r][0], b = w->tri[r][1], c = w->tri[r][2];
         if (a == n || b == n || c == n) continue;       /* through the infinite vertex */
-        if (w->exact) return w_cospherical_exact(w, a, b, c);
+        const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+        double m[6], N[4], T[4], K[4], P[4];
+        w_pencil(w, a, b, c, m, N, T);
         uint32_t e = W_NONE;
         for (uint32_t k = 0; k < n && e == W_NONE; k++)
-            if (k != a && k != b && k != c && dd_orient3d(pr, pt[a], pt[b], pt[c], pt[k]) != 0) e = k;
+            if (k != a && k != b && k != c && w_orient(w, pr, a, b, c, N, k) != 0) e = k;
         if (e == W_NONE) return 0;
-        for (uint32_t k = 0; k < n; k++)
-            if (k != a && k != b && k != c && k != e && dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
-                return 0;
+        w_row_o(L, e, A, N, P);
+        w_cofactors(K, P, m);
+        for (uint32_t k = 0; k < n; k++) {
+            if (k == a || k == b || k == c || k == e) continue;
+            w_row_o(L, k, A, N, P);
+            double det = w_t(P, K);
+            if (det > w->ierr || det < -w->ierr) return 0;
+            if (!w->exact && dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0) return 0;
+        }
         return 1;
     }
     return 0;
@@ -1012,7 +1007,7 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     }
     w_lift(w, d->qp);
     d->wrap_integer = w->exact;
-    w->cosph = 0;                                    /* the scans may set it */
+    w->cosph = 0;                                    /* w_cospherical may set it */
     /* The sanitizer build of the tests takes the plain C scan for vertices
      * of odd index, so that both scans are tested with the same inputs.  */
 #ifdef DD_TEST_BUILD
@@ -1070,14 +1065,13 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     }
     if (s == DD_OK && outcome != W_DECLINED) s = w_run(d, w, 0, start, &outcome);
     if (s != DD_OK) return s;
+done:
+    d->wrap_expansions = w->nexact;
     if (outcome == W_DECLINED) {
         d->wrap_how = DD_WRAP_DECLINED;
-        d->wrap_expansions = w->nexact;
         *declined = 1;
         return DD_OK;
     }
-done:
-    d->wrap_expansions = w->nexact;
     d->sew_direct = 1;
     d->qdt->tets_created = d->fill.n + refuted;
     DD_PHASE_END(d, DD_PH_CONFLICT);

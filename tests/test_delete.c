@@ -275,7 +275,7 @@ static double *shells(uint32_t n, int e, uint32_t *np)
 /* Deletes v with `variant` and re-inserts it, against CGAL's deletion of
  * v in g: counts the wrap's course, and a wrong result, a failed dd_check
  * or a failed step in *bad (the first one said in why); the deletion's
- * statistics in *out unless NULL.  0 when CGAL refuses to delete v
+ * statistics in *out.  0 when CGAL refuses to delete v
  * (nothing done), else 1.                                               */
 static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long course[5], long *bad,
                     char *why, size_t nwhy, dd_delete_stats *out)
@@ -287,7 +287,7 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     canon now = ours(t);
     dd_delete_stats ds_;
     dd_last_delete_stats(t, &ds_);
-    if (out) *out = ds_;
+    *out = ds_;
     course[ds_.wrap]++;
     if ((s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) && (*bad)++ == 0)
         snprintf(why, nwhy, "deleting %u (course %d): %s", v, ds_.wrap,
@@ -312,9 +312,12 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
  *    faces hold many coplanar points, which the coplanar in-circle rules
  *    of the perturbation triangulate.  Every hull vertex of degree below
  *    W_EXACT_FROM (40) is deleted, and the wrap must finish the fill
- *    itself, with no decline to the conflict DT.                         */
+ *    itself, with no decline to the conflict DT.
+ *  - Integer lifts (wrap-integer/, see wrap_integer): `lifts` >= 0 asks
+ *    every wrap to have taken integer lifts (1) or rounded ones (0), and
+ *    none with integer lifts to leave a test to the exact predicates.    */
 static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_t n, const char *variant,
-                        int parity, uint32_t hull_below, uint32_t k, int want)
+                        int parity, uint32_t hull_below, uint32_t k, int want, int lifts)
 {
     char msg[256], why[200] = "";
     dd_tri *t;
@@ -323,17 +326,25 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
         return;
     }
     dd_cgal *g = dd_cgal_build(pts, n);
-    long course[5] = {0}, bad = 0, done = 0;
+    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0;
     for (uint32_t v = 0; v < n && done < k; v++) {
         if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
         if (hull_below && (!dd_on_hull(t, v) || dd_degree(t, v) >= hull_below)) continue;
-        done += wrap_one(t, g, v, variant, course, &bad, why, sizeof why, NULL);
+        dd_delete_stats ds_;
+        memset(&ds_, 0, sizeof ds_);
+        if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
+        done++;
+        if (lifts < 0 || ds_.wrap == DD_WRAP_NONE) continue;   /* forced fill: no wrap */
+        wrong_lifts += ds_.wrap_integer != lifts;
+        if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1 |
                (course[DD_WRAP_DECLINED] == 0) << 2;
-    tl_check(st, bad == 0 && done > 0 && (seen & want) == want, tn,
-             "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld", bad, done, why,
-             course[DD_WRAP_PROVED], course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
+    tl_check(st, bad == 0 && done > 0 && (seen & want) == want && wrong_lifts == 0 && expansions == 0, tn,
+             "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld; %ld wraps with %s lifts, "
+             "%ld tests left to the exact predicates with integer lifts", bad, done, why,
+             course[DD_WRAP_PROVED], course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED],
+             wrong_lifts, lifts ? "rounded" : "integer", expansions);
     printf("# %s: proved %ld, refuted %ld, scanned %ld, declined %ld\n", tn, course[DD_WRAP_PROVED],
            course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
     dd_cgal_free(g);
@@ -345,14 +356,14 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
 {
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-guess/%s", name);
-    wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, k, want);
+    wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, k, want, -1);
 }
 
 static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
 {
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-flat-hull/%s/%s", name, variant);
-    wrap_course(st, tn, pts, n, variant, -1, 40, UINT32_MAX, 4);
+    wrap_course(st, tn, pts, n, variant, -1, 40, UINT32_MAX, 4, -1);
 }
 
 /* Integer lifts (wrap.c, w_lift): when q and its neighbours have integer
@@ -370,30 +381,9 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
 static void wrap_integer(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
                          int want)
 {
-    char msg[256], why[200] = "", tn[128];
+    char tn[128];
     snprintf(tn, sizeof tn, "wrap-integer/%s/%s", name, variant);
-    dd_tri *t;
-    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
-        tl_check(st, 0, tn, "dd_create: %s", msg);
-        return;
-    }
-    dd_cgal *g = dd_cgal_build(pts, n);
-    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0;
-    for (uint32_t v = 0; v < n; v++) {
-        if (!dd_is_vertex(t, v)) continue;
-        dd_delete_stats ds_;
-        memset(&ds_, 0, sizeof ds_);
-        if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
-        done++;
-        if (ds_.wrap == DD_WRAP_NONE) continue;          /* forced fill: no wrap */
-        wrong_lifts += ds_.wrap_integer != want;
-        if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
-    }
-    tl_check(st, bad == 0 && done > 0 && wrong_lifts == 0 && expansions == 0, tn,
-             "%ld of %ld wrong (%s); %ld wraps with %s lifts; %ld tests left to the exact predicates "
-             "with integer lifts", bad, done, why, wrong_lifts, want ? "rounded" : "integer", expansions);
-    dd_cgal_free(g);
-    dd_free(t);
+    wrap_course(st, tn, pts, n, variant, -1, 0, UINT32_MAX, 0, want);
 }
 
 static void refusals(tl_state *st)
