@@ -30,6 +30,7 @@
 #define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
 #define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
 #define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
+#define W_SCAN (UINT32_MAX - 4)   /* a guess the scan settles                 */
 
 /* On degenerate cavities the filters abstain on most tests and a wrap
  * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
@@ -37,9 +38,9 @@
  * on, wrapping declines once its exact tests pass 2n (then, warm,
  * cosphere degree [48,64): 719 us wrapping against 383 us for
  * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
- * The budget counts the exact tests of a guess's proof too: on the
- * moment curve from degree about 300 the proof alone passes it.  From
- * 40 neighbours on, a refuted guess declines too, without the scans:
+ * The budget counts the exact tests of a guess's proof too (the moment
+ * curve, degree 512, 768, 1024: 455-546, ~1200, 1543-1902: below 2n).
+ * From 40 neighbours on, a refuted guess declines too, without the scans:
  * such cavities are nearly degenerate, where the scans make O(n) exact
  * tests a cell (moment n = 272: refuted after ~140 exact tests, then
  * about 400 more, ~1 us each, before the budget declined anyway: 370-540
@@ -547,21 +548,34 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
  * NaN to a multiple of four, never beyond.  W_TIE when two candidates'
  * quotients are equal: on cospherical points (grids) the perturbation
  * decides such ties, which a guess would get wrong about half the time
- * (grid 20^3: 198 of 300 guesses refuted), so the scans wrap at once.   */
+ * (grid 20^3: 198 of 300 guesses refuted), so the scans wrap at once
+ * (scanning only the tied facets in the guessed wrap, which then proves
+ * every cell too, measured 6-10% slower on the grid, and 4x on the
+ * cosphere, where the scans' perturbation-only mode is found only after
+ * a refutation: w_cospherical).  *unsure: whether points other than a,
+ * b, c had unsure orientations, |o| <= oerr (a, b, c themselves always
+ * do: o(a) is exactly 0, o(b), o(c) within the bound); w_guess_unsure
+ * then decides them.  Counting them costs 3 of the loop's ~27 vector
+ * operations; the non-candidates' quotient being NaN rather than +inf
+ * (never equal to the least, nor less) saved one back: moment n = 256,
+ * 80.4 -> 87.4 -> 82.8 us a deletion.                                   */
 #if defined(__GNUC__) && defined(__x86_64__)
 #define W_AVX2 1
 #include <immintrin.h>
 
 __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a,
-                                                             const double N[4], const double T[4], double oerr)
+                                                             const double N[4], const double T[4], double oerr,
+                                                             int *unsure)
 {
     const __m256d ax = _mm256_set1_pd(L[0][a]), ay = _mm256_set1_pd(L[1][a]), az = _mm256_set1_pd(L[2][a]),
                   aw = _mm256_set1_pd(L[3][a]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]);
     const __m256d t0 = _mm256_set1_pd(T[0]), t1 = _mm256_set1_pd(T[1]), t2 = _mm256_set1_pd(T[2]),
                   t3 = _mm256_set1_pd(T[3]), er = _mm256_set1_pd(oerr), four = _mm256_set1_pd(4),
-                  inf = _mm256_set1_pd(1.0 / 0.0);
+                  inf = _mm256_set1_pd(1.0 / 0.0), sign = _mm256_set1_pd(-0.0),
+                  nan = _mm256_set1_pd(NAN);
     __m256d br = inf, bi = _mm256_setzero_pd(), tie = bi;
+    __m256i uns = _mm256_setzero_si256();            /* per lane: unsure orientations */
     __m256d kv = _mm256_setr_pd(0, 1, 2, 3);
     for (uint32_t k = 0; k < n; k += 4) {
         __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
@@ -570,12 +584,16 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
         __m256d tk = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, t0), _mm256_mul_pd(P1, t1)),
                                    _mm256_add_pd(_mm256_mul_pd(P2, t2), _mm256_mul_pd(P3, t3)));
         __m256d pos = _mm256_cmp_pd(ok, er, _CMP_GT_OQ);
-        __m256d r = _mm256_blendv_pd(inf, _mm256_div_pd(tk, ok), pos);
-        tie = _mm256_or_pd(tie, _mm256_and_pd(pos, _mm256_cmp_pd(r, br, _CMP_EQ_OQ)));
+        uns = _mm256_sub_epi64(uns, _mm256_castpd_si256(_mm256_cmp_pd(_mm256_andnot_pd(sign, ok), er, _CMP_LE_OQ)));
+        __m256d r = _mm256_blendv_pd(nan, _mm256_div_pd(tk, ok), pos);   /* NaN: never equal, less or least */
+        tie = _mm256_or_pd(tie, _mm256_cmp_pd(r, br, _CMP_EQ_OQ));
         bi = _mm256_blendv_pd(bi, kv, _mm256_cmp_pd(r, br, _CMP_LT_OQ));
         br = _mm256_min_pd(r, br);
         kv = _mm256_add_pd(kv, four);
     }
+    long long u[4];
+    _mm256_storeu_si256((__m256i *)u, uns);
+    *unsure = u[0] + u[1] + u[2] + u[3] != 3;
     if (_mm256_movemask_pd(tie)) return W_TIE;
     /* the least lane, without a branch on which lane holds it */
     __m256d lo = _mm256_min_pd(br, _mm256_permute2f128_pd(br, br, 1));
@@ -589,26 +607,65 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
 }
 #endif
 
-static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4])
+static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
 {
     double *const *L = w->lift;
     const double oerr = w->oerr;
 #ifdef W_AVX2
-    if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr);
+    if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr, unsure);
 #endif
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double br = 1.0 / 0.0;
     uint32_t best = W_NONE;
-    int tie = 0;
+    int tie = 0, uns = 0;
     for (uint32_t k = 0; k < w->n; k++) {
         double P[4], ok = w_row_o(L, k, A, N, P);
         int pos = ok > oerr;
+        uns += !pos & (ok >= -oerr);
         double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
         tie |= pos & (r == br);
         best = r < br ? k : best;
         br = r < br ? r : br;
     }
+    *unsure = uns != 3;
     return tie ? W_TIE : best;
+}
+
+/* The guess for facet (a, b, c) when points besides a, b, c had unsure
+ * orientations (wrap_guess's *unsure), `best` being the least t/o among
+ * the points surely beyond (or W_NONE): each unsure point is decided
+ * (w_sign_o, exact unless the lifts are integers), and one beyond
+ * replaces best when inside the sphere of a, b, c, best (w_conflicts):
+ * the scan's choice among these points, with exact tests for the unsure
+ * ones only.  On nearly degenerate cavities (the helix, the moment curve)
+ * a point nearly in a facet's plane can be its apex, and leaving it out
+ * refuted the whole guess (helix n = 64000, degree 563: at cell 315 of
+ * 567, 5 of 6 vertices).  W_NONE: no point beyond and none in the plane,
+ * so every point is behind (a hull facet for a hull vertex); W_SCAN when
+ * some lie in the plane but none beyond (the flat-hull case, the scan's). */
+static uint32_t w_guess_unsure(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                               const double m[6], const double N[4], uint32_t best)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    uint32_t cell[4] = {a, b, c, best};
+    double K[4] = {0, 0, 0, 0}, P[4];
+    if (best != W_NONE) {
+        w_row_o(L, best, A, N, P);
+        w_cofactors(K, P, m);
+    }
+    int zero = 0;
+    for (uint32_t k = 0; k < w->n; k++) {
+        double o = w_row_o(L, k, A, N, P);
+        if (k == a || k == b || k == c || o > w->oerr || o < -w->oerr) continue;
+        w->nexact += !w->exact;
+        int or = w_sign_o(w, pr, o, a, b, c, k);
+        zero |= or == 0;
+        if (or <= 0 || (best != W_NONE && !w_conflicts(w, pr, cell, K, k))) continue;
+        best = cell[3] = k;
+        w_cofactors(K, P, m);
+    }
+    return best == W_NONE && zero ? W_SCAN : best;
 }
 
 /* Whether every point but a, b, c is surely behind facet (a, b, c) of
@@ -837,6 +894,19 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
  * (a facet without a point beyond, a triangle met from the wrong side or
  * by a third cell, a fill too large).                                    */
+/* The scans' cell on open finite facet (a, b, c): wrap_scan, with the
+ * shifted lifts when it asks, and for a hull vertex the infinite vertex
+ * when no point is beyond.                                              */
+static uint32_t w_scan_facet(dd_del *d, struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+{
+    uint32_t p = wrap_scan(w, &d->qdt->pred, a, b, c);
+    if (p == W_SHIFT) {
+        w_shift(w);
+        p = wrap_scan(w, &d->qdt->pred, a, b, c);
+    }
+    return p == W_NONE && d->on_hull ? w->n : p;
+}
+
 static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
     dd_tri *x = d->qdt;
@@ -866,16 +936,16 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             }
             p = wrap_scan_inf(w, &x->pred, a, b);
         } else if (guess) {
+            int unsure;
             w_pencil(w, a, b, e, mb, N, T);
-            p = wrap_guess(w, a, N, T);
-            if (p == W_NONE && d->on_hull && w_all_behind(w, a, N)) p = inf;
+            p = wrap_guess(w, a, N, T, &unsure);
+            if (unsure && p != W_TIE) p = w_guess_unsure(w, &x->pred, a, b, e, mb, N, p);
+            if (p == W_SCAN) {
+                p = w_scan_facet(d, w, a, b, e);
+                w_pencil(w, a, b, e, mb, N, T);      /* the lifts may be shifted */
+            } else if (p == W_NONE && d->on_hull && (unsure || w_all_behind(w, a, N))) p = inf;
         } else {
-            p = wrap_scan(w, &x->pred, a, b, e);
-            if (p == W_SHIFT) {
-                w_shift(w);
-                p = wrap_scan(w, &x->pred, a, b, e);
-            }
-            if (p == W_NONE && d->on_hull) p = inf;
+            p = w_scan_facet(d, w, a, b, e);
         }
         if (p == W_BAIL) {
             *outcome = W_DECLINED;
@@ -1017,12 +1087,16 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
 #endif
     /* Guess, then prove (filters on).  The guessed fill takes for each
      * finite facet the point of least t/o beyond it (wrap_guess: one pass,
-     * no check against the other points), or, for a hull vertex, the
-     * infinite vertex when every other point is surely behind the facet
-     * (w_all_behind); facets through the infinite vertex get the Jarvis
-     * step of the scans (wrap_scan_inf), which is certified.  The guess is kept when
-     *  - each finite cell is surely positively oriented (wrap_guess), each
-     *    facet between two cells is met from opposite sides, and the link
+     * no check against the other points; points of unsure orientation
+     * decided and compared with it by w_guess_unsure), or, for a hull
+     * vertex, the infinite vertex when every other point is behind the
+     * facet (w_all_behind, or w_guess_unsure's W_NONE); facets through the
+     * infinite vertex get the Jarvis step of the scans (wrap_scan_inf),
+     * and a finite facet with points in its plane but none beyond the
+     * scan's step (W_SCAN), both certified.  The guess is kept when
+     *  - each finite cell is positively oriented (its point beyond by the
+     *    filter, or exactly), each facet between two cells is met from
+     *    opposite sides, and the link
      *    triangles are the free facets, each met once (w_run).  For an
      *    interior vertex the cells then cover every point of the cavity
      *    exactly once (the degree of the map: each point is covered by as

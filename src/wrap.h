@@ -16,7 +16,7 @@
  *
  * Cost: one scan of P per fill cell, O(d) lifted dot products each, so
  * O(d * |fill|), about d^2: cheaper than the conflict DT, and than GRR
- * below degree 300 (auto.c).  The wrap first guesses, one pass per cell
+ * below degree ~600 (auto.c).  The wrap first guesses, one pass per cell
  * with no check (four points at a time with AVX2), and keeps the guess
  * when it proves to be a triangulation of the cavity whose facets are
  * all locally Delaunay: then it is DT(S \ q)'s fill.  Otherwise the

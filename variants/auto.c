@@ -2,7 +2,7 @@
  * auto.c -- the default strategy, a dispatcher over the fastest correct
  * choice by the cavity's degree (so that dd_delete(t, v, NULL) is that
  * choice):
- *  - below degree 300: gift wrapping (wrap.h), which builds only the
+ *  - below degree 600: gift wrapping (wrap.h), which builds only the
  *    fill's cells, unless it declines (a refuted guess from 40
  *    neighbours on, a degenerate cavity past its budget of exact tests,
  *    both unless the neighbours are cospherical; a hull whose neighbours
@@ -18,13 +18,16 @@
  * helix [96,256) 81 vs 153 us), and on to degree 300 where the guess
  * holds (median of 5 deletions per vertex, 3 to 12 vertices, gift-wrap
  * vs grr-neighbor: moment n = 256, degree 256: 115-141 vs 161-171 us;
- * helix n = 16000, degree 241-286: 116-164 vs 184-209 us).  Where the
- * guess is refuted from 40 neighbours on, the wrap declines at once
- * (wrap.c), so the loss is the refuted guess: moment n = 264-300 (t =
- * i/512, more nearly degenerate than n = 256): 200-300 vs 166-195 us.
- * Further on the guesses are refuted or the proof runs past the budget
- * (helix n = 64000, degree 404-563: 750-890 us against 310-450 us), so
- * grr-neighbor takes over there.  grr-neighbor is the fastest GRR from
+ * helix n = 16000, degree 241-286: 116-164 vs 184-209 us).  Since the
+ * guess decides the points of unsure orientation (w_guess_unsure) it
+ * holds on the nearly degenerate curves too, where it was refuted and the
+ * wrap declined (helix n = 64000, degree 404-563, and moment n = 264-512:
+ * a point nearly in a facet's plane is its apex), so wrapping stays ahead
+ * to degree ~600 (median of 5, 3 to 6 vertices, gift-wrap vs
+ * grr-neighbor: helix n = 64000, degree 404: 314 vs 339 us, degree 563:
+ * 349-369 vs 409-426 us; moment n = 300: 112-118 vs 170-181 us, n = 512:
+ * 285-303 vs 300-328 us; n = 768: 688-708 vs 481-499 us, where the
+ * O(n) guess a cell tells).  grr-neighbor is the fastest GRR from
  * degree 64 on in the bench runs of 47bce1d and 81975a5 (moment, degree
  * 1023: 2370x and 2231x against 1926x and 1811x for grr-hashing).
  * Nearest-first rather than random order for the conflict DT: on the
@@ -35,7 +38,7 @@
 #include "../src/qsmall.h"
 #include "../src/wrap.h"
 
-#define AUTO_WRAP_BELOW_DEGREE 300
+#define AUTO_WRAP_BELOW_DEGREE 600
 #define AUTO_GRR_FROM_DEGREE 40
 
 /* Below the crossover every neighbour set fits the compact structure. */
@@ -67,6 +70,6 @@ static dd_status auto_fill(dd_del *d)
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: below degree 300 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
+    "default: below degree 600 gift wrapping; else below 40 the compact conflict DT, nearest first; else grr-neighbor",
     auto_fill,
 };

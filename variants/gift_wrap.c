@@ -9,7 +9,7 @@
  */
 #include "auto.h"
 
-/* auto's own choice below degree 300, at every degree. */
+/* auto's own choice below degree 600, at every degree. */
 static dd_status gift_wrap_fill(dd_del *d)
 {
     return dd_auto_wrap_first(d);
