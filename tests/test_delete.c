@@ -661,6 +661,25 @@ int main(int argc, char **argv)
             free(p);
         }
     }
+    /* A flat hull face without ties: uniform points in the unit cube and
+     * as many more on its face z = 0 (x, y of the others, z exactly 0).
+     * Deleting a vertex of that face, the guess meets finite facets in
+     * the plane z = 0 with points in it and none beyond, which are hull
+     * facets only if the coplanar in-circle rules allow: the scan's step
+     * decides them (wrap.c, w_guess_unsure's W_SCAN, w_flat_hull).      */
+    {
+        uint32_t np;
+        double *p = gen("uniform", small ? 300 : 600, &np);
+        p = realloc(p, 2 * 3 * sizeof *p * np);
+        for (uint32_t i = 0; i < np; i++) {
+            p[3 * (np + i)] = p[3 * i];
+            p[3 * (np + i) + 1] = p[3 * i + 1];
+            p[3 * (np + i) + 2] = 0;
+        }
+        wrap_flat_hull(&st, small ? "cube-face-z0-600" : "cube-face-z0-1200", p, 2 * np, "gift-wrap");
+        wrap_flat_hull(&st, small ? "cube-face-z0-600" : "cube-face-z0-1200", p, 2 * np, "auto");
+        free(p);
+    }
     {
         const struct { const char *ds; uint32_t n; double scale; } flat[] = {
             {"grid", 216, 1}, {"grid", 512, 1}, {"grid", 343, 1e-200}, {"cosphere", 300, 1},
