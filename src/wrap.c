@@ -30,7 +30,6 @@
 #define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
 #define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
 #define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
-#define W_SCAN (UINT32_MAX - 4)   /* a guess the scan settles                 */
 
 /* On degenerate cavities the filters abstain on most tests and a wrap
  * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
@@ -455,26 +454,35 @@ static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t
  * filtered (bounds of w_lift) and else decided by the exact perturbed
  * predicates.  Its branches depend on the data, which costs where the
  * pattern is new: wrap_scan runs it only when the fast scan cannot
- * certify its answer.                                                    */
+ * certify its answer.  It starts from `best` (W_NONE: none yet); with
+ * `unsure_only` it takes the points surely beyond as already compared
+ * (the guess's minimum, best) and decides only those of unsure
+ * orientation (see wrap_guess).                                         */
 static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                                const double m[6])
+                                const double m[6], uint32_t best, int unsure_only)
 {
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double N[4], K[4] = {0, 0, 0, 0};
+    double N[4], K[4] = {0, 0, 0, 0}, P[4];
     w_normal_of(m, N);
     const double oerr = w->oerr;
-    uint32_t best = W_NONE, cell[4] = {a, b, c, W_NONE};
+    uint32_t cell[4] = {a, b, c, best};
+    if (best != W_NONE) {
+        w_row_o(L, best, A, N, P);
+        w_cofactors(K, P, m);
+    }
     int zero = 0;
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b || k == c) continue;
-        double P[4], o = w_row_o(L, k, A, N, P);
+        double o = w_row_o(L, k, A, N, P);
         if (!(o > oerr)) {
             if (o < -oerr) continue;
             w->nexact += !w->exact;                 /* integer lifts: o is exact */
             int or = w_sign_o(w, pr, o, a, b, c, k);
             zero |= or == 0;
             if (or <= 0) continue;
+        } else if (unsure_only) {
+            continue;
         }
         if (best != W_NONE && !w_conflicts(w, pr, cell, K, k)) continue;
         best = cell[3] = k;
@@ -500,7 +508,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double m[6], N[4], T[4], K[4];
     w_pencil(w, a, b, c, m, N, T);
-    if (w->cosph) return wrap_scan_exact(w, pr, a, b, c, m);   /* every t/o ties */
+    if (w->cosph) return wrap_scan_exact(w, pr, a, b, c, m, W_NONE, 0);   /* every t/o ties */
     const double oerr = w->oerr, ierr = w->ierr;
     const uint32_t n = w->n;
     /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
@@ -520,7 +528,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
         lo = better ? lam : lo;
         best = better ? k : best;
     }
-    if (unsure != 3 || best == W_NONE) return wrap_scan_exact(w, pr, a, b, c, m);
+    if (unsure != 3 || best == W_NONE) return wrap_scan_exact(w, pr, a, b, c, m, W_NONE, 0);
     double X[4];
     w_row_o(L, best, A, N, X);
     w_cofactors(K, X, m);
@@ -533,7 +541,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
         bad |= (o[k] > oerr) & !(det > ierr);
     }
     if (!bad) return best;
-    return w->shifted || n < DD_SHIFT_FROM ? wrap_scan_exact(w, pr, a, b, c, m) : W_SHIFT;
+    return w->shifted || n < DD_SHIFT_FROM ? wrap_scan_exact(w, pr, a, b, c, m, W_NONE, 0) : W_SHIFT;
 }
 
 /* The guessing scan (see dd_wrap_fill): the point beyond abc of least
@@ -554,8 +562,12 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
  * cosphere, where the scans' perturbation-only mode is found only after
  * a refutation: w_cospherical).  *unsure: whether points other than a,
  * b, c had unsure orientations, |o| <= oerr (a, b, c themselves always
- * do: o(a) is exactly 0, o(b), o(c) within the bound); w_guess_unsure
- * then decides them.  Counting them costs 3 of the loop's ~27 vector
+ * do: o(a) is exactly 0, o(b), o(c) within the bound).  w_run then has
+ * wrap_scan_exact decide them exactly and compare those beyond with the
+ * guess's choice: on nearly degenerate cavities (the helix, the moment
+ * curve) a point nearly in a facet's plane can be its apex, and leaving
+ * it out refuted the whole guess (helix n = 64000, degree 563: at cell
+ * 315 of 567, on 5 of 6 vertices), which from 40 neighbours declines.  Counting them costs 3 of the loop's ~27 vector
  * operations; the non-candidates' quotient being NaN rather than +inf
  * (never equal to the least, nor less) saved one back: moment n = 256,
  * 80.4 -> 87.4 -> 82.8 us a deletion.                                   */
@@ -629,43 +641,6 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
     }
     *unsure = uns != 3;
     return tie ? W_TIE : best;
-}
-
-/* The guess for facet (a, b, c) when points besides a, b, c had unsure
- * orientations (wrap_guess's *unsure), `best` being the least t/o among
- * the points surely beyond (or W_NONE): each unsure point is decided
- * (w_sign_o, exact unless the lifts are integers), and one beyond
- * replaces best when inside the sphere of a, b, c, best (w_conflicts):
- * the scan's choice among these points, with exact tests for the unsure
- * ones only.  On nearly degenerate cavities (the helix, the moment curve)
- * a point nearly in a facet's plane can be its apex, and leaving it out
- * refuted the whole guess (helix n = 64000, degree 563: at cell 315 of
- * 567, 5 of 6 vertices).  W_NONE: no point beyond and none in the plane,
- * so every point is behind (a hull facet for a hull vertex); W_SCAN when
- * some lie in the plane but none beyond (the flat-hull case, the scan's). */
-static uint32_t w_guess_unsure(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                               const double m[6], const double N[4], uint32_t best)
-{
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    uint32_t cell[4] = {a, b, c, best};
-    double K[4] = {0, 0, 0, 0}, P[4];
-    if (best != W_NONE) {
-        w_row_o(L, best, A, N, P);
-        w_cofactors(K, P, m);
-    }
-    int zero = 0;
-    for (uint32_t k = 0; k < w->n; k++) {
-        double o = w_row_o(L, k, A, N, P);
-        if (k == a || k == b || k == c || o > w->oerr || o < -w->oerr) continue;
-        w->nexact += !w->exact;
-        int or = w_sign_o(w, pr, o, a, b, c, k);
-        zero |= or == 0;
-        if (or <= 0 || (best != W_NONE && !w_conflicts(w, pr, cell, K, k))) continue;
-        best = cell[3] = k;
-        w_cofactors(K, P, m);
-    }
-    return best == W_NONE && zero ? W_SCAN : best;
 }
 
 /* Whether every point but a, b, c is surely behind facet (a, b, c) of
@@ -894,19 +869,6 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
  * (a facet without a point beyond, a triangle met from the wrong side or
  * by a third cell, a fill too large).                                    */
-/* The scans' cell on open finite facet (a, b, c): wrap_scan, with the
- * shifted lifts when it asks, and for a hull vertex the infinite vertex
- * when no point is beyond.                                              */
-static uint32_t w_scan_facet(dd_del *d, struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
-{
-    uint32_t p = wrap_scan(w, &d->qdt->pred, a, b, c);
-    if (p == W_SHIFT) {
-        w_shift(w);
-        p = wrap_scan(w, &d->qdt->pred, a, b, c);
-    }
-    return p == W_NONE && d->on_hull ? w->n : p;
-}
-
 static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
     dd_tri *x = d->qdt;
@@ -939,13 +901,17 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             int unsure;
             w_pencil(w, a, b, e, mb, N, T);
             p = wrap_guess(w, a, N, T, &unsure);
-            if (unsure && p != W_TIE) p = w_guess_unsure(w, &x->pred, a, b, e, mb, N, p);
-            if (p == W_SCAN) {
-                p = w_scan_facet(d, w, a, b, e);
-                w_pencil(w, a, b, e, mb, N, T);      /* the lifts may be shifted */
-            } else if (p == W_NONE && d->on_hull && (unsure || w_all_behind(w, a, N))) p = inf;
+            /* points of unsure orientation: decided exactly, each beyond
+             * compared with the guess's choice (wrap_scan_exact)       */
+            if (unsure && p != W_TIE) p = wrap_scan_exact(w, &x->pred, a, b, e, mb, p, 1);
+            if (p == W_NONE && d->on_hull && (unsure || w_all_behind(w, a, N))) p = inf;
         } else {
-            p = w_scan_facet(d, w, a, b, e);
+            p = wrap_scan(w, &x->pred, a, b, e);
+            if (p == W_SHIFT) {
+                w_shift(w);
+                p = wrap_scan(w, &x->pred, a, b, e);
+            }
+            if (p == W_NONE && d->on_hull) p = inf;
         }
         if (p == W_BAIL) {
             *outcome = W_DECLINED;
@@ -1088,12 +1054,12 @@ dd_status dd_wrap_fill(dd_del *d, int *declined)
     /* Guess, then prove (filters on).  The guessed fill takes for each
      * finite facet the point of least t/o beyond it (wrap_guess: one pass,
      * no check against the other points; points of unsure orientation
-     * decided and compared with it by w_guess_unsure), or, for a hull
+     * decided and compared with it by wrap_scan_exact), or, for a hull
      * vertex, the infinite vertex when every other point is behind the
-     * facet (w_all_behind, or w_guess_unsure's W_NONE); facets through the
-     * infinite vertex get the Jarvis step of the scans (wrap_scan_inf),
-     * and a finite facet with points in its plane but none beyond the
-     * scan's step (W_SCAN), both certified.  The guess is kept when
+     * facet (w_all_behind, or wrap_scan_exact with the flat-hull check
+     * of points in its plane, w_flat_hull); facets through the infinite
+     * vertex get the Jarvis step of the scans (wrap_scan_inf), which is
+     * certified.  The guess is kept when
      *  - each finite cell is positively oriented (its point beyond by the
      *    filter, or exactly), each facet between two cells is met from
      *    opposite sides, and the link

@@ -631,7 +631,7 @@ int main(int argc, char **argv)
         wrap_guess_course(&st, "uniform-2000", p, np, -1, small ? 40 : 150, 1);
         free(p);
         /* proved; since the guess decides points of unsure orientation
-         * (w_guess_unsure) it is refuted on 2 of 300 vertices only, so
+         * (wrap.c, wrap_guess) it is refuted on 2 of 300 vertices only, so
          * the refuted side is asked of the sphere and the shells below  */
         p = gen("grid-perturbed", 512, &np);
         wrap_guess_course(&st, "grid-perturbed-512", p, np, -1, small ? 100 : 300, 1);
@@ -647,8 +647,8 @@ int main(int argc, char **argv)
         /* The moment curve at t = i/512, n = 300: each cavity has facets
          * with a point nearly in their plane, of unsure orientation, that
          * is the apex; left out of the guess it refuted every guess, and
-         * from 40 neighbours on the wrap declined (wrap.c,
-         * w_guess_unsure).  Every guess must now be proved.              */
+         * from 40 neighbours on the wrap declined (wrap.c, wrap_guess's
+         * *unsure).  Every guess must now be proved.                     */
         p = gen("moment", 300, &np);
         wrap_guess_course(&st, "moment-300", p, np, -1, small ? 2 : 6, 5);
         free(p);
@@ -666,7 +666,7 @@ int main(int argc, char **argv)
      * Deleting a vertex of that face, the guess meets finite facets in
      * the plane z = 0 with points in it and none beyond, which are hull
      * facets only if the coplanar in-circle rules allow: the scan's step
-     * decides them (wrap.c, w_guess_unsure's W_SCAN, w_flat_hull).      */
+     * decides them (wrap.c, the guess's wrap_scan_exact, w_flat_hull). */
     {
         uint32_t np;
         double *p = gen("uniform", small ? 300 : 600, &np);

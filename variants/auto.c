@@ -19,7 +19,7 @@
  * holds (median of 5 deletions per vertex, 3 to 12 vertices, gift-wrap
  * vs grr-neighbor: moment n = 256, degree 256: 115-141 vs 161-171 us;
  * helix n = 16000, degree 241-286: 116-164 vs 184-209 us).  Since the
- * guess decides the points of unsure orientation (w_guess_unsure) it
+ * guess decides the points of unsure orientation (wrap.c, wrap_guess) it
  * holds on the nearly degenerate curves too, where it was refuted and the
  * wrap declined (helix n = 64000, degree 404-563, and moment n = 264-512:
  * a point nearly in a facet's plane is its apex), so wrapping stays ahead
