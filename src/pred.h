@@ -65,6 +65,26 @@ static inline double dd_max3(double a, double b, double c)
     return m > c ? m : c;
 }
 
+/* The 3x3 determinant of rows pq, pr, ps in CGAL's evaluation order
+ * (its determinant(a00..a22)): the filter's value, and the plain
+ * floating-point orientation of dd_orient3d_det.                         */
+static inline double dd_det3_rows(double pqx, double pqy, double pqz, double prx, double pry, double prz,
+                                  double psx, double psy, double psz)
+{
+    double m01 = pqx * pry - prx * pqy;
+    double m02 = pqx * psy - psx * pqy;
+    double m12 = prx * psy - psx * pry;
+    return m01 * psz - m02 * prz + m12 * pqz;
+}
+
+/* orient3d(p, q, r, s) in plain floating point, unfiltered: its sign is
+ * only a guess (CGAL's inexact_orientation; mesh.c's first walk).      */
+static inline double dd_orient3d_det(const double *p, const double *q, const double *r, const double *s)
+{
+    return dd_det3_rows(q[0] - p[0], q[1] - p[1], q[2] - p[2], r[0] - p[0], r[1] - p[1], r[2] - p[2],
+                        s[0] - p[0], s[1] - p[1], s[2] - p[2]);
+}
+
 static inline int dd_orient3d_filter(dd_pred *ctx, const double *p, const double *q,
                                      const double *r, const double *s)
 {
@@ -81,11 +101,7 @@ static inline int dd_orient3d_filter(dd_pred *ctx, const double *p, const double
     if ((a = fabs(psy)) > maxy) maxy = a;
     if ((a = fabs(prz)) > maxz) maxz = a;
     if ((a = fabs(psz)) > maxz) maxz = a;
-    /* CGAL's determinant(a00..a22) evaluation order */
-    double m01 = pqx * pry - prx * pqy;
-    double m02 = pqx * psy - psx * pqy;
-    double m12 = prx * psy - psx * pry;
-    double det = m01 * psz - m02 * prz + m12 * pqz;
+    double det = dd_det3_rows(pqx, pqy, pqz, prx, pry, prz, psx, psy, psz);
     double eps = 5.1107127829973299e-15 * maxx * maxy * maxz;
     double lo = dd_min3(maxx, maxy, maxz), hi = dd_max3(maxx, maxy, maxz);
     if (lo < 1e-97) {
