@@ -34,9 +34,12 @@ for ds in uniform sphere bunny; do
     build/dtdel bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out results/cold || rc=$?
 done
 build/summarize results/cold results/cold/*.csv
-n=1000000
-[ "$mode" = quick ] && n=200000
+n=1000000 nh=16000
+[ "$mode" = quick ] && n=200000 nh=4000
 build/dtdel build-bench "$n" >results/build.txt || rc=$?
+# and on a curve, where point location is most of the work
+echo >>results/build.txt
+build/dtdel build-bench "$nh" --dataset helix >>results/build.txt || rc=$?
 cat results/build.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
