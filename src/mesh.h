@@ -284,8 +284,10 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
  * q[kd] = q's point).  q is permuted.                                    */
 int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const double *p);
 
-/* Visibility walk from cell `start` towards p; stops in a finite cell whose
- * closure holds p, or in the first outer cell entered (which p sees).     */
+/* Point location from cell `start`: a walk on plain floating-point
+ * orientations towards p (mesh.c, locate_inexact), then the exact
+ * visibility walk; stops in a finite cell whose closure holds p, or in
+ * the first outer cell entered (which p sees).                          */
 dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out);
 
 /* Bowyer-Watson in three steps, shared by construction and deletion:
