@@ -567,10 +567,11 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
  * guess's choice: on nearly degenerate cavities (the helix, the moment
  * curve) a point nearly in a facet's plane can be its apex, and leaving
  * it out refuted the whole guess (helix n = 64000, degree 563: at cell
- * 315 of 567, on 5 of 6 vertices), which from 40 neighbours declines.  Counting them costs 3 of the loop's ~27 vector
- * operations; the non-candidates' quotient being NaN rather than +inf
- * (never equal to the least, nor less) saved one back: moment n = 256,
- * 80.4 -> 87.4 -> 82.8 us a deletion.                                   */
+ * 315 of 567, on 5 of 6 vertices), which from 40 neighbours declines.
+ * Counting them costs 3 of the loop's ~27 vector operations; the
+ * non-candidates' quotient being NaN rather than +inf (never equal to
+ * the least, nor less) saved one back: moment n = 256, 80.4 -> 87.4 ->
+ * 82.8 us a deletion.                                                   */
 #if defined(__GNUC__) && defined(__x86_64__)
 #define W_AVX2 1
 #include <immintrin.h>

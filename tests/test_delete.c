@@ -285,12 +285,10 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     dd_cgal_reinsert(g, v);
     dd_status s = dd_delete(t, v, variant);
     canon now = ours(t);
-    dd_delete_stats ds_;
-    dd_last_delete_stats(t, &ds_);
-    *out = ds_;
-    course[ds_.wrap]++;
+    dd_last_delete_stats(t, out);
+    course[out->wrap]++;
     if ((s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) && (*bad)++ == 0)
-        snprintf(why, nwhy, "deleting %u (course %d): %s", v, ds_.wrap,
+        snprintf(why, nwhy, "deleting %u (course %d): %s", v, out->wrap,
                  s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
     free(now.a);
     free(ref.a);
