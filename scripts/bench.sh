@@ -30,6 +30,7 @@ build/dtdel bench --mode "$mode" --scale "$scale" --out results --phases results
 # run with branch predictors and caches trained by the repetitions of the
 # same deletion: results/cold/summary.md, low-degree datasets only.
 mkdir -p results/cold
+{ cat results/meta.txt; echo "reps: 1 (each deletion timed once)"; } >results/cold/meta.txt
 for ds in uniform sphere bunny; do
     build/dtdel bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out results/cold || rc=$?
 done
