@@ -262,7 +262,10 @@ static const command commands[] = {
     {"time", "time FILE --vertex I --variant NAME [--repeat R]",
      "Prints one number: the median microseconds of deleting vertex I alone\n"
      "over R repetitions (default 5); the vertex is re-inserted, untimed,\n"
-     "between repetitions, so each starts from DT(S).", cmd_time},
+     "between repetitions, so each starts from DT(S).  NAME: an engine\n"
+     "strategy, cgal or cgal-rnd; or insert, our re-insertion of vertex I\n"
+     "alone, each repetition deleting it untimed first (the bench's insert\n"
+     "row: deleting should cost at most twice that).", cmd_time},
     {"check", "check FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]",
      "Deletes K sampled vertices (default 20), each from DT(S), with each\n"
      "variant (default all, cgal-rnd included), and compares every result\n"

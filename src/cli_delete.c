@@ -224,9 +224,12 @@ int cmd_time(int argc, char **argv)
         else return usage_error("time", "unexpected argument '%s'", argv[i]);
     }
     if (!file || v == UINT64_MAX || !var) return usage_error("time", "missing FILE, --vertex or --variant%s", "");
-    row r;
-    if (!find_row(var, &r)) {
-        fprintf(stderr, "dtdel time: unknown variant '%s' (see dtdel variants)\n", var);
+    /* "insert": the bench's insert row, our re-insertion of the vertex
+     * (deleted untimed by the default strategy before each repetition). */
+    const int insert = !strcmp(var, "insert");
+    row r = {"auto", ROW_ENGINE};
+    if (!insert && !find_row(var, &r)) {
+        fprintf(stderr, "dtdel time: unknown variant '%s' (see dtdel variants, or insert)\n", var);
         return EXIT_INPUT;
     }
     dd_tri *t;
@@ -236,7 +239,22 @@ int cmd_time(int argc, char **argv)
     int rc = load_both("time", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
     if (rc) return rc;
     double *us = malloc(repeat * sizeof *us);
-    for (uint64_t k = 0; k < repeat && !rc && us; k++) {
+    for (uint64_t k = 0; k < repeat && insert && us; k++) {
+        if (dd_delete(t, (uint32_t)v, NULL) != DD_OK) {
+            fprintf(stderr, "dtdel time: cannot delete vertex %u: %s\n", (uint32_t)v, dd_errmsg(t));
+            rc = EXIT_INPUT;
+            break;
+        }
+        double t0 = now_seconds();
+        dd_status st = dd_reinsert(t, (uint32_t)v);
+        us[k] = 1e6 * (now_seconds() - t0);
+        if (st != DD_OK) {
+            fprintf(stderr, "dtdel time: reinserting vertex %u failed: %s\n", (uint32_t)v, dd_errmsg(t));
+            rc = EXIT_INPUT;
+            break;
+        }
+    }
+    for (uint64_t k = 0; k < repeat && !insert && !rc && us; k++) {
         double t0 = now_seconds();
         int bad = row_delete(&r, t, g, (uint32_t)v, k + 1);
         double t1 = now_seconds();

@@ -113,6 +113,13 @@ for v in $("$DTDEL" variants | awk '{print $1}'); do
     if echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli/time-$v"; else
         echo "FAIL cli/time-$v: printed '$out' $(head -c 200 "$tmp/err")"; fi
 done
+# the insert row: our re-insertion of the vertex, timed alone
+out=$("$DTDEL" time "$tmp/m.xyz" --vertex 7 --variant insert --repeat 3 2>"$tmp/err"); rc=$?
+if [ $rc -eq 0 ] && echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli/time-insert"; else
+    echo "FAIL cli/time-insert: rc $rc, printed '$out' $(head -c 200 "$tmp/err")"; fi
+expect time-insert-unknown-vertex 1 "cannot delete vertex 500.*no point 500" "$DTDEL" time "$tmp/cs.xyz" --vertex 500 --variant insert
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/tet.xyz"
+expect time-insert-tetrahedron 1 "at least 4" "$DTDEL" time "$tmp/tet.xyz" --vertex 0 --variant insert
 out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 8 --seed 4 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ' 8/8 matched')" -eq "$("$DTDEL" variants | wc -l)" ]; then
     echo "ok cli/check-all"; else echo "FAIL cli/check-all: rc $rc: $out"; fi
