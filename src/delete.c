@@ -356,19 +356,22 @@ static dd_status sew(dd_del *d)
     s = dd_reserve_cells(t, (uint32_t)nf);
     if (s != DD_OK) return s;
 
-    /* Point of no return: copy, glue, recycle. */
-    for (size_t k = 0; k < nf; k++) {
-        uint32_t r = d->fill.a[k], m = dd_new_cell(t);
-        memcpy(t->tv + 4 * (size_t)m, x->tv + 4 * (size_t)r, 4 * sizeof *t->tv);
-        d->cellmap.a[r] = m;
-    }
+    /* Point of no return: recycle, copy, glue.  The star's cells go first
+     * (in reverse, so the free list gives them back in the star's order),
+     * so that the fill takes their places: where the deletion is, in
+     * memory, whatever the free list held before.                        */
     int finite_star = 0;
-    for (size_t k = 0; k < d->star.n; k++) {
+    for (size_t k = d->star.n; k-- > 0;) {
         uint32_t c = d->star.a[k];
         if (!dd_is_infinite_cell(t, c)) finite_star++;
         dd_kill_cell(t, c);
     }
     t->nfinite -= (uint32_t)finite_star;
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k], m = dd_new_cell(t);
+        memcpy(t->tv + 4 * (size_t)m, x->tv + 4 * (size_t)r, 4 * sizeof *t->tv);
+        d->cellmap.a[r] = m;
+    }
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = d->cellmap.a[r];
         for (uint32_t j = 0; j < 4; j++) {
