@@ -6,6 +6,7 @@
 #   3. build/summarize          -> results/summary.md, results/plotdata/
 #   4. scripts/plots.sh         -> results/*.png
 #   (2b. build/dtdel bench --reps 1 on uniform, sphere, bunny -> results/cold/)
+#   (2c. build/dtdel build-bench -> results/build.txt, seq-bench -> results/sequence.txt)
 mode=${1:-full}
 scale=${2:-1}
 set -e
@@ -42,6 +43,14 @@ build/dtdel build-bench "$n" >results/build.txt || rc=$?
 echo >>results/build.txt
 build/dtdel build-bench "$nh" --dataset helix >>results/build.txt || rc=$?
 cat results/build.txt
+# whole workloads: a random sequence of deletions, no repetition, cold
+# caches (seq-bench), on uniform points and on the degenerate grid
+ns=1000000 ng=27000
+[ "$mode" = quick ] && ns=200000 ng=8000
+build/dtdel seq-bench "$ns" --fraction 0.1 >results/sequence.txt || rc=$?
+echo >>results/sequence.txt
+build/dtdel seq-bench "$ng" --dataset grid --fraction 0.5 >>results/sequence.txt || rc=$?
+cat results/sequence.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
 sh scripts/plots.sh results

@@ -6,6 +6,7 @@
  *   dtdel tets FILE                  canonical DT(points of FILE)
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
+ *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
 #include "cli.h"
 
@@ -287,6 +288,13 @@ static const command commands[] = {
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
      "range insert in the same run; prints points/s, the ratio, bytes per\n"
      "cell, and whether the two triangulations are identical.", cmd_build_bench},
+    {"seq-bench", "seq-bench [N] [--dataset NAME] [--fraction F] [--variant NAME] [--seed S]",
+     "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL,\n"
+     "then deletes the same seeded random sequence of a fraction F of the\n"
+     "vertices (default 0.1, at most 0.9) one after another, no re-insertion,\n"
+     "with strategy NAME (default auto) and with CGAL's remove(); prints each\n"
+     "engine's time for the whole sequence, the ratio, and whether the two\n"
+     "final triangulations are identical (exit 1 if not).", cmd_seq_bench},
     {NULL, NULL, NULL, NULL}};
 
 static const command *find_command(const char *name)

@@ -53,6 +53,7 @@ int cmd_delete(int argc, char **argv);
 int cmd_time(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
+int cmd_seq_bench(int argc, char **argv);
 
 
 #endif

@@ -343,3 +343,114 @@ int cmd_bench(int argc, char **argv)
     fprintf(stderr, "  bench: %ld mismatches%s\n", mismatches, mismatches ? " -- A BUG" : "");
     return mismatches ? EXIT_INPUT : 0;
 }
+
+/* ---- seq-bench ------------------------------------------------------------- */
+
+/* `dtdel seq-bench`: the whole-workload companion of the per-vertex bench.
+ * DT(S) is built by both engines (untimed: build-bench times that), then
+ * the same seeded random sequence of vertices, a fraction of them, is
+ * deleted one after another, with no re-insertion and no repetition, so
+ * caches and branch predictors see a real workload rather than the same
+ * deletion again; each engine's whole sequence is timed, and the two
+ * final triangulations are compared.                                     */
+int cmd_seq_bench(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("seq-bench");
+    const char *dataset = "uniform", *var = "auto";
+    uint64_t n = 1000000, seed = 1;
+    double frac = 0.1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--seed")) {
+            if (++i >= argc || parse_u64(argv[i], &seed))
+                return usage_error("seq-bench", "--seed needs a non-negative integer%s", "");
+        } else if (!strcmp(argv[i], "--dataset")) {
+            if (++i >= argc) return usage_error("seq-bench", "--dataset needs a name%s", "");
+            dataset = argv[i];
+        } else if (!strcmp(argv[i], "--variant")) {
+            if (++i >= argc) return usage_error("seq-bench", "--variant needs a name%s", "");
+            var = argv[i];
+        } else if (!strcmp(argv[i], "--fraction")) {
+            char *end = NULL;
+            if (++i >= argc) return usage_error("seq-bench", "--fraction needs a number%s", "");
+            frac = strtod(argv[i], &end);
+            if (*end || !(frac > 0) || frac > 0.9)
+                return usage_error("seq-bench", "--fraction wants a number in (0, 0.9], got '%s'", argv[i]);
+        } else if (parse_u64(argv[i], &n) || n > UINT32_MAX / 8) {
+            return usage_error("seq-bench", "N must be a non-negative integer, got '%s'", argv[i]);
+        }
+    }
+    row r;
+    if (!find_row(var, &r) || r.kind != ROW_ENGINE) {
+        fprintf(stderr, "dtdel seq-bench: unknown engine strategy '%s' (see dtdel variants)\n", var);
+        return EXIT_INPUT;
+    }
+    double *xyz;
+    uint32_t np;
+    char msg[512];
+    if (dd_gen(dataset, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel seq-bench: %s\n", msg);
+        return EXIT_INPUT;
+    }
+    dd_tri *t = NULL;
+    if (dd_create(&t, xyz, np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel seq-bench: %s\n", msg);
+        free(xyz);
+        return EXIT_INPUT;
+    }
+    dd_cgal *g = dd_cgal_build(xyz, np);
+    uint32_t *seq = malloc((size_t)np * sizeof *seq);
+    if (!g || !seq) {
+        fprintf(stderr, "dtdel seq-bench: %s\n", g ? "out of memory" : "CGAL could not build DT(S)");
+        free(seq); free(xyz); dd_free(t); dd_cgal_free(g);
+        return EXIT_INPUT;
+    }
+    /* The vertices (duplicates merged away are not), shuffled by a seeded
+     * xorshift; the first k are deleted, leaving at least 5 vertices.    */
+    uint32_t nv = 0;
+    for (uint32_t i = 0; i < np; i++)
+        if (dd_is_vertex(t, i)) seq[nv++] = i;
+    uint64_t x = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+    for (uint32_t i = nv; i > 1; i--) {
+        x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+        uint32_t j = (uint32_t)((x >> 11) % i), s = seq[i - 1];
+        seq[i - 1] = seq[j];
+        seq[j] = s;
+    }
+    uint32_t k = (uint32_t)(frac * nv);
+    if (nv < 5 || k > nv - 5) k = nv < 5 ? 0 : nv - 5;
+    int rc = 0;
+    double t0 = now_seconds();
+    for (uint32_t i = 0; i < k && !rc; i++)
+        if (dd_delete(t, seq[i], var) != DD_OK) {
+            fprintf(stderr, "dtdel seq-bench: %s cannot delete vertex %u: %s\n", var, seq[i], dd_errmsg(t));
+            rc = EXIT_INPUT;
+        }
+    double t1 = now_seconds();
+    for (uint32_t i = 0; i < k && !rc; i++)
+        if (dd_cgal_remove(g, seq[i])) {
+            fprintf(stderr, "dtdel seq-bench: CGAL cannot delete vertex %u\n", seq[i]);
+            rc = EXIT_INPUT;
+        }
+    double t2 = now_seconds();
+    int same = 0;
+    if (!rc) {
+        int32_t *a = NULL, *b = NULL;
+        size_t na = 0, nb = 0;
+        if (dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(g, &b, &nb))
+            same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+        free(a);
+        free(b);
+        printf("dataset %s, n = %u, %u of %u vertices deleted in sequence (seed %llu), %zu cells left\n", dataset, np,
+               k, nv, (unsigned long long)seed, dd_num_tets(t));
+        printf("dtdel (%s): %.3f s, %.2f us a deletion\n", var, t1 - t0, k ? 1e6 * (t1 - t0) / k : 0.0);
+        printf("cgal:  %.3f s, %.2f us a deletion (%s)\n", t2 - t1, k ? 1e6 * (t2 - t1) / k : 0.0, dd_cgal_version());
+        printf("speed ratio dtdel/cgal: %.2f\n", t1 > t0 ? (t2 - t1) / (t1 - t0) : 0.0);
+        printf("identical to CGAL: %s\n", same ? "yes" : "NO");
+        if (!same) rc = EXIT_INPUT;
+    }
+    free(seq);
+    free(xyz);
+    dd_free(t);
+    dd_cgal_free(g);
+    return rc;
+}

@@ -120,6 +120,16 @@ if [ $rc -eq 0 ] && echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli
 expect time-insert-unknown-vertex 1 "cannot delete vertex 500.*no point 500" "$DTDEL" time "$tmp/cs.xyz" --vertex 500 --variant insert
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/tet.xyz"
 expect time-insert-tetrahedron 1 "at least 4" "$DTDEL" time "$tmp/tet.xyz" --vertex 0 --variant insert
+# seq-bench: half the vertices deleted in sequence, the final DT equal to CGAL's
+for args in "3000 --fraction 0.5" "1000 --dataset grid --fraction 0.9 --variant grr-neighbor" \
+            "500 --dataset cosphere --fraction 0.9 --variant gift-wrap"; do
+    name=$(echo "$args" | tr -s ' .' '--')
+    out=$("$DTDEL" seq-bench $args 2>&1); rc=$?
+    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE 'deleted in sequence'; then
+        echo "ok cli/seq-bench-$name"; else echo "FAIL cli/seq-bench-$name: rc $rc: $out"; fi
+done
+expect seq-bench-fraction 2 "fraction wants a number in" "$DTDEL" seq-bench 100 --fraction 2
+expect seq-bench-cgal-row 1 "unknown engine strategy 'cgal'" "$DTDEL" seq-bench 100 --variant cgal
 out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 8 --seed 4 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ' 8/8 matched')" -eq "$("$DTDEL" variants | wc -l)" ]; then
     echo "ok cli/check-all"; else echo "FAIL cli/check-all: rc $rc: $out"; fi
