@@ -172,11 +172,22 @@ static int cmd_cgal_tets(int argc, char **argv)
 
 /* ---- build-bench ---------------------------------------------------------- */
 
+static int cmp_seconds(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+#define BUILD_MAX_REPS 9
+
+/* Each engine builds R times, alternating (dtdel, CGAL, dtdel, ...), so
+ * that a slow spell of this shared machine hits both; the medians are
+ * compared, as the deletion bench compares medians.                     */
 static int cmd_build_bench(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("build-bench");
     const char *dataset = "uniform";
-    uint64_t n = 1000000, seed = 1;
+    uint64_t n = 1000000, seed = 1, reps = 3;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--seed")) {
             if (++i >= argc || parse_u64(argv[i], &seed))
@@ -184,6 +195,9 @@ static int cmd_build_bench(int argc, char **argv)
         } else if (!strcmp(argv[i], "--dataset")) {
             if (++i >= argc) return usage_error("build-bench", "--dataset needs a name%s", "");
             dataset = argv[i];
+        } else if (!strcmp(argv[i], "--reps")) {
+            if (++i >= argc || parse_u64(argv[i], &reps) || reps < 1 || reps > BUILD_MAX_REPS)
+                return usage_error("build-bench", "--reps needs an integer from 1 to 9%s", "");
         } else if (parse_u64(argv[i], &n) || n > UINT32_MAX / 8) {
             return usage_error("build-bench", "N must be a non-negative integer, got '%s'", argv[i]);
         }
@@ -195,18 +209,27 @@ static int cmd_build_bench(int argc, char **argv)
         fprintf(stderr, "dtdel build-bench: %s\n", msg);
         return EXIT_INPUT;
     }
-    double t0 = now_seconds();
-    dd_tri *t;
-    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
-    double t1 = now_seconds();
-    if (s != DD_OK) {
-        fprintf(stderr, "dtdel build-bench: %s\n", msg);
-        free(xyz);
-        return EXIT_INPUT;
+    double ours[BUILD_MAX_REPS], theirs[BUILD_MAX_REPS];
+    dd_tri *t = NULL;
+    dd_cgal *c = NULL;
+    for (uint64_t r = 0; r < reps; r++) {
+        dd_free(t);                          /* the last pair is compared */
+        dd_cgal_free(c);
+        t = NULL;
+        c = NULL;
+        double t0 = now_seconds();
+        dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
+        double t1 = now_seconds();
+        if (s != DD_OK) {
+            fprintf(stderr, "dtdel build-bench: %s\n", msg);
+            free(xyz);
+            return EXIT_INPUT;
+        }
+        c = dd_cgal_build(xyz, np);
+        double t2 = now_seconds();
+        ours[r] = t1 - t0;
+        theirs[r] = t2 - t1;
     }
-    double t2 = now_seconds();
-    dd_cgal *c = dd_cgal_build(xyz, np);
-    double t3 = now_seconds();
     int same = 0;
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
@@ -214,10 +237,17 @@ static int cmd_build_bench(int argc, char **argv)
         same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
     free(a);
     free(b);
+    qsort(ours, reps, sizeof *ours, cmp_seconds);
+    qsort(theirs, reps, sizeof *theirs, cmp_seconds);
+    size_t m = (size_t)reps / 2;
+    double to = reps % 2 ? ours[m] : 0.5 * (ours[m - 1] + ours[m]);
+    double tc = reps % 2 ? theirs[m] : 0.5 * (theirs[m - 1] + theirs[m]);
     printf("dataset %s, n = %u, %zu cells (%zu finite)\n", dataset, np, dd_num_tets(t), dd_num_finite_tets(t));
-    printf("dtdel: %.3f s, %.0f points/s\n", t1 - t0, np / (t1 - t0));
-    printf("cgal:  %.3f s, %.0f points/s (%s)\n", t3 - t2, np / (t3 - t2), dd_cgal_version());
-    printf("speed ratio dtdel/cgal: %.2f\n", (t3 - t2) / (t1 - t0));
+    printf("runs: %u each, alternated; medians (fastest-slowest)\n", (unsigned)reps);
+    printf("dtdel: %.3f s, %.0f points/s (%.3f-%.3f s)\n", to, np / to, ours[0], ours[reps - 1]);
+    printf("cgal:  %.3f s, %.0f points/s (%.3f-%.3f s) (%s)\n", tc, np / tc, theirs[0], theirs[reps - 1],
+           dd_cgal_version());
+    printf("speed ratio dtdel/cgal: %.2f\n", tc / to);
     printf("bytes per cell: %.1f (all arrays, capacity included)\n",
            (double)dd_memory_bytes(t) / (double)dd_num_tets(t));
     printf("identical to CGAL: %s\n", same ? "yes" : "NO");
@@ -284,10 +314,11 @@ static const command commands[] = {
      "--reps 1 times only first runs (cold branch predictors and caches).\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
      "--phases DIR merges such a run's phase columns into this one.", cmd_bench},
-    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S]",
+    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
-     "range insert in the same run; prints points/s, the ratio, bytes per\n"
-     "cell, and whether the two triangulations are identical.", cmd_build_bench},
+     "range insert in the same run, R times each (default 3, at most 9),\n"
+     "alternated; prints the median times in points/s, their ratio, bytes\n"
+     "per cell, and whether the two triangulations are identical.", cmd_build_bench},
     {"seq-bench", "seq-bench [N] [--dataset NAME] [--fraction F] [--variant NAME] [--seed S]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL,\n"
      "then deletes the same seeded random sequence of a fraction F of the\n"

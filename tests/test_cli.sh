@@ -120,6 +120,14 @@ if [ $rc -eq 0 ] && echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli
 expect time-insert-unknown-vertex 1 "cannot delete vertex 500.*no point 500" "$DTDEL" time "$tmp/cs.xyz" --vertex 500 --variant insert
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/tet.xyz"
 expect time-insert-tetrahedron 1 "at least 4" "$DTDEL" time "$tmp/tet.xyz" --vertex 0 --variant insert
+# build-bench: both engines' DT(S) identical, on generic, curve and degenerate points
+for args in "3000 --reps 2" "2000 --dataset helix --reps 1" "1000 --dataset grid --reps 1"; do
+    name=$(echo "$args" | tr -s ' ' '-')
+    out=$("$DTDEL" build-bench $args 2>&1); rc=$?
+    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE '^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'; then
+        echo "ok cli/build-bench-$name"; else echo "FAIL cli/build-bench-$name: rc $rc: $out"; fi
+done
+expect build-bench-reps 2 "reps needs an integer from 1 to 9" "$DTDEL" build-bench 100 --reps 10
 # seq-bench: half the vertices deleted in sequence, the final DT equal to CGAL's
 for args in "3000 --fraction 0.5" "1000 --dataset grid --fraction 0.9 --variant grr-neighbor" \
             "500 --dataset cosphere --fraction 0.9 --variant gift-wrap"; do
