@@ -200,8 +200,9 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
 
 /* ---- the first tetrahedron ----------------------------------------------- */
 
-/* Moves four affinely independent points to ids[0..3] (scanning in order). */
-static dd_status pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n)
+/* Moves four affinely independent points to ids[0..3] (scanning in order;
+ * the points are distinct).  mesh.h.                                      */
+dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n)
 {
     if (n < 4)
         return dd_fail(t, DD_ERR_TOO_FEW, "need at least 4 distinct points, got %u", n);
@@ -258,7 +259,7 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     uint32_t m = 0;
     s = dedup(t, xyz, n, first, ids, &m);
     if (s == DD_OK) s = brio_order(xyz, ids, m);
-    if (s == DD_OK) s = pick_simplex(t, xyz, ids, m);
+    if (s == DD_OK) s = dd_pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
     if (s != DD_OK) { free(ids); return report(t, s, msg, msglen); }
     t->np = n;

@@ -282,10 +282,12 @@ static const command commands[] = {
      ".off; input index = 0-based order of the points in the file.", cmd_tets},
     {"cgal-tets", "cgal-tets FILE",
      "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
-    {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats]",
+    {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats] [--set]",
      "Deletes the input vertices I, J, ... in that order from DT(points in\n"
      "FILE) and writes the canonical form (as tets).  NAME: an engine\n"
      "strategy (dtdel variants), cgal or cgal-rnd; default: the fastest.\n"
+     "--set: as one set (dd_delete_set: the engine's own order, all or\n"
+     "nothing).\n"
      "--stats: per deletion on stderr, cells built, fallbacks, location tests,\n"
      "link deletions by degree, gift wrapping's course and lifts (integer:\n"
      "every test exact in doubles) and its tests left to the exact\n"
@@ -324,8 +326,9 @@ static const command commands[] = {
      "then deletes the same seeded random sequence of a fraction F of the\n"
      "vertices (default 0.1, at most 0.9) one after another, no re-insertion,\n"
      "with strategy NAME (default auto) and with CGAL's remove(); prints each\n"
-     "engine's time for the whole sequence, the ratio, and whether the two\n"
-     "final triangulations are identical (exit 1 if not).", cmd_seq_bench},
+     "engine's time for the whole sequence, the ratio, the time of deleting\n"
+     "the same points as one set (dd_delete_set), and whether the final\n"
+     "triangulations are identical (exit 1 if not).", cmd_seq_bench},
     {NULL, NULL, NULL, NULL}};
 
 static const command *find_command(const char *name)

@@ -347,12 +347,80 @@ int cmd_bench(int argc, char **argv)
 /* ---- seq-bench ------------------------------------------------------------- */
 
 /* `dtdel seq-bench`: the whole-workload companion of the per-vertex bench.
- * DT(S) is built by both engines (untimed: build-bench times that), then
- * the same seeded random sequence of vertices, a fraction of them, is
- * deleted one after another, with no re-insertion and no repetition, so
- * caches and branch predictors see a real workload rather than the same
- * deletion again; each engine's whole sequence is timed, and the two
- * final triangulations are compared.                                     */
+ * A fraction of the vertices is deleted one after another, with no
+ * re-insertion and no repetition, so caches and branch predictors see a
+ * real workload rather than the same deletion again.  Each run starts
+ * from its own DT(S), built untimed (build-bench times construction), and
+ * times its deletions whole; every run's final triangulation must equal
+ * CGAL's.  The runs: the same seeded random order for both engines; the
+ * same points in a spatial order (Morton order of the points, computed
+ * here, so neither engine's internals) for both; and our dd_delete_set,
+ * which takes its own order (CGAL's range remove() keeps the order it is
+ * given, so its spatial-order run is the fair comparison there).        */
+
+/* Morton key of p in the box lo..hi: 21 bits an axis, interleaved. */
+static uint64_t morton_key(const double *p, const double lo[3], const double hi[3])
+{
+    uint64_t key = 0, c[3];
+    for (int a = 0; a < 3; a++) {
+        double f = hi[a] > lo[a] ? (p[a] - lo[a]) / (hi[a] - lo[a]) : 0;
+        c[a] = (uint64_t)(f * 2097151.0);
+    }
+    for (int b = 20; b >= 0; b--)
+        for (int a = 0; a < 3; a++) key = key << 1 | (c[a] >> b & 1);
+    return key;
+}
+
+typedef struct keyed { uint64_t key; uint32_t v; } keyed;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    const keyed *x = a, *y = b;
+    return x->key < y->key ? -1 : x->key > y->key ? 1 : (x->v > y->v) - (x->v < y->v);
+}
+
+/* One run: deletes order[0..k) from DT(S) (t, or a fresh one; freed),
+ * with strategy var one at a time, or as one set, or by CGAL (var NULL).
+ * Seconds, or -1 with a message; *canon: the final canonical form.      */
+static double seq_run(const double *xyz, uint32_t np, dd_tri *t, const uint32_t *order, uint32_t k,
+                      const char *var, int set, int32_t **canon, size_t *nc)
+{
+    char msg[512];
+    double secs = -1;
+    *canon = NULL;
+    if (!var) {
+        dd_cgal *g = dd_cgal_build(xyz, np);
+        if (!g) { fprintf(stderr, "dtdel seq-bench: CGAL could not build DT(S)\n"); return -1; }
+        double t0 = now_seconds();
+        uint32_t i = 0;
+        while (i < k && !dd_cgal_remove(g, order[i])) i++;
+        secs = now_seconds() - t0;
+        if (i < k) { fprintf(stderr, "dtdel seq-bench: CGAL cannot delete vertex %u\n", order[i]); secs = -1; }
+        if (secs >= 0 && dd_cgal_canonical(g, canon, nc)) secs = -1;
+        dd_cgal_free(g);
+        return secs;
+    }
+    if (!t && dd_create(&t, xyz, np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel seq-bench: %s\n", msg);
+        return -1;
+    }
+    double t0 = now_seconds();
+    dd_status s = DD_OK;
+    uint32_t i = 0;
+    if (set) s = dd_delete_set(t, order, k, var);
+    else
+        while (i < k && (s = dd_delete(t, order[i], var)) == DD_OK) i++;
+    secs = now_seconds() - t0;
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel seq-bench: %s cannot delete %s%u: %s\n", var, set ? "the set, " : "vertex ",
+                set ? k : order[i], dd_errmsg(t));
+        secs = -1;
+    }
+    if (secs >= 0 && dd_canonical(t, canon, nc) != DD_OK) secs = -1;
+    dd_free(t);
+    return secs;
+}
+
 int cmd_seq_bench(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("seq-bench");
@@ -397,60 +465,73 @@ int cmd_seq_bench(int argc, char **argv)
         free(xyz);
         return EXIT_INPUT;
     }
-    dd_cgal *g = dd_cgal_build(xyz, np);
-    uint32_t *seq = malloc((size_t)np * sizeof *seq);
-    if (!g || !seq) {
-        fprintf(stderr, "dtdel seq-bench: %s\n", g ? "out of memory" : "CGAL could not build DT(S)");
-        free(seq); free(xyz); dd_free(t); dd_cgal_free(g);
+    uint32_t *rnd = malloc((size_t)np * sizeof *rnd), *spa = malloc((size_t)np * sizeof *spa);
+    keyed *kv = malloc((size_t)np * sizeof *kv);
+    if (!rnd || !spa || !kv) {
+        fprintf(stderr, "dtdel seq-bench: out of memory\n");
+        free(rnd); free(spa); free(kv); free(xyz); dd_free(t);
         return EXIT_INPUT;
     }
     /* The vertices (duplicates merged away are not), shuffled by a seeded
      * xorshift; the first k are deleted, leaving at least 5 vertices.    */
     uint32_t nv = 0;
     for (uint32_t i = 0; i < np; i++)
-        if (dd_is_vertex(t, i)) seq[nv++] = i;
+        if (dd_is_vertex(t, i)) rnd[nv++] = i;
     uint64_t x = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
     for (uint32_t i = nv; i > 1; i--) {
         x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-        uint32_t j = (uint32_t)((x >> 11) % i), s = seq[i - 1];
-        seq[i - 1] = seq[j];
-        seq[j] = s;
+        uint32_t j = (uint32_t)((x >> 11) % i), s = rnd[i - 1];
+        rnd[i - 1] = rnd[j];
+        rnd[j] = s;
     }
     uint32_t k = (uint32_t)(frac * nv);
     if (nv < 5 || k > nv - 5) k = nv < 5 ? 0 : nv - 5;
+    /* the same points in Morton order */
+    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
+    for (uint32_t i = 0; i < np; i++)
+        for (int a = 0; a < 3; a++) {
+            double c = xyz[3 * (size_t)i + a];
+            lo[a] = c < lo[a] ? c : lo[a];
+            hi[a] = c > hi[a] ? c : hi[a];
+        }
+    for (uint32_t i = 0; i < k; i++) kv[i] = (keyed){morton_key(xyz + 3 * (size_t)rnd[i], lo, hi), rnd[i]};
+    qsort(kv, k, sizeof *kv, cmp_keyed);
+    for (uint32_t i = 0; i < k; i++) spa[i] = kv[i].v;
+    free(kv);
+    /* the runs: ours and CGAL's in random order, in Morton order, ours as a set */
+    const struct { const char *name; const uint32_t *order; int engine, set; } runs[] = {
+        {"random order", rnd, 1, 0}, {"random order", rnd, 0, 0}, {"Morton order", spa, 1, 0},
+        {"Morton order", spa, 0, 0}, {"one set (dd_delete_set, its own order)", rnd, 1, 1}};
+    enum { NRUN = 5 };
+    double secs[NRUN];
+    int32_t *canon[NRUN] = {NULL};
+    size_t nc[NRUN] = {0};
     int rc = 0;
-    double t0 = now_seconds();
-    for (uint32_t i = 0; i < k && !rc; i++)
-        if (dd_delete(t, seq[i], var) != DD_OK) {
-            fprintf(stderr, "dtdel seq-bench: %s cannot delete vertex %u: %s\n", var, seq[i], dd_errmsg(t));
-            rc = EXIT_INPUT;
-        }
-    double t1 = now_seconds();
-    for (uint32_t i = 0; i < k && !rc; i++)
-        if (dd_cgal_remove(g, seq[i])) {
-            fprintf(stderr, "dtdel seq-bench: CGAL cannot delete vertex %u\n", seq[i]);
-            rc = EXIT_INPUT;
-        }
-    double t2 = now_seconds();
-    int same = 0;
+    for (int i = 0; i < NRUN && !rc; i++) {
+        secs[i] = seq_run(xyz, np, i == 0 ? t : NULL, runs[i].order, k, runs[i].engine ? var : NULL, runs[i].set,
+                          &canon[i], &nc[i]);
+        if (i == 0) t = NULL;                   /* seq_run freed it */
+        if (secs[i] < 0) rc = EXIT_INPUT;
+    }
+    dd_free(t);
+    int same = !rc;
+    for (int i = 0; i < NRUN && same; i++)
+        same = nc[i] == nc[1] && !memcmp(canon[i], canon[1], 4 * nc[1] * sizeof *canon[1]);
     if (!rc) {
-        int32_t *a = NULL, *b = NULL;
-        size_t na = 0, nb = 0;
-        if (dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(g, &b, &nb))
-            same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
-        free(a);
-        free(b);
-        printf("dataset %s, n = %u, %u of %u vertices deleted in sequence (seed %llu), %zu cells left\n", dataset, np,
-               k, nv, (unsigned long long)seed, dd_num_tets(t));
-        printf("dtdel (%s): %.3f s, %.2f us a deletion\n", var, t1 - t0, k ? 1e6 * (t1 - t0) / k : 0.0);
-        printf("cgal:  %.3f s, %.2f us a deletion (%s)\n", t2 - t1, k ? 1e6 * (t2 - t1) / k : 0.0, dd_cgal_version());
-        printf("speed ratio dtdel/cgal: %.2f\n", t1 > t0 ? (t2 - t1) / (t1 - t0) : 0.0);
+        double per = k ? 1e6 / k : 0;
+        printf("dataset %s, n = %u, %u of %u vertices deleted one after another (seed %llu), %zu cells left\n",
+               dataset, np, k, nv, (unsigned long long)seed, nc[1]);
+        for (int i = 0; i < NRUN; i++)
+            printf("%-40s %-6s %8.3f s, %7.2f us a deletion\n", runs[i].name, runs[i].engine ? "dtdel" : "cgal",
+                   secs[i], secs[i] * per);
+        printf("speed ratio dtdel/cgal: %.2f (random order), %.2f (Morton order), %.2f (set against Morton order)\n",
+               secs[1] / secs[0], secs[3] / secs[2], secs[3] / secs[4]);
         printf("identical to CGAL: %s\n", same ? "yes" : "NO");
         if (!same) rc = EXIT_INPUT;
     }
-    free(seq);
+    for (int i = 0; i < NRUN; i++) free(canon[i]);
+    free(rnd);
+    free(spa);
     free(xyz);
-    dd_free(t);
-    dd_cgal_free(g);
     return rc;
 }

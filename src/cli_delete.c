@@ -119,10 +119,12 @@ int cmd_delete(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("delete");
     const char *file = NULL, *vlist = NULL, *var = NULL;
-    int stats = 0;
+    int stats = 0, set = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--stats")) {
             stats = 1;
+        } else if (!strcmp(argv[i], "--set")) {
+            set = 1;
         } else if (!strcmp(argv[i], "--vertex")) {
             if (++i >= argc) return usage_error("delete", "--vertex needs a list I[,J,...]%s", "");
             vlist = argv[i];
@@ -147,9 +149,17 @@ int cmd_delete(int argc, char **argv)
     dd_cgal *g;
     double *pts;
     uint32_t np;
+    if (set && (r.kind != ROW_ENGINE || stats)) {
+        free(vs);
+        return usage_error("delete", "--set is for an engine strategy, without --stats%s", "");
+    }
     int rc = load_both("delete", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
     if (rc) { free(vs); return rc; }
-    for (size_t k = 0; k < nv && !rc; k++) {
+    if (set && dd_delete_set(t, vs, nv, r.name) != DD_OK) {
+        fprintf(stderr, "dtdel delete: cannot delete the set: %s\n", dd_errmsg(t));
+        rc = EXIT_INPUT;
+    }
+    for (size_t k = 0; k < nv && !rc && !set; k++) {
         if (r.kind == ROW_ENGINE) {
             dd_reset_counters(t);
             if (dd_delete(t, vs[k], r.name) != DD_OK) {

@@ -486,6 +486,83 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
     return delete_vertex(t, q, var);
 }
 
+#ifdef DD_TEST_BUILD
+/* Tests only: dd_delete_set fails at its deletion number k >= 0 as out of
+ * memory would, so that the tests see the re-insertions undo the others. */
+long dd_test_set_fail_at = -1;
+#endif
+
+static int cmp_u32(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* A set of deletions.  The result, DT of the points left, does not depend
+ * on the order (the perturbed DT is unique), so they go in vertex id
+ * order: the insertion order, BRIO rounds along a Hilbert curve, so that
+ * consecutive deletions work in nearby cells and points, in space and in
+ * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
+ * against a random order, scratch harness).  Checked before the first:
+ * every index a vertex and listed once, and the points left at least 4
+ * and not all in one plane; then no deletion of the sequence can be
+ * refused (each leaves a superset of them).  An unforeseen failure (out
+ * of memory) re-inserts those done, in reverse, which restores DT(S).   */
+dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+{
+    t->err[0] = 0;
+    const dd_variant *var = dd_find_variant(variant);
+    if (!var)
+        return dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
+    if (n == 0) return DD_OK;
+    if (n > t->nvert)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u vertices", n,
+                       t->nvert);
+    uint32_t *ids = malloc(n * sizeof *ids), *left = malloc((size_t)(t->nvert - n + 1) * sizeof *left);
+    dd_status s = ids && left ? DD_OK : dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    for (size_t k = 0; k < n && s == DD_OK; k++) s = resolve_vertex(t, vs[k], &ids[k]);
+    if (s == DD_OK) {
+        qsort(ids, n, sizeof *ids, cmp_u32);
+        for (size_t k = 1; k < n && s == DD_OK; k++)
+            if (ids[k] == ids[k - 1])
+                s = dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is listed twice", t->v2in[ids[k]]);
+    }
+    if (s == DD_OK && t->nvert - n < 4)
+        s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
+                    t->nvert, t->nvert - (uint32_t)n);
+    if (s == DD_OK) {                   /* the vertices left, in id order */
+        uint32_t m = 0;
+        size_t k = 0;
+        for (uint32_t v = 0; v < t->nvid; v++) {
+            if (t->vcell[v] == DD_NONE) continue;
+            if (k < n && ids[k] == v) { k++; continue; }
+            left[m++] = v;
+        }
+        if (dd_pick_simplex(t, t->xyz, left, m) != DD_OK)
+            s = dd_fail(t, DD_ERR_DIMENSION, "deleting these %zu points would leave only coplanar points", n);
+    }
+    size_t done = 0;
+    for (; done < n && s == DD_OK; done++) {
+#ifdef DD_TEST_BUILD
+        if ((long)done == dd_test_set_fail_at) { s = dd_fail(t, DD_ERR_NOMEM, "out of memory (test)"); continue; }
+#endif
+        s = delete_vertex(t, ids[done], var);
+    }
+    if (s != DD_OK && done > 0) {
+        done--;                         /* the one that failed is not done */
+        char why[sizeof t->err];
+        memcpy(why, t->err, sizeof why);
+        while (done > 0) {
+            uint32_t v = ids[--done];
+            if (dd_reinsert(t, t->v2in[v]) != DD_OK) break;
+        }
+        memcpy(t->err, why, sizeof why);
+    }
+    free(ids);
+    free(left);
+    return s;
+}
+
 /* Collects the star of input vertex v for the queries below. */
 dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
 {

@@ -306,6 +306,11 @@ dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
 /* The first tetrahedron v[0..3] (any orientation) and its four infinite
  * cells, in an empty t.  Room for 5 cells must be reserved.              */
 void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
+/* Moves four affinely independent points of the distinct points
+ * pts[3 ids[k]..], k < n, to ids[0..3], the first found scanning in order;
+ * DD_ERR_TOO_FEW, DD_ERR_COLLINEAR or DD_ERR_COPLANAR (with a message)
+ * when there are none.                                                   */
+dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n);
 
 /* Empties the cell arrays (keeps their capacity), O(1). */
 void dd_clear_cells(dd_tri *t);

@@ -133,7 +133,7 @@ for args in "3000 --fraction 0.5" "1000 --dataset grid --fraction 0.9 --variant 
             "500 --dataset cosphere --fraction 0.9 --variant gift-wrap"; do
     name=$(echo "$args" | tr -s ' .' '--')
     out=$("$DTDEL" seq-bench $args 2>&1); rc=$?
-    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE 'deleted in sequence'; then
+    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE 'deleted one after another'; then
         echo "ok cli/seq-bench-$name"; else echo "FAIL cli/seq-bench-$name: rc $rc: $out"; fi
 done
 expect seq-bench-fraction 2 "fraction wants a number in" "$DTDEL" seq-bench 100 --fraction 2

@@ -11,6 +11,10 @@
 #include "cgal/cgal_shim.h"
 #include "../datasets/datasets.h"
 
+#ifdef DD_TEST_BUILD
+extern long dd_test_set_fail_at;   /* src/delete.c: dd_delete_set fails at that deletion */
+#endif
+
 typedef struct canon { int32_t *a; size_t n; } canon;
 
 static canon ours(const dd_tri *t)
@@ -187,6 +191,57 @@ static void sequence(tl_state *st, const char *name, const double *pts, uint32_t
     free(perm);
     dd_cgal_free(g);
     dd_free(t);
+}
+
+/* dd_delete_set of a random `frac` of the vertices, with one variant:
+ * the result equals CGAL after removing the same points one by one, and
+ * passes the validator.                                                  */
+static void delete_set(tl_state *st, const char *name, const double *pts, uint32_t n, double frac,
+                       const char *var, uint64_t seed)
+{
+    char msg[256], tn[160], why[200] = "";
+    dd_tri *t;
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    uint32_t *vs = malloc(n * sizeof *vs), m = 0;
+    tl_rng r = {seed};
+    for (uint32_t i = 0; i < n; i++)
+        if (dd_is_vertex(t, i) && tl_unif(&r) < frac) vs[m++] = i;
+    int ok = 1;
+    for (uint32_t i = 0; i < m && ok; i++)
+        if (dd_cgal_remove(g, vs[i])) { ok = 0; snprintf(why, sizeof why, "CGAL refuses vertex %u", vs[i]); }
+    dd_status s = dd_delete_set(t, vs, m, var);
+    if (ok && s != DD_OK) { ok = 0; snprintf(why, sizeof why, "%s", dd_errmsg(t)); }
+    if (ok) {
+        canon a = ours(t), b = theirs(g);
+        if (!same(a, b)) { ok = 0; snprintf(why, sizeof why, "differs from CGAL"); }
+        free(a.a); free(b.a);
+    }
+    if (ok && dd_check(t) != DD_OK) { ok = 0; snprintf(why, sizeof why, "%s", dd_errmsg(t)); }
+    snprintf(tn, sizeof tn, "delete-set/%s/%s", name, var);
+    tl_check(st, ok && m > 0, tn, "%s (%u points in the set)", why, m);
+    free(vs);
+    dd_cgal_free(g);
+    dd_free(t);
+}
+
+/* dd_delete_set refusing a set, with the status it must say and the
+ * triangulation left as it was.                                         */
+static void set_refused(tl_state *st, const char *name, dd_tri *t, const uint32_t *vs, size_t n, const char *var,
+                        dd_status want)
+{
+    canon before = ours(t);
+    dd_status s = dd_delete_set(t, vs, n, var);
+    canon after = ours(t);
+    char tn[160];
+    snprintf(tn, sizeof tn, "delete-set-refused/%s", name);
+    tl_check(st, s == want && same(before, after) && dd_check(t) == DD_OK, tn, "status %s (want %s): %s%s",
+             dd_status_name(s), dd_status_name(want), dd_errmsg(t), same(before, after) ? "" : "; DT changed");
+    free(before.a);
+    free(after.a);
 }
 
 static double *gen(const char *ds, uint32_t n, uint32_t *np)
@@ -708,6 +763,56 @@ int main(int argc, char **argv)
             wrap_integer(&st, name, p, np, "auto", ints[i].want);
             free(p);
         }
+    }
+    /* Sets of deletions (dd_delete_set, the engine's own order). */
+    for (size_t vi = 0; dd_variant_name(vi); vi++) {
+        const char *var = dd_variant_name(vi);
+        const struct { const char *ds; uint32_t n; double frac; } dsets[] = {
+            {"uniform", small ? 800 : 3000, 0.5}, {"grid", 343, 0.7}, {"cosphere", 300, 0.6},
+            {"moment", 64, 0.5}, {"sphere", 1000, 0.3}, {"layers", 128, 0.4}};
+        for (size_t i = 0; i < sizeof dsets / sizeof *dsets; i++) {
+            uint32_t np;
+            double *p = gen(dsets[i].ds, dsets[i].n, &np);
+            char name[64];
+            snprintf(name, sizeof name, "%s-%u-%g", dsets[i].ds, np, dsets[i].frac);
+            delete_set(&st, name, p, np, dsets[i].frac, var, 40 + i);
+            free(p);
+        }
+    }
+    {
+        uint32_t np;
+        double *p = gen("layers", 128, &np);     /* two planes of 64 points */
+        char msg[256];
+        dd_tri *t;
+        if (dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
+            uint32_t *vs = malloc(np * sizeof *vs), m = 0;
+            for (uint32_t i = 0; i < np; i++)    /* one whole layer: the other is left, flat */
+                if (p[3 * i + 2] == p[2]) vs[m++] = i;
+            set_refused(&st, "layers-one-plane-left", t, vs, m, NULL, DD_ERR_DIMENSION);
+            for (uint32_t i = 0; i < np - 3; i++) vs[i] = i;
+            set_refused(&st, "three-left", t, vs, np - 3, NULL, DD_ERR_DIMENSION);
+            uint32_t twice[] = {5, 9, 5}, unknown[] = {5, np}, bad_last[] = {1, 2, 3, np + 7};
+            set_refused(&st, "listed-twice", t, twice, 3, NULL, DD_ERR_UNKNOWN_VERTEX);
+            set_refused(&st, "unknown-vertex", t, unknown, 2, NULL, DD_ERR_UNKNOWN_VERTEX);
+            set_refused(&st, "unknown-last", t, bad_last, 4, "grr-edge", DD_ERR_UNKNOWN_VERTEX);
+            set_refused(&st, "unknown-variant", t, twice, 2, "nope", DD_ERR_UNKNOWN_VARIANT);
+            dd_status s = dd_delete(t, 9, NULL);
+            uint32_t deleted[] = {4, 9};
+            if (s == DD_OK) set_refused(&st, "deleted-before", t, deleted, 2, NULL, DD_ERR_UNKNOWN_VERTEX);
+            else tl_check(&st, 0, "delete-set-refused/deleted-before", "dd_delete: %s", dd_errmsg(t));
+#ifdef DD_TEST_BUILD
+            /* a failure at the 7th deletion: the six before are undone */
+            for (uint32_t i = 0; i < 40; i++) vs[i] = 10 + 2 * i;
+            dd_test_set_fail_at = 6;
+            set_refused(&st, "rolled-back", t, vs, 40, "auto", DD_ERR_NOMEM);
+            dd_test_set_fail_at = -1;
+#endif
+            tl_check(&st, m == 64 && dd_delete_set(t, vs, 0, NULL) == DD_OK, "delete-set/empty",
+                     "layer of %u points; %s", m, dd_errmsg(t));
+            free(vs);
+            dd_free(t);
+        }
+        free(p);
     }
     refusals(&st);
     return tl_finish(&st);
