@@ -120,22 +120,25 @@ if [ $rc -eq 0 ] && echo "$out" | grep -qE '^[0-9]+\.[0-9]+$'; then echo "ok cli
 expect time-insert-unknown-vertex 1 "cannot delete vertex 500.*no point 500" "$DTDEL" time "$tmp/cs.xyz" --vertex 500 --variant insert
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/tet.xyz"
 expect time-insert-tetrahedron 1 "at least 4" "$DTDEL" time "$tmp/tet.xyz" --vertex 0 --variant insert
+# bench_ok CMD PATTERN ARGS: exit 0, "identical to CGAL: yes" and a line
+# matching PATTERN (build-bench, seq-bench)
+bench_ok() {
+    cmd=$1; pat=$2; shift 2
+    name="$cmd-$(echo "$*" | tr -s ' .' '--')"
+    out=$("$DTDEL" "$cmd" "$@" 2>&1); rc=$?
+    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE "$pat"; then
+        echo "ok cli/$name"; else echo "FAIL cli/$name: rc $rc: $out"; fi
+}
 # build-bench: both engines' DT(S) identical, on generic, curve and degenerate points
-for args in "3000 --reps 2" "2000 --dataset helix --reps 1" "1000 --dataset grid --reps 1"; do
-    name=$(echo "$args" | tr -s ' ' '-')
-    out=$("$DTDEL" build-bench $args 2>&1); rc=$?
-    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE '^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'; then
-        echo "ok cli/build-bench-$name"; else echo "FAIL cli/build-bench-$name: rc $rc: $out"; fi
-done
+ratio='^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'
+bench_ok build-bench "$ratio" 3000 --reps 2
+bench_ok build-bench "$ratio" 2000 --dataset helix --reps 1
+bench_ok build-bench "$ratio" 1000 --dataset grid --reps 1
 expect build-bench-reps 2 "reps needs an integer from 1 to 9" "$DTDEL" build-bench 100 --reps 10
-# seq-bench: half the vertices deleted in sequence, the final DT equal to CGAL's
-for args in "3000 --fraction 0.5" "1000 --dataset grid --fraction 0.9 --variant grr-neighbor" \
-            "500 --dataset cosphere --fraction 0.9 --variant gift-wrap"; do
-    name=$(echo "$args" | tr -s ' .' '--')
-    out=$("$DTDEL" seq-bench $args 2>&1); rc=$?
-    if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE 'deleted one after another'; then
-        echo "ok cli/seq-bench-$name"; else echo "FAIL cli/seq-bench-$name: rc $rc: $out"; fi
-done
+# seq-bench: most of the vertices deleted one after another, every final DT equal to CGAL's
+bench_ok seq-bench 'deleted one after another' 3000 --fraction 0.5
+bench_ok seq-bench 'deleted one after another' 1000 --dataset grid --fraction 0.9 --variant grr-neighbor
+bench_ok seq-bench 'deleted one after another' 500 --dataset cosphere --fraction 0.9 --variant gift-wrap
 expect seq-bench-fraction 2 "fraction wants a number in" "$DTDEL" seq-bench 100 --fraction 2
 expect seq-bench-cgal-row 1 "unknown engine strategy 'cgal'" "$DTDEL" seq-bench 100 --variant cgal
 out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 8 --seed 4 2>&1); rc=$?
