@@ -172,10 +172,16 @@ static int cmd_cgal_tets(int argc, char **argv)
 
 /* ---- build-bench ---------------------------------------------------------- */
 
-static int cmp_seconds(const void *a, const void *b)
+static int cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
+}
+
+double median_of(double *a, size_t n)
+{
+    qsort(a, n, sizeof *a, cmp_double);
+    return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
 }
 
 #define BUILD_MAX_REPS 9
@@ -237,11 +243,7 @@ static int cmd_build_bench(int argc, char **argv)
         same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
     free(a);
     free(b);
-    qsort(ours, reps, sizeof *ours, cmp_seconds);
-    qsort(theirs, reps, sizeof *theirs, cmp_seconds);
-    size_t m = (size_t)reps / 2;
-    double to = reps % 2 ? ours[m] : 0.5 * (ours[m - 1] + ours[m]);
-    double tc = reps % 2 ? theirs[m] : 0.5 * (theirs[m - 1] + theirs[m]);
+    double to = median_of(ours, reps), tc = median_of(theirs, reps);   /* sorted now */
     printf("dataset %s, n = %u, %zu cells (%zu finite)\n", dataset, np, dd_num_tets(t), dd_num_finite_tets(t));
     printf("runs: %u each, alternated; medians (fastest-slowest)\n", (unsigned)reps);
     printf("dtdel: %.3f s, %.0f points/s (%.3f-%.3f s)\n", to, np / to, ours[0], ours[reps - 1]);

@@ -47,6 +47,12 @@ int find_row(const char *name, row *out);
  * for CGAL); returns 0 on success.  Reinsert undoes it.                  */
 int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed);
 int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
+/* The insert row's timing: deletes input vertex v untimed (default
+ * strategy), then times its re-insertion alone into *secs.  0; -1 when
+ * the deletion failed, -2 when the re-insertion did (dd_errmsg says why). */
+int reinsert_timed(dd_tri *t, uint32_t v, double *secs);
+/* The median of a[0..n), n > 0; sorts a. */
+double median_of(double *a, size_t n);
 
 /* Subcommands living in other files. */
 int cmd_delete(int argc, char **argv);

@@ -102,12 +102,6 @@ static const phase_row *find_phase(const phase_row *a, size_t n, uint32_t np, ui
     return a ? bsearch(&key, a, n, sizeof *a, cmp_phase) : NULL;
 }
 
-static int cmp_dbl(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 /* Local canonical hash of the row's result around the neighbours nb. */
 static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, uint32_t k, uint64_t *h)
 {
@@ -123,13 +117,6 @@ static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, u
 /* The insert row hashes the engine's triangulation like an engine row. */
 static const row insert_row = {"insert", ROW_ENGINE};
 
-/* Median of us[0..reps-1], reps > 0; sorts us. */
-static double median_us(double *us, int reps)
-{
-    qsort(us, (size_t)reps, sizeof *us, cmp_dbl);
-    return reps % 2 ? us[reps / 2] : 0.5 * (us[reps / 2 - 1] + us[reps / 2]);
-}
-
 /* The "insert" row of vertex v (see the top): 0, or -1 when a deletion or
  * re-insertion failed (dd_errmsg(t) says why).  *med: median µs of the
  * re-insertions; *match: the local hash after the first re-insertion
@@ -141,19 +128,16 @@ static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, 
     int reps = 0;
     *match = 0;
     while (reps < max_reps && (reps == 0 || spent < 2e-3)) {
-        if (dd_delete(t, v, NULL) != DD_OK) return -1;
-        double t0 = now_seconds();
-        dd_status st = dd_reinsert(t, v);
-        double t1 = now_seconds();
-        if (st != DD_OK) return -1;
-        us[reps++] = 1e6 * (t1 - t0);
-        spent += t1 - t0;
+        double secs = 0;
+        if (reinsert_timed(t, v, &secs)) return -1;
+        us[reps++] = 1e6 * secs;
+        spent += secs;
         if (reps == 1) {
             uint64_t h = 0;
             *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
         }
     }
-    *med = median_us(us, reps);
+    *med = median_of(us, (size_t)reps);
     return 0;
 }
 
@@ -298,7 +282,7 @@ int cmd_bench(int argc, char **argv)
                 if (r->kind == ROW_CGAL) { refh = h; have_ref = 1; }
                 int match = counting ? 1 : have_ref && h == refh;
                 if (!match) mismatches++;
-                double med = median_us(us, reps);
+                double med = median_of(us, (size_t)reps);
                 fprintf(csv, "%s,%u,%u,%u,%u,%s,%.3f,", c->dataset, np, v, deg, hull, r->name, med);
                 if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st.tets_created);
                 const phase_row *pr = counting ? NULL : find_phase(ph, nph, np, v, r->name);

@@ -51,6 +51,15 @@ int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v)
     return r->kind == ROW_ENGINE ? dd_reinsert(t, v) != DD_OK : dd_cgal_reinsert(g, v);
 }
 
+int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
+{
+    if (dd_delete(t, v, NULL) != DD_OK) return -1;
+    double t0 = now_seconds();
+    dd_status st = dd_reinsert(t, v);
+    *secs = now_seconds() - t0;
+    return st == DD_OK ? 0 : -2;
+}
+
 /* Parses "I,J,K" into a malloc'd list. */
 static int parse_list(const char *s, uint32_t **out, size_t *n)
 {
@@ -209,12 +218,6 @@ int cmd_delete(int argc, char **argv)
 
 /* ---- time ------------------------------------------------------------------ */
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 int cmd_time(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("time");
@@ -237,7 +240,7 @@ int cmd_time(int argc, char **argv)
     /* "insert": the bench's insert row, our re-insertion of the vertex
      * (deleted untimed by the default strategy before each repetition). */
     const int insert = !strcmp(var, "insert");
-    row r = {"auto", ROW_ENGINE};
+    row r = {dd_variant_name(0), ROW_ENGINE};
     if (!insert && !find_row(var, &r)) {
         fprintf(stderr, "dtdel time: unknown variant '%s' (see dtdel variants, or insert)\n", var);
         return EXIT_INPUT;
@@ -249,22 +252,21 @@ int cmd_time(int argc, char **argv)
     int rc = load_both("time", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
     if (rc) return rc;
     double *us = malloc(repeat * sizeof *us);
-    for (uint64_t k = 0; k < repeat && insert && us; k++) {
-        if (dd_delete(t, (uint32_t)v, NULL) != DD_OK) {
-            fprintf(stderr, "dtdel time: cannot delete vertex %u: %s\n", (uint32_t)v, dd_errmsg(t));
+    if (!us) {
+        fprintf(stderr, "dtdel time: out of memory\n");
+        rc = EXIT_INPUT;
+    }
+    for (uint64_t k = 0; k < repeat && insert && !rc; k++) {
+        double secs = 0;
+        int bad = reinsert_timed(t, (uint32_t)v, &secs);
+        us[k] = 1e6 * secs;
+        if (bad) {
+            fprintf(stderr, "dtdel time: %s vertex %u: %s\n", bad == -1 ? "cannot delete" : "cannot re-insert",
+                    (uint32_t)v, dd_errmsg(t));
             rc = EXIT_INPUT;
-            break;
-        }
-        double t0 = now_seconds();
-        dd_status st = dd_reinsert(t, (uint32_t)v);
-        us[k] = 1e6 * (now_seconds() - t0);
-        if (st != DD_OK) {
-            fprintf(stderr, "dtdel time: reinserting vertex %u failed: %s\n", (uint32_t)v, dd_errmsg(t));
-            rc = EXIT_INPUT;
-            break;
         }
     }
-    for (uint64_t k = 0; k < repeat && !insert && !rc && us; k++) {
+    for (uint64_t k = 0; k < repeat && !insert && !rc; k++) {
         double t0 = now_seconds();
         int bad = row_delete(&r, t, g, (uint32_t)v, k + 1);
         double t1 = now_seconds();
@@ -280,11 +282,7 @@ int cmd_time(int argc, char **argv)
             rc = EXIT_INPUT;
         }
     }
-    if (!rc && us) {
-        qsort(us, repeat, sizeof *us, cmp_double);
-        double med = repeat % 2 ? us[repeat / 2] : 0.5 * (us[repeat / 2 - 1] + us[repeat / 2]);
-        printf("%.3f\n", med);
-    }
+    if (!rc) printf("%.3f\n", median_of(us, repeat));
     free(us);
     free(pts);
     dd_free(t);

@@ -474,14 +474,22 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     return s;
 }
 
-dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
+/* The strategy named `variant` (NULL: the default) in *var, clearing the
+ * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
+static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
 {
     t->err[0] = 0;
-    const dd_variant *var = dd_find_variant(variant);
-    if (!var)
-        return dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
+    *var = dd_find_variant(variant);
+    return *var ? DD_OK
+                : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
+}
+
+dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
+{
+    const dd_variant *var;
     uint32_t q = 0;
-    dd_status s = resolve_vertex(t, input, &q);
+    dd_status s = resolve_variant(t, variant, &var);
+    if (s == DD_OK) s = resolve_vertex(t, input, &q);
     if (s != DD_OK) return s;
     return delete_vertex(t, q, var);
 }
@@ -508,18 +516,48 @@ static int cmp_u32(const void *a, const void *b)
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out
  * of memory) re-inserts those done, in reverse, which restores DT(S).   */
+/* Lists in left[0..max) the first vertices, in id order, that are not
+ * among the sorted ids[0..n); returns how many.                          */
+static uint32_t vertices_left(const dd_tri *t, const uint32_t *ids, size_t n, uint32_t *left, uint32_t max)
+{
+    uint32_t m = 0;
+    size_t k = 0;
+    for (uint32_t v = 0; v < t->nvid && m < max; v++) {
+        if (t->vcell[v] == DD_NONE) continue;
+        if (k < n && ids[k] == v) { k++; continue; }
+        left[m++] = v;
+    }
+    return m;
+}
+
+/* Whether the vertices left after deleting the sorted ids[0..n) include
+ * four affinely independent ones.  The first 64 left nearly always do, so
+ * a small set costs no pass over the whole triangulation.               */
+static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
+{
+    uint32_t few[64], m = vertices_left(t, ids, n, few, 64);
+    if (dd_pick_simplex(t, t->xyz, few, m) == DD_OK) return DD_OK;
+    dd_status s = DD_ERR_DIMENSION;
+    if (m == 64) {                                   /* more are left: all of them */
+        uint32_t *left = malloc((size_t)(t->nvert - n) * sizeof *left);
+        if (!left) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        m = vertices_left(t, ids, n, left, t->nvert - (uint32_t)n);
+        if (dd_pick_simplex(t, t->xyz, left, m) == DD_OK) s = DD_OK;
+        free(left);
+    }
+    return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
+}
+
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
-    t->err[0] = 0;
-    const dd_variant *var = dd_find_variant(variant);
-    if (!var)
-        return dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
-    if (n == 0) return DD_OK;
+    const dd_variant *var;
+    dd_status s = resolve_variant(t, variant, &var);
+    if (s != DD_OK || n == 0) return s;
     if (n > t->nvert)
         return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u vertices", n,
                        t->nvert);
-    uint32_t *ids = malloc(n * sizeof *ids), *left = malloc((size_t)(t->nvert - n + 1) * sizeof *left);
-    dd_status s = ids && left ? DD_OK : dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    uint32_t *ids = malloc(n * sizeof *ids);
+    if (!ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
     for (size_t k = 0; k < n && s == DD_OK; k++) s = resolve_vertex(t, vs[k], &ids[k]);
     if (s == DD_OK) {
         qsort(ids, n, sizeof *ids, cmp_u32);
@@ -530,17 +568,7 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
     if (s == DD_OK && t->nvert - n < 4)
         s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
                     t->nvert, t->nvert - (uint32_t)n);
-    if (s == DD_OK) {                   /* the vertices left, in id order */
-        uint32_t m = 0;
-        size_t k = 0;
-        for (uint32_t v = 0; v < t->nvid; v++) {
-            if (t->vcell[v] == DD_NONE) continue;
-            if (k < n && ids[k] == v) { k++; continue; }
-            left[m++] = v;
-        }
-        if (dd_pick_simplex(t, t->xyz, left, m) != DD_OK)
-            s = dd_fail(t, DD_ERR_DIMENSION, "deleting these %zu points would leave only coplanar points", n);
-    }
+    if (s == DD_OK) s = check_left(t, ids, n);
     size_t done = 0;
     for (; done < n && s == DD_OK; done++) {
 #ifdef DD_TEST_BUILD
@@ -559,7 +587,6 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
         memcpy(t->err, why, sizeof why);
     }
     free(ids);
-    free(left);
     return s;
 }
 

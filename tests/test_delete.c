@@ -814,6 +814,47 @@ int main(int argc, char **argv)
         }
         free(p);
     }
+    /* 3000 points of a plane and an apex on each side.  The first
+     * tetrahedron holds one apex among the first vertex ids; deleting
+     * that apex, whether the points left span space is decided by the
+     * other, past the first 64 vertices that are checked first (then all
+     * those left are).  Each apex is deleted with 10 plane points, and
+     * both apexes together are refused.                                 */
+    {
+        uint32_t np = 3002;
+        double *p = malloc(3 * sizeof *p * np);
+        tl_rng r = {77};
+        for (uint32_t i = 0; i < 3000; i++) {
+            p[3 * i] = tl_unif(&r);
+            p[3 * i + 1] = tl_unif(&r);
+            p[3 * i + 2] = 0;
+        }
+        p[9000] = p[9001] = p[9003] = p[9004] = 0.5;
+        p[9002] = 1;
+        p[9005] = -1;
+        for (uint32_t apex = 3000; apex < 3002; apex++) {
+            char msg[256], name[64];
+            snprintf(name, sizeof name, "delete-set/plane-and-apex-%u", apex);
+            dd_tri *t;
+            dd_cgal *g = dd_cgal_build(p, np);
+            if (g && dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
+                uint32_t both[] = {3, 3000, 3001}, set[11];
+                if (apex == 3000) set_refused(&st, "plane-and-both-apexes", t, both, 3, NULL, DD_ERR_DIMENSION);
+                int cg = 0;
+                for (uint32_t i = 0; i < 11; i++) cg |= dd_cgal_remove(g, set[i] = i < 10 ? 290 * i + 1 : apex);
+                dd_status s = dd_delete_set(t, set, 11, NULL);
+                canon a = ours(t), b = theirs(g);
+                tl_check(&st, !cg && s == DD_OK && same(a, b) && dd_check(t) == DD_OK, name, "CGAL %d, status %s: %s",
+                         cg, dd_status_name(s), dd_errmsg(t));
+                free(a.a); free(b.a);
+                dd_free(t);
+            } else {
+                tl_check(&st, 0, name, "dd_create: %s", msg);
+            }
+            dd_cgal_free(g);
+        }
+        free(p);
+    }
     refusals(&st);
     return tl_finish(&st);
 }
