@@ -43,9 +43,9 @@ int dd_is_vertex(const dd_tri *t, uint32_t i)
 
 size_t dd_memory_bytes(const dd_tri *t)
 {
-    /* cells: tv, tn, stamp; vertices: xyz, vcell, v2in; inputs: in2v;
+    /* cells: records (plus the alignment slack), stamp; vertices: xyz, vcell, v2in; inputs: in2v;
      * insertion scratch: the three vectors, the edge hash and table      */
-    return (size_t)t->cap_c * (8 * sizeof(uint32_t) + sizeof(dd_mark))
+    return (size_t)t->cap_c * (DD_CELL_WORDS * sizeof(uint32_t) + sizeof(dd_mark)) + (t->cell_block ? 64 : 0)
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
          + (size_t)t->cap_in * sizeof(uint32_t)
          + (t->stack.cap + t->conflict.cap + t->boundary.cap) * sizeof(uint32_t)
@@ -106,7 +106,7 @@ dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
     if (!a) return DD_ERR_NOMEM;
     size_t k = 0;
     for (uint32_t c = 0; c < t->ncell; c++) {
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         if (v[0] == DD_DEAD) continue;
         for (int i = 0; i < 4; i++) a[4 * k + (size_t)i] = dd_input_index(t, v[i]);
         sort4(a + 4 * k);

@@ -18,8 +18,8 @@ static int same_facet(const dd_tri *t, uint32_t c, uint32_t i, uint32_t d, uint3
 {
     uint32_t a[3], b[3];
     for (int k = 0; k < 3; k++) {
-        a[k] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][k]];
-        b[k] = t->tv[4 * (size_t)d + (uint32_t)dd_facet[j][k]];
+        a[k] = dd_tv(t, c)[(uint32_t)dd_facet[i][k]];
+        b[k] = dd_tv(t, d)[(uint32_t)dd_facet[j][k]];
     }
     for (int k = 0; k < 3; k++)
         if (a[k] != b[0] && a[k] != b[1] && a[k] != b[2]) return 0;
@@ -30,7 +30,7 @@ dd_status dd_check(dd_tri *t)
 {
     size_t live = 0, finite = 0;
     for (uint32_t c = 0; c < t->ncell; c++) {
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         if (v[0] == DD_DEAD) continue;
         live++;
         int ninf = 0;
@@ -44,10 +44,10 @@ dd_status dd_check(dd_tri *t)
         if (ninf > 1) return dd_fail(t, DD_ERR_INTERNAL, "cell %u has %d infinite vertices", c, ninf);
         if (ninf == 0) finite++;
         for (uint32_t i = 0; i < 4; i++) {
-            uint32_t f = t->tn[4 * (size_t)c + i];
-            if (f == DD_NONE || (f >> 2) >= t->ncell || t->tv[4 * (size_t)(f >> 2)] == DD_DEAD)
+            uint32_t f = dd_tn(t, c)[i];
+            if (f == DD_NONE || (f >> 2) >= t->ncell || dd_tv(t, (f >> 2))[0] == DD_DEAD)
                 return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: no live neighbour", c, i);
-            if (t->tn[f] != 4 * c + i)
+            if (*dd_fn(t, f) != 4 * c + i)
                 return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: neighbour link not symmetric", c, i);
             if (!same_facet(t, c, i, f >> 2, f & 3))
                 return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: neighbour %u does not share the facet", c, i, f >> 2);
@@ -66,20 +66,20 @@ dd_status dd_check(dd_tri *t)
         uint32_t c = t->vcell[v];
         if (c == DD_NONE) continue;
         nv++;
-        if (c >= t->ncell || t->tv[4 * (size_t)c] == DD_DEAD || dd_index_of(t, c, v) < 0)
+        if (c >= t->ncell || dd_tv(t, c)[0] == DD_DEAD || dd_index_of(t, c, v) < 0)
             return dd_fail(t, DD_ERR_INTERNAL, "point %d: its cell link %u does not contain it", dd_input_index(t, v), c);
     }
     if (nv != t->nvert)
         return dd_fail(t, DD_ERR_INTERNAL, "vertex count wrong: %u found, %u recorded", nv, t->nvert);
-    if (t->inf_cell == DD_NONE || t->tv[4 * (size_t)t->inf_cell] == DD_DEAD ||
+    if (t->inf_cell == DD_NONE || dd_tv(t, t->inf_cell)[0] == DD_DEAD ||
         !dd_is_infinite_cell(t, t->inf_cell))
         return dd_fail(t, DD_ERR_INTERNAL, "the infinite vertex has no live cell link");
     /* Local Delaunay test across every facet. */
     for (uint32_t c = 0; c < t->ncell; c++) {
-        if (t->tv[4 * (size_t)c] == DD_DEAD) continue;
+        if (dd_tv(t, c)[0] == DD_DEAD) continue;
         for (uint32_t i = 0; i < 4; i++) {
-            uint32_t f = t->tn[4 * (size_t)c + i];
-            uint32_t w = t->tv[f];
+            uint32_t f = dd_tn(t, c)[i];
+            uint32_t w = *dd_fv(t, f);
             if (w == DD_INF) continue;
             if (dd_cell_conflict(t, c, dd_pt(t, w)))
                 return dd_fail(t, DD_ERR_INTERNAL,

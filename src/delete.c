@@ -112,7 +112,7 @@ static dd_status collect_star(dd_del *d)
     dd_status s = dd_vec_push(&d->star, c0);
     for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
         uint32_t c = d->star.a[k];
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
             uint32_t w = v[j];
             if (w == q) continue;
@@ -121,7 +121,7 @@ static dd_status collect_star(dd_del *d)
                 d->vmark[w] = vep;
                 s = dd_vec_push(&d->nbr, w);
             }
-            uint32_t nb = t->tn[4 * (size_t)c + j] >> 2;
+            uint32_t nb = dd_tn(t, c)[j] >> 2;
             if (s == DD_OK && t->stamp[nb] != ep) {
                 t->stamp[nb] = ep;
                 s = dd_vec_push(&d->star, nb);
@@ -142,7 +142,7 @@ dd_status dd_del_link_hash(dd_del *d)
     dd_status s = dd_trihash_reset(&d->lhash, d->star.n);
     for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
         uint32_t c = d->star.a[k];
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         int i = dd_index_of(t, c, d->q);
         s = dd_trihash_put(&d->lhash, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
     }
@@ -202,7 +202,7 @@ dd_status dd_qdt_create(dd_del *d)
     for (size_t k = 0; k < x->conflict.n && s == DD_OK; k++) {
         uint32_t c = x->conflict.a[k];
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++)
-            if (x->stamp[x->tn[4 * (size_t)c + i] >> 2] != ep)
+            if (x->stamp[dd_tn(x, c)[i] >> 2] != ep)
                 s = dd_vec_push(&x->boundary, 4 * c + i);
     }
     if (s == DD_OK) s = dd_reserve_star(x);
@@ -232,7 +232,7 @@ dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell)
     dd_tri *x = d->qdt;
     const double *p = dd_pt(x, v);
     for (uint32_t c = 0; c < x->ncell; c++) {
-        if (x->tv[4 * (size_t)c] == DD_DEAD || !has_qd(x, c)) continue;
+        if (dd_tv(x, c)[0] == DD_DEAD || !has_qd(x, c)) continue;
         d->locate_steps++;
         if (dd_cell_conflict(x, c, p)) { *cell = c; return DD_OK; }
     }
@@ -246,7 +246,7 @@ dd_status dd_qdt_collect_fill(dd_del *d)
     d->fill.n = 0;
     dd_status s = DD_OK;
     for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
-        if (x->tv[4 * (size_t)c] != DD_DEAD && !has_qd(x, c)) s = dd_vec_push(&d->fill, c);
+        if (dd_tv(x, c)[0] != DD_DEAD && !has_qd(x, c)) s = dd_vec_push(&d->fill, c);
     return s;
 }
 
@@ -272,7 +272,7 @@ dd_status dd_full_collect_fill(dd_del *d)
     d->fill.n = 0;
     dd_status s = DD_OK;
     for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
-        if (x->tv[4 * (size_t)c] != DD_DEAD && dd_cell_conflict(x, c, d->qp))
+        if (dd_tv(x, c)[0] != DD_DEAD && dd_cell_conflict(x, c, d->qp))
             s = dd_vec_push(&d->fill, c);
     return s;
 }
@@ -290,9 +290,9 @@ static dd_status fill_coplanar_hull(dd_del *d)
         if (dd_is_infinite_cell(t, c)) continue;
         uint32_t n = dd_new_cell(x);
         for (uint32_t i = 0; i < 4; i++) {
-            uint32_t w = t->tv[4 * (size_t)c + i];
-            x->tv[4 * (size_t)n + i] = w == d->q ? DD_INF : w;
-            x->tn[4 * (size_t)n + i] = DD_NONE;
+            uint32_t w = dd_tv(t, c)[i];
+            dd_tv(x, n)[i] = w == d->q ? DD_INF : w;
+            dd_tn(x, n)[i] = DD_NONE;
         }
         s = dd_vec_push(&d->fill, n);
     }
@@ -316,9 +316,9 @@ static dd_status sew_match(dd_del *d)
     size_t matched = 0;
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k];
-        const uint32_t *v = x->tv + 4 * (size_t)r;
+        const uint32_t *v = dd_tv(x, r);
         for (uint32_t j = 0; j < 4; j++) {
-            uint32_t f = x->tn[4 * (size_t)r + j];
+            uint32_t f = dd_tn(x, r)[j];
             if (f != DD_NONE && x->stamp[f >> 2] == epx) {
                 d->sew_out.a[4 * k + j] = DD_NONE;
                 continue;
@@ -332,7 +332,7 @@ static dd_status sew_match(dd_del *d)
                 return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a link triangle is covered twice",
                                t->v2in[d->q]);
             t->stamp[c] = ep;
-            d->sew_out.a[4 * k + j] = t->tn[4 * (size_t)c + (uint32_t)dd_index_of(t, c, d->q)];
+            d->sew_out.a[4 * k + j] = dd_tn(t, c)[(uint32_t)dd_index_of(t, c, d->q)];
             matched++;
         }
     }
@@ -369,7 +369,7 @@ static dd_status sew(dd_del *d)
     t->nfinite -= (uint32_t)finite_star;
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = dd_new_cell(t);
-        memcpy(t->tv + 4 * (size_t)m, x->tv + 4 * (size_t)r, 4 * sizeof *t->tv);
+        memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
         d->cellmap.a[r] = m;
     }
     for (size_t k = 0; k < nf; k++) {
@@ -379,13 +379,13 @@ static dd_status sew(dd_del *d)
             if (o != DD_NONE) {
                 dd_glue(t, 4 * m + j, o);
             } else {
-                uint32_t f = x->tn[4 * (size_t)r + j];
-                t->tn[4 * (size_t)m + j] = 4 * d->cellmap.a[f >> 2] + (f & 3);
+                uint32_t f = dd_tn(x, r)[j];
+                dd_tn(t, m)[j] = 4 * d->cellmap.a[f >> 2] + (f & 3);
             }
         }
         int inf = 0;
         for (uint32_t j = 0; j < 4; j++) {
-            uint32_t w = t->tv[4 * (size_t)m + j];
+            uint32_t w = dd_tv(t, m)[j];
             if (w == DD_INF) { inf = 1; t->inf_cell = m; }
             else t->vcell[w] = m;
         }
@@ -646,7 +646,7 @@ dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **
                 a = b;
                 cap *= 2;
             }
-            const uint32_t *v = t->tv + 4 * (size_t)d->star.a[j];
+            const uint32_t *v = dd_tv(t, d->star.a[j]);
             int32_t *o = a + 4 * k++;
             for (int m = 0; m < 4; m++) o[m] = dd_input_index(t, v[m]);
             for (int x = 1; x < 4; x++)          /* sort the four */

@@ -159,7 +159,7 @@ static dd_status init(dd_grr *g)
  * point never comes back while that point stays.                        */
 static dd_status dh_put(dd_grr *g, uint32_t c)
 {
-    const uint32_t *v = g->d->qdt->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(g->d->qdt, c);
     uint32_t k[3], n = 0;
     for (uint32_t i = 0; i < 4; i++)
         if (v[i] != DD_QD) k[n++] = v[i];
@@ -171,7 +171,7 @@ static uint32_t dh_get(const dd_grr *g, const uint32_t tri[3])
 {
     const dd_tri *x = g->d->qdt;
     uint32_t c = dd_trihash_get(&g->dh, tri[0], tri[1], tri[2]);
-    if (c == DD_NONE || x->tv[4 * (size_t)c] == DD_DEAD || dd_index_of(x, c, DD_QD) < 0) return DD_NONE;
+    if (c == DD_NONE || dd_tv(x, c)[0] == DD_DEAD || dd_index_of(x, c, DD_QD) < 0) return DD_NONE;
     for (int i = 0; i < 3; i++)            /* still that cell? (cells are recycled) */
         if (dd_index_of(x, c, tri[i]) < 0) return DD_NONE;
     return c;
@@ -185,7 +185,7 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
     dd_tri *x = gr->d->qdt;
     const double *pp = dd_pt(x, p);
     uint32_t c0 = x->vcell[g];
-    if (c0 >= x->ncell || x->tv[4 * (size_t)c0] == DD_DEAD || dd_index_of(x, c0, g) < 0) return DD_NONE;
+    if (c0 >= x->ncell || dd_tv(x, c0)[0] == DD_DEAD || dd_index_of(x, c0, g) < 0) return DD_NONE;
     dd_mark ep = dd_new_epoch(x, 1);
     gr->walk.n = 0;
     x->stamp[c0] = ep;
@@ -195,8 +195,8 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
         gr->d->locate_steps++;
         if (dd_cell_conflict(x, c, pp)) return c;
         for (uint32_t j = 0; j < 4; j++) {
-            if (x->tv[4 * (size_t)c + j] == g) continue;
-            uint32_t nb = x->tn[4 * (size_t)c + j] >> 2;
+            if (dd_tv(x, c)[j] == g) continue;
+            uint32_t nb = dd_tn(x, c)[j] >> 2;
             if (x->stamp[nb] == ep) continue;
             x->stamp[nb] = ep;
             if (dd_vec_push(&gr->walk, nb) != DD_OK) return DD_NONE;
@@ -211,7 +211,7 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
     dd_tri *x = gr->d->qdt;
     const double *pp = dd_pt(x, p);
     for (uint32_t c = 0; c < x->ncell; c++) {
-        if (x->tv[4 * (size_t)c] == DD_DEAD) continue;
+        if (dd_tv(x, c)[0] == DD_DEAD) continue;
         gr->d->locate_steps++;
         if (dd_cell_conflict(x, c, pp)) return c;
     }
@@ -302,7 +302,7 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
     if (s == DD_OK && pol->triangle_guide) {
         s = dd_trihash_reset(&g->dh, 8 * g->seq.n + 16);
         for (uint32_t c = 0; c < d->qdt->ncell && s == DD_OK; c++)
-            if (d->qdt->tv[4 * (size_t)c] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
+            if (dd_tv(d->qdt, c)[0] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
     }
     DD_PHASE_END(d, DD_PH_CONFLICT);
 

@@ -73,7 +73,7 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
     for (uint32_t k = 0; k < n; k++) {
         uint32_t c = d->star.a[k], *w = l->lv + 3 * k;
         int i = dd_index_of(t, c, d->q);
-        for (int m = 0; m < 3; m++) w[m] = t->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]];
+        for (int m = 0; m < 3; m++) w[m] = dd_tv(t, c)[(uint32_t)dd_facet[i][m]];
         if (by_stamp) t->stamp[c] = (dd_mark)(base + k);
     }
     for (size_t j = 0; j < d->nbr.n; j++) l->deg[d->nbr.a[j]] = 0;
@@ -83,13 +83,13 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
         for (uint32_t m = 0; m < 3; m++) {
             /* across the edge opposite lv[3k+m]: the star cell across the
              * cell facet opposite that vertex                              */
-            uint32_t nb = t->tn[4 * (size_t)c + (uint32_t)dd_facet[i][m]] >> 2, sl;
+            uint32_t nb = dd_tn(t, c)[(uint32_t)dd_facet[i][m]] >> 2, sl;
             if (by_stamp) {
                 sl = (uint32_t)(dd_mark)(t->stamp[nb] - base);
             } else {
                 int inb = dd_index_of(t, nb, d->q);
                 if (inb < 0) return DD_ERR_INTERNAL;
-                const uint32_t *u = t->tv + 4 * (size_t)nb;
+                const uint32_t *u = dd_tv(t, nb);
                 sl = dd_trihash_get(&d->lhash, u[inb == 0], u[inb <= 1 ? 2 : 1], u[inb <= 2 ? 3 : 2]);
             }
             if (sl >= n) return DD_ERR_INTERNAL;
@@ -236,12 +236,12 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
      * u0 -> u1 (the link orientation of the facets of mesh.h).            */
     uint32_t q = d->q, seed = DD_NONE, u0 = l->ring[0], u1 = l->ring[1 % k];
     for (uint32_t c = 0; c < x->ncell && seed == DD_NONE; c++) {
-        if (x->tv[4 * (size_t)c] == DD_DEAD) continue;
+        if (dd_tv(x, c)[0] == DD_DEAD) continue;
         int i = dd_index_of(x, c, q);
         if (i < 0) continue;
         for (int m = 0; m < 3; m++)
-            if (x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][m]] == u0 &&
-                x->tv[4 * (size_t)c + (uint32_t)dd_facet[i][(m + 1) % 3]] == u1)
+            if (dd_tv(x, c)[(uint32_t)dd_facet[i][m]] == u0 &&
+                dd_tv(x, c)[(uint32_t)dd_facet[i][(m + 1) % 3]] == u1)
                 seed = c;
     }
     if (seed == DD_NONE) return DD_ERR_INTERNAL;
@@ -253,7 +253,7 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
     while (s == DD_OK && st->n > 0) {
         uint32_t c = st->a[--st->n];
         int i = dd_index_of(x, c, q);
-        const uint32_t *v = x->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(x, c);
         if (f >= k) return DD_ERR_INTERNAL;
         for (int m = 0; m < 3; m++) tri[3 * f + (uint32_t)m] = v[dd_facet[i][m]];
         f++;
@@ -265,7 +265,7 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
                 if ((int)m != i && m != j) e[ne++] = v[m];
             uint32_t ra = rpos_lookup(l, e[0]), rb = rpos_lookup(l, e[1]);
             if (ra != DD_NONE && rb != DD_NONE && (rb == (ra + 1) % k || ra == (rb + 1) % k)) continue;
-            uint32_t nb = x->tn[4 * (size_t)c + j] >> 2;
+            uint32_t nb = dd_tn(x, c)[j] >> 2;
             if (x->stamp[nb] == ep) continue;
             x->stamp[nb] = ep;
             s = dd_vec_push(st, nb);

@@ -81,7 +81,7 @@ void dd_free(dd_tri *t)
     if (!t) return;
     if (!t->borrowed) { free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); }
     dd_delete_ctx_free(t->del);
-    free(t->tv); free(t->tn); free(t->stamp);
+    free(t->cell_block); free(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
     free(t->etab);
@@ -182,14 +182,25 @@ void dd_trihash_free(dd_trihash *h)
 /* Reallocates the cell arrays to cap cells; stamps of new cells are 0.
  * Growing fails with DD_ERR_NOMEM (the arrays already grown stay valid,
  * cap_c keeps the old capacity).  Shrinking never fails: an array whose
- * realloc is refused keeps its larger block, still room for cap cells.  */
+ * realloc is refused keeps its larger block, still room for cap cells.
+ * The cell records start on a 64-byte boundary inside their block (two a
+ * cache line, none straddling two): after a realloc that moved the block
+ * to another offset, they are moved back into line.                     */
+#define CELL_ALIGN 64
 static dd_status resize_cells(dd_tri *t, uint32_t cap)
 {
     int grow = cap > t->cap_c;
-    uint32_t *tv = realloc(t->tv, 4 * (size_t)cap * sizeof *tv);
-    if (tv) t->tv = tv; else if (grow) return DD_ERR_NOMEM;
-    uint32_t *tn = realloc(t->tn, 4 * (size_t)cap * sizeof *tn);
-    if (tn) t->tn = tn; else if (grow) return DD_ERR_NOMEM;
+    size_t rec = DD_CELL_WORDS * sizeof(uint32_t), keep = (size_t)(cap < t->cap_c ? cap : t->cap_c);
+    size_t old_off = t->cell_block ? (size_t)((char *)t->cell - (char *)t->cell_block) : 0;
+    char *b = realloc(t->cell_block, (size_t)cap * rec + CELL_ALIGN);
+    if (b) {
+        size_t off = (size_t)(-(uintptr_t)b & (CELL_ALIGN - 1));
+        if (off != old_off) memmove(b + off, b + old_off, keep * rec);
+        t->cell_block = b;
+        t->cell = (uint32_t *)(void *)(b + off);
+    } else if (grow) {
+        return DD_ERR_NOMEM;
+    }
     dd_mark *st = realloc(t->stamp, (size_t)cap * sizeof *st);
     if (st) t->stamp = st; else if (grow) return DD_ERR_NOMEM;
     if (grow) memset(t->stamp + t->cap_c, 0, (size_t)(cap - t->cap_c) * sizeof *t->stamp);
@@ -221,7 +232,7 @@ uint32_t dd_new_cell(dd_tri *t)
     uint32_t c;
     if (t->free_head != DD_NONE) {
         c = t->free_head;
-        t->free_head = t->tn[4 * (size_t)c];
+        t->free_head = dd_tn(t, c)[0];
         t->nfree--;
     } else {
         c = t->ncell++;
@@ -234,8 +245,8 @@ uint32_t dd_new_cell(dd_tri *t)
 
 void dd_kill_cell(dd_tri *t, uint32_t c)
 {
-    t->tv[4 * (size_t)c] = DD_DEAD;
-    t->tn[4 * (size_t)c] = t->free_head;
+    dd_tv(t, c)[0] = DD_DEAD;
+    dd_tn(t, c)[0] = t->free_head;
     t->free_head = c;
     t->nfree++;
     t->nlive--;
@@ -249,7 +260,7 @@ void dd_make_first_cells(dd_tri *t, uint32_t v[4])
         uint32_t s = v[0]; v[0] = v[1]; v[1] = s;
     }
     uint32_t c = dd_new_cell(t);
-    for (int k = 0; k < 4; k++) t->tv[4 * c + (uint32_t)k] = v[k];
+    for (int k = 0; k < 4; k++) dd_tv(t, c)[(uint32_t)k] = v[k];
     uint32_t inf[4];
     for (int i = 0; i < 4; i++) {
         /* The infinite cell across facet i: same vertices with v[i] replaced
@@ -260,7 +271,7 @@ void dd_make_first_cells(dd_tri *t, uint32_t v[4])
         w[i] = DD_INF;
         int a = dd_facet[i][0], b = dd_facet[i][1];
         uint32_t s = w[a]; w[a] = w[b]; w[b] = s;
-        for (int k = 0; k < 4; k++) t->tv[4 * d + (uint32_t)k] = w[k];
+        for (int k = 0; k < 4; k++) dd_tv(t, d)[(uint32_t)k] = w[k];
         dd_glue(t, 4 * c + (uint32_t)i, 4 * d + (uint32_t)i);
     }
     /* Infinite cells meet along the infinite facets: cell across facet i,
@@ -268,14 +279,14 @@ void dd_make_first_cells(dd_tri *t, uint32_t v[4])
      * cell across the facet opposite x.                                    */
     for (int i = 0; i < 4; i++)
         for (int k = 0; k < 4; k++) {
-            uint32_t d = inf[i], x = t->tv[4 * d + (uint32_t)k];
+            uint32_t d = inf[i], x = dd_tv(t, d)[(uint32_t)k];
             if (x == DD_INF) continue;
             int xi = -1;
             for (int m = 0; m < 4; m++) if (v[m] == x) xi = m;
             uint32_t e = inf[xi];
             /* facet of e opposite v[i] */
             int j = dd_index_of(t, e, v[i]);
-            t->tn[4 * d + (uint32_t)k] = 4 * e + (uint32_t)j;
+            dd_tn(t, d)[(uint32_t)k] = 4 * e + (uint32_t)j;
         }
     for (int k = 0; k < 4; k++) t->vcell[v[k]] = c;
     t->inf_cell = inf[0];
@@ -299,7 +310,7 @@ int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const dou
 
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     const double *q[4];
     int k = -1, kd = -1;
     for (int i = 0; i < 4; i++) {
@@ -315,7 +326,7 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
  * (pred.h) measured 3% slower construction: only this call site does.    */
 static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
         const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
         const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
@@ -330,7 +341,7 @@ static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
 static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     const double *q[4];
     for (int k = 0; k < 4; k++) q[k] = (k == i) ? p : dd_pt(t, v[k]);
     int f = dd_orient3d_filter(&t->pred, q[0], q[1], q[2], q[3]);
@@ -370,7 +381,7 @@ static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double 
     const double *near = NULL;
     s[0] = s[1] = s[2] = 0;
     for (int k = 0; k < 4; k++) {
-        const double *x = dd_pt(t, t->tv[4 * (size_t)c + (uint32_t)k]);
+        const double *x = dd_pt(t, dd_tv(t, c)[(uint32_t)k]);
         double dx = x[0] - p[0], dy = x[1] - p[1], dz = x[2] - p[2], d2 = dx * dx + dy * dy + dz * dz;
         if (d2 < d2min) { d2min = d2; near = x; }
         for (int j = 0; j < 3; j++) s[j] += x[j];
@@ -386,13 +397,13 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
     const uint32_t limit = 2500 + t->ncell / 4;
     *exit = DD_NONE;
     for (uint32_t steps = 0; steps < limit; steps++) {
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         const double *q[4] = {dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]), dd_pt(t, v[3])};
         uint32_t nb[4], nbeyond = 0;
         int beyond[4];
         double op[4];
         for (int i = 0; i < 4; i++) {
-            nb[i] = t->tn[4 * (size_t)c + (uint32_t)i] >> 2;
+            nb[i] = dd_tn(t, c)[(uint32_t)i] >> 2;
             if (nb[i] == prev) continue;
             const double *qi = q[i];
             q[i] = p;
@@ -437,7 +448,7 @@ dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
     if (dd_is_outer_cell(t, c)) {       /* start from its finite neighbour */
         int k = dd_index_of(t, c, DD_INF);
         if (k < 0) k = dd_index_of(t, c, DD_QD);
-        uint32_t f = t->tn[4 * (size_t)c + (uint32_t)k];
+        uint32_t f = dd_tn(t, c)[(uint32_t)k];
         c = f >> 2;             /* nothing known about p yet: from stays */
     }
     /* The exact walk tries first the facet the plain one would have
@@ -455,7 +466,7 @@ dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t i = (r + k) & 3;
             if (i == from) continue;
-            if (orient_replaced(t, c, (int)i, p) < 0) { next = t->tn[4 * (size_t)c + i]; break; }
+            if (orient_replaced(t, c, (int)i, p) < 0) { next = dd_tn(t, c)[i]; break; }
         }
         if (next == DD_NONE) { *out = c; break; }
         c = next >> 2;
@@ -480,7 +491,7 @@ dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
         uint32_t c = t->stack.a[--t->stack.n];
         s = dd_vec_push(&t->conflict, c);
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
-            uint32_t nb = t->tn[4 * (size_t)c + i] >> 2;
+            uint32_t nb = dd_tn(t, c)[i] >> 2;
             if (t->stamp[nb] == ep) continue;
             if (t->stamp[nb] != tested && cell_conflict_fast(t, nb, p)) {
                 t->stamp[nb] = ep;
@@ -514,7 +525,7 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
     dd_edge_slot *hash = t->ehash;
     for (size_t k = 0; k < ncells; k++) {
         uint32_t n = cells[k];
-        const uint32_t *w = t->tv + 4 * (size_t)n;
+        const uint32_t *w = dd_tv(t, n);
         uint32_t i = (uint32_t)dd_index_of(t, n, v);
         for (uint32_t j = 0; j < 4; j++) {
             if (j == i) continue;
@@ -567,7 +578,7 @@ static uint32_t star_number_vertices(dd_tri *t)
     uint32_t nl = 3, *vc = t->vcell;
     for (size_t b = 0; b < t->boundary.n; b++) {
         uint32_t f = t->boundary.a[b], i = f & 3;
-        const uint32_t *w = t->tv + 4 * (size_t)(f >> 2);
+        const uint32_t *w = dd_tv(t, (f >> 2));
         for (uint32_t k = 0; k < 4; k++) {
             if (k == i || w[k] >= DD_QD) continue;
             uint32_t x = vc[w[k]], fresh = !(x & STAR_TAG);
@@ -594,11 +605,11 @@ void dd_fill_star(dd_tri *t, uint32_t v)
     for (size_t k = 0; k < nb; k++) {
         uint32_t f = t->boundary.a[k], c = f >> 2, i = f & 3;
         uint32_t n = dd_new_cell(t);
-        const uint32_t *src = t->tv + 4 * (size_t)c;
-        uint32_t *dst = t->tv + 4 * (size_t)n, loc[4];
+        const uint32_t *src = dd_tv(t, c);
+        uint32_t *dst = dd_tv(t, n), loc[4];
         for (uint32_t j = 0; j < 4; j++) dst[j] = src[j];
         dst[i] = v;
-        dd_glue(t, 4 * n + i, t->tn[f]);
+        dd_glue(t, 4 * n + i, *dd_fn(t, f));
         t->boundary.a[k] = n;
         if (!nl) continue;
         for (uint32_t j = 0; j < 4; j++) loc[j] = j == i ? 0 : star_local(vc, dst[j]);
@@ -616,10 +627,10 @@ void dd_fill_star(dd_tri *t, uint32_t v)
     for (size_t k = 0; k < nb; k++) {
         uint32_t n = t->boundary.a[k];
         if (nl)
-            for (uint32_t r = 0, *p = pending + 6 * k; r < 3; r++, p += 2) t->tn[p[0]] = e[p[1]];
+            for (uint32_t r = 0, *p = pending + 6 * k; r < 3; r++, p += 2) *dd_fn(t, p[0]) = e[p[1]];
         int outer = 0;
         for (uint32_t j = 0; j < 4; j++) {
-            uint32_t w = t->tv[4 * (size_t)n + j];
+            uint32_t w = dd_tv(t, n)[j];
             if (w == DD_INF) { t->inf_cell = n; outer = 1; }
             else if (w == DD_QD) outer = 1;
             else t->vcell[w] = n;
@@ -655,13 +666,13 @@ dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
 {
     const double *p = dd_pt(t, v);
     uint32_t start = t->hint;
-    if (start == DD_NONE || t->tv[4 * (size_t)start] == DD_DEAD) start = t->inf_cell;
+    if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
     dd_status s = dd_locate(t, p, start, &c0);
     if (s != DD_OK) return s;
     if (!dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
         for (uint32_t k = 0; k < 4; k++) {
-            uint32_t w = t->tv[4 * (size_t)c0 + k];
+            uint32_t w = dd_tv(t, c0)[k];
             if (dd_lex_cmp(dd_pt(t, w), p) == 0)
                 return dd_fail(t, DD_ERR_DUPLICATE, "point %u equals vertex %u", t->v2in[v], t->v2in[w]);
         }

@@ -3,9 +3,13 @@
  * orientation (DESIGN 4).  Every other file uses these tables; nobody keeps
  * a private copy.
  *
- * Cells.  Cell t has vertices tv[4t+0..3] and neighbours tn[4t+i] = 4u+j:
+ * Cells.  Cell t has vertices tv(t)[0..3] and neighbours tn(t)[i] = 4u+j:
  * u is the cell across the facet opposite vertex i, and j is that facet's
- * index in u.  Invariant: tn[tn[f]] == f for every live facet f.
+ * index in u; facet f = 4t+i.  Invariant: fn(fn(f)) == f for every live
+ * facet f (fn(f) = tn(f/4)[f%4]).  The two live side by side, one 32-byte
+ * record a cell in a 64-byte aligned array (dd_tv, dd_tn, dd_fn): the walk
+ * and the conflict search that read a cell's vertices then read its
+ * neighbours (or write them, gluing), and so miss the cache once, not twice.
  *
  * Orientation.  A finite cell is positively oriented:
  * orient3d(p[tv0], p[tv1], p[tv2], p[tv3]) > 0.  An infinite cell has
@@ -15,8 +19,8 @@
  * (facet i, then vertex i) has the cell's orientation:
  * orient3d(v[f0], v[f1], v[f2], x) > 0  iff  x is on v[i]'s side of facet i.
  *
- * Dead cells have tv[4t] == DD_DEAD; they are chained in a free list
- * through tn[4t] and reused before the arrays grow.
+ * Dead cells have tv(t)[0] == DD_DEAD; they are chained in a free list
+ * through tn(t)[0] and reused before the array grows.
  *
  * Marks.  stamp[t] holds a 16-bit epoch; a cell is marked in the current
  * pass iff stamp[t] equals the pass's epoch.  Passes never clear marks:
@@ -43,7 +47,7 @@
 #include "pred.h"
 
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
-#define DD_DEAD (UINT32_MAX - 1)    /* tv[4t] of a dead cell               */
+#define DD_DEAD (UINT32_MAX - 1)    /* tv(t)[0] of a dead cell             */
 #define DD_NONE UINT32_MAX          /* no cell / no facet                  */
 #define DD_QD   (UINT32_MAX - 2)    /* the dummy vertex q-boundary of a
                                        conflict DT (delete.h)              */
@@ -169,11 +173,12 @@ struct dd_tri {
     int borrowed;             /* xyz, vcell, v2in belong to another dd_tri */
 
     /* cells */
-    uint32_t *tv, *tn;
+    uint32_t *cell;           /* DD_CELL_WORDS a cell: vertices, neighbours */
+    void *cell_block;         /* the allocation holding cell (aligned in it) */
     dd_mark *stamp;
     uint32_t ncell, cap_c;    /* high-water mark and capacity            */
     uint32_t nlive, nfinite;
-    uint32_t free_head;       /* free list through tn[4t], DD_NONE = empty */
+    uint32_t free_head;       /* free list through tn(t)[0], DD_NONE = empty */
     uint32_t nfree;           /* cells on the free list                  */
     uint32_t epoch;
     uint32_t hint;            /* where the next point location starts    */
@@ -204,16 +209,42 @@ static inline const double *dd_pt(const dd_tri *t, uint32_t v)
     return t->xyz + 3 * (size_t)v;
 }
 
+#define DD_CELL_WORDS 8
+
+/* The four vertices of cell c. */
+static inline uint32_t *dd_tv(const dd_tri *t, uint32_t c)
+{
+    return t->cell + DD_CELL_WORDS * (size_t)c;
+}
+
+/* The four neighbour facets of cell c. */
+static inline uint32_t *dd_tn(const dd_tri *t, uint32_t c)
+{
+    return t->cell + DD_CELL_WORDS * (size_t)c + 4;
+}
+
+/* The neighbour entry of facet f = 4c+i (dd_tn(t, c) + i), and the vertex
+ * opposite it (dd_tv(t, c) + i).                                          */
+static inline uint32_t *dd_fn(const dd_tri *t, uint32_t f)
+{
+    return t->cell + 2 * (size_t)f - (f & 3) + 4;
+}
+
+static inline uint32_t *dd_fv(const dd_tri *t, uint32_t f)
+{
+    return t->cell + 2 * (size_t)f - (f & 3);
+}
+
 static inline int dd_is_infinite_cell(const dd_tri *t, uint32_t c)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     return v[0] == DD_INF || v[1] == DD_INF || v[2] == DD_INF || v[3] == DD_INF;
 }
 
 /* A cell with DD_INF or DD_QD: not a finite tetrahedron of the domain. */
 static inline int dd_is_outer_cell(const dd_tri *t, uint32_t c)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     for (int i = 0; i < 4; i++)
         if (v[i] >= DD_QD) return 1;
     return 0;
@@ -222,7 +253,7 @@ static inline int dd_is_outer_cell(const dd_tri *t, uint32_t c)
 /* Position of vertex x in cell c, or -1. */
 static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
 {
-    const uint32_t *v = t->tv + 4 * (size_t)c;
+    const uint32_t *v = dd_tv(t, c);
     return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : v[3] == x ? 3 : -1;
 }
 
@@ -268,8 +299,8 @@ void dd_kill_cell(dd_tri *t, uint32_t c);
 
 static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
 {
-    t->tn[f] = g;
-    t->tn[g] = f;
+    *dd_fn(t, f) = g;
+    *dd_fn(t, g) = f;
 }
 
 /* Conflict test of the perturbed Delaunay triangulation: 1 when point p

@@ -430,9 +430,9 @@ static dd_status qs_export(dd_del *d, struct dd_qs *s)
         uint32_t m = dd_new_cell(x);
         const qs_cell *a = &s->c[c];
         for (uint32_t i = 0; i < 4; i++) {
-            x->tv[4 * (size_t)m + i] = a->v[i] == QS_INF ? DD_INF : gid[a->v[i]];
+            dd_tv(x, m)[i] = a->v[i] == QS_INF ? DD_INF : gid[a->v[i]];
             uint32_t f = a->n[i], g = s->map[f >> 2];
-            x->tn[4 * (size_t)m + i] = g == UINT32_MAX ? DD_NONE : 4 * g + (f & 3);
+            dd_tn(x, m)[i] = g == UINT32_MAX ? DD_NONE : 4 * g + (f & 3);
         }
         d->fill.a[d->fill.n++] = m;
     }

@@ -827,7 +827,7 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
      * w->loc holds the local number of each finite link vertex.         */
     for (size_t k = 0; k < d->star.n; k++) {
         uint32_t c = d->star.a[k];
-        const uint32_t *v = t->tv + 4 * (size_t)c;
+        const uint32_t *v = dd_tv(t, c);
         int i = dd_index_of(t, c, d->q);
         uint32_t lv[3];
         for (int j = 0; j < 3; j++) {
@@ -841,7 +841,7 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start)
         uint64_t key = w_tri_key(lv[0], lv[1], lv[2]) |
                        (uint64_t)(lv[0] != inf && lv[1] != inf && lv[2] != inf) << 63;
         if (key < kmin) { kmin = key; rmin = w->nrec; }
-        w->out[w->nrec] = t->tn[4 * (size_t)c + (uint32_t)i];
+        w->out[w->nrec] = dd_tn(t, c)[(uint32_t)i];
         w_open(w, val, lv[0], lv[1], lv[2], W_NONE);
     }
     if (w->nrec == 0) return w_broken(d, "no link triangle");
@@ -923,7 +923,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         if (fp >= limit) W_WRONG("the fill does not close");
         if (fp == room && (s = w_reserve_fill(d, w, fp, room *= 2)) != DD_OK) return s;
         uint32_t m = dd_new_cell(x), lv[4] = {a, b, e, p};
-        uint32_t *tv = x->tv + 4 * (size_t)m, *tn = x->tn + 4 * (size_t)m, *so = d->sew_out.a + 4 * fp;
+        uint32_t *tv = dd_tv(x, m), *tn = dd_tn(x, m), *so = d->sew_out.a + 4 * fp;
         for (int i = 0; i < 4; i++) {
             tv[i] = lv[i] == inf ? DD_INF : gid[lv[i]];
             w->lcell[4 * (size_t)m + i] = lv[i];
@@ -943,7 +943,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         W_CHECK_FACET(w->own[r]);
         tn[3] = w->own[r];
         if (w->own[r] != W_NONE) {
-            x->tn[w->own[r]] = 4 * m + 3;
+            *dd_fn(x, w->own[r]) = 4 * m + 3;
             so[3] = DD_NONE;
         } else {
             so[3] = w->out[r];
@@ -964,7 +964,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
                 w->closed[o] = 1;
                 tn[j] = w->own[o];
                 if (w->own[o] != W_NONE) {
-                    x->tn[w->own[o]] = 4 * m + j;
+                    *dd_fn(x, w->own[o]) = 4 * m + j;
                     so[j] = DD_NONE;
                 } else {
                     so[j] = w->out[o];

@@ -53,7 +53,7 @@ static size_t scratch_link(const double *pts, const uint32_t *keep, uint32_t nk,
                 int i = dd_index_of(t, c, d->q);
                 int32_t w[3];
                 for (int m = 0; m < 3; m++) {
-                    int32_t x = dd_input_index(t, t->tv[4 * c + (uint32_t)dd_facet[i][m]]);
+                    int32_t x = dd_input_index(t, dd_tv(t, c)[(uint32_t)dd_facet[i][m]]);
                     w[m] = x < 0 ? -1 : (int32_t)keep[x];
                 }
                 out[n++] = norm(w[0], w[1], w[2]);
@@ -119,7 +119,7 @@ static int tree_ok(const double *pts, uint32_t n, uint32_t qi, char *why, size_t
         uint32_t c = d->star.a[k];
         int i = dd_index_of(t, c, d->q);
         for (int m = 0; m < 3; m++) {
-            uint32_t w = t->tv[4 * c + (uint32_t)dd_facet[i][m]], j = 0;
+            uint32_t w = dd_tv(t, c)[(uint32_t)dd_facet[i][m]], j = 0;
             while (j < nv && ids[j] != w) j++;
             if (j == nv) ids[nv++] = w;
             tri[3 * k + (uint32_t)m] = j;
