@@ -1,8 +1,9 @@
 /*
  * grr.c -- GRR-CONSTRUCT (paper 4.2; see grr.h).
  *
- * Owns: the sampling sets (link vertices of degree <= 7, all remaining
- * link vertices; each an array plus a position per vertex, O(1) update),
+ * Owns: the sampling sets (link vertices of degree <= 7, one set per
+ * degree; all remaining link vertices; each an array plus a position per
+ * vertex, O(1) update),
  * the removal sequence with its guides, the hash of dummy cells for
  * triangle guides, and guided point location.  Everything is scratch kept
  * in the deletion context and reused.
@@ -15,9 +16,11 @@
 struct dd_grr {
     dd_del *d;
     dd_link link;
-    uint32_t *candpos, *rempos;   /* per vertex id: slot in cand/rem or DD_NONE */
+    uint32_t *candpos, *rempos;   /* per vertex id: slot in rem, or DD_NONE;
+                                     8 * slot + degree in cand[degree]    */
     uint32_t vcap;
-    dd_vec cand, rem;             /* degree <= 7 / all, base points excluded */
+    dd_vec cand[DD_LOWDEG + 1];   /* degree <= 7, by degree; base excluded */
+    dd_vec rem;                   /* all, base points excluded            */
     dd_vec seq, gv, gt;           /* removal order, vertex guides, triangles */
     dd_vec walk;                  /* scratch for locate_from_vertex          */
     dd_trihash dh;                /* dummy cells by their other 3 vertices   */
@@ -29,7 +32,8 @@ void dd_grr_free(dd_grr *g)
     dd_link_free(&g->link);
     free(g->candpos); free(g->rempos);
     dd_trihash_free(&g->dh);
-    dd_vec_free(&g->cand); dd_vec_free(&g->rem); dd_vec_free(&g->seq);
+    for (int k = 0; k <= DD_LOWDEG; k++) dd_vec_free(&g->cand[k]);
+    dd_vec_free(&g->rem); dd_vec_free(&g->seq);
     dd_vec_free(&g->gv); dd_vec_free(&g->gt); dd_vec_free(&g->walk);
     free(g);
 }
@@ -53,18 +57,68 @@ static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
     pos[v] = DD_NONE;
 }
 
+/* The low-degree sets: v (of link degree deg) into cand[deg], out of the
+ * one it was in, if another.                                             */
+_Static_assert(DD_LOWDEG < 8, "grr: a degree must fit the 3 low bits of candpos");
+
+static void cand_del(dd_grr *g, uint32_t v)
+{
+    uint32_t p = g->candpos[v];
+    if (p == DD_NONE) return;
+    dd_vec *s = &g->cand[p & 7];
+    uint32_t i = p >> 3, last = s->a[--s->n];
+    s->a[i] = last;
+    g->candpos[last] = i << 3 | (p & 7);
+    g->candpos[v] = DD_NONE;
+}
+
+static dd_status cand_put(dd_grr *g, uint32_t v, uint32_t deg)
+{
+    uint32_t p = g->candpos[v];
+    if (p != DD_NONE) {
+        if ((p & 7) == deg) return DD_OK;
+        cand_del(g, v);
+    }
+    dd_vec *s = &g->cand[deg];
+    g->candpos[v] = (uint32_t)s->n << 3 | deg;
+    return dd_vec_push(s, v);
+}
+
 uint32_t dd_grr_rand(dd_grr *g) { return dd_del_rand(g->d); }
 void dd_grr_fallback(dd_grr *g) { g->d->fallbacks++; }
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v) { return g->link.deg[v]; }
 
 uint32_t dd_grr_random_lowdeg(dd_grr *g)
 {
-    return g->cand.n ? g->cand.a[dd_del_rand(g->d) % g->cand.n] : DD_NONE;
+    size_t n = 0;
+    for (int k = 0; k <= DD_LOWDEG; k++) n += g->cand[k].n;
+    if (!n) return DD_NONE;
+    size_t r = dd_del_rand(g->d) % n;
+    int k = 0;
+    while (r >= g->cand[k].n) r -= g->cand[k++].n;
+    return g->cand[k].a[r];
+}
+
+uint32_t dd_grr_random_mindeg(dd_grr *g)
+{
+    for (int k = 0; k <= DD_LOWDEG; k++)
+        if (g->cand[k].n) return g->cand[k].a[dd_del_rand(g->d) % g->cand[k].n];
+    return DD_NONE;
 }
 
 uint32_t dd_grr_random_any(dd_grr *g)
 {
     return g->rem.n ? g->rem.a[dd_del_rand(g->d) % g->rem.n] : DD_NONE;
+}
+
+uint32_t dd_grr_sample_mindeg(dd_grr *g)
+{
+    uint32_t u = dd_grr_random_mindeg(g);
+    if (u == DD_NONE) {
+        g->d->fallbacks++;
+        u = dd_grr_random_any(g);
+    }
+    return u;
 }
 
 uint32_t dd_grr_sample_lowdeg(dd_grr *g)
@@ -112,15 +166,15 @@ uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v)
 static dd_status update_sets(dd_grr *g, uint32_t p)
 {
     dd_del *d = g->d;
-    set_del(&g->cand, g->candpos, p);
+    cand_del(g, p);
     set_del(&g->rem, g->rempos, p);
     dd_status s = DD_OK;
     const dd_link *l = &g->link;
     for (uint32_t j = 0; j < l->nring && s == DD_OK; j++) {
         uint32_t u = l->ring[j];
         if (u == DD_INF || g->rempos[u] == DD_NONE) continue;   /* base or INF */
-        if (l->deg[u] <= DD_LOWDEG) s = set_add(&g->cand, g->candpos, u);
-        else set_del(&g->cand, g->candpos, u);
+        if (l->deg[u] <= DD_LOWDEG) s = cand_put(g, u, l->deg[u]);
+        else cand_del(g, u);
     }
     (void)d;
     return s;
@@ -141,13 +195,14 @@ static dd_status init(dd_grr *g)
     }
     dd_status s = dd_link_extract(&g->link, d);
     if (s != DD_OK) return s;
-    g->cand.n = g->rem.n = g->seq.n = g->gv.n = g->gt.n = 0;
+    for (int k = 0; k <= DD_LOWDEG; k++) g->cand[k].n = 0;
+    g->rem.n = g->seq.n = g->gv.n = g->gt.n = 0;
     for (size_t k = 0; k < d->nbr.n; k++) g->candpos[d->nbr.a[k]] = g->rempos[d->nbr.a[k]] = DD_NONE;
     for (size_t k = 0; k < d->nbr.n && s == DD_OK; k++) {
         uint32_t v = d->nbr.a[k];
         if (v == d->base[0] || v == d->base[1] || v == d->base[2] || v == d->base[3]) continue;
         s = set_add(&g->rem, g->rempos, v);
-        if (s == DD_OK && g->link.deg[v] <= DD_LOWDEG) s = set_add(&g->cand, g->candpos, v);
+        if (s == DD_OK && g->link.deg[v] <= DD_LOWDEG) s = cand_put(g, v, g->link.deg[v]);
     }
     return s;
 }

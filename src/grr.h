@@ -49,6 +49,10 @@ uint32_t dd_grr_random_any(dd_grr *g);
 /* The paper's low-degree vertex sampling: a random link vertex of degree
  * <= 7, or (a counted fallback) a random remaining one when none is left. */
 uint32_t dd_grr_sample_lowdeg(dd_grr *g);
+/* A random link vertex of the least degree (base points excluded) if that
+ * is <= 7, or DD_NONE; and the sampling on it, with the same fallback.  */
+uint32_t dd_grr_random_mindeg(dd_grr *g);
+uint32_t dd_grr_sample_mindeg(dd_grr *g);
 /* Link degree of v. */
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v);
 /* Writes v's link neighbours (the infinite vertex included) to out, in

@@ -261,6 +261,53 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
  * and hull vertices alike, and for auto, which wraps below degree 600.
  * The result itself is CGAL's: checked by the tests above.              */
+/* auto's conflict DT from degree 600 (variants/auto.c) deletes the link
+ * vertices in order of least link degree; grr-neighbor in random order of
+ * degree <= 7.  Both must give CGAL's result; the order of least degree
+ * must build fewer cells (on the moment curve, 18% fewer at degree 511:
+ * its links have nearly every vertex at degree 4, and deleting those of
+ * degree 3 first keeps them so).                                        */
+static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
+{
+    uint32_t np;
+    double *p = gen("moment", n, &np);
+    char msg[256], name[96];
+    snprintf(name, sizeof name, "auto-least-degree/moment-%u", np);
+    dd_tri *t;
+    if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "dd_create: %s", msg);
+        free(p);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(p, np);
+    int cg = dd_cgal_remove(g, v);
+    canon ref = theirs(g);
+    const char *vars[2] = {"auto", "grr-neighbor"};
+    uint64_t cells[2] = {0, 0};
+    int ok = cg == 0 && dd_degree(t, v) >= 600;
+    char why[160] = "";
+    for (int k = 0; k < 2 && ok; k++) {
+        dd_delete_stats ds;
+        dd_status s = dd_delete(t, v, vars[k]);
+        dd_last_delete_stats(t, &ds);
+        canon now = ours(t);
+        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK || ds.fallbacks != 0) {
+            snprintf(why, sizeof why, "%s: status %s, %s CGAL's, %llu fallbacks", vars[k], dd_status_name(s),
+                     same(now, ref) ? "equals" : "differs from", (unsigned long long)ds.fallbacks);
+            ok = 0;
+        }
+        cells[k] = ds.tets_created;
+        free(now.a);
+        if (dd_reinsert(t, v) != DD_OK) ok = 0;
+    }
+    tl_check(st, ok && cells[0] < cells[1], name, "%s; cells built: least degree %llu, random %llu", why,
+             (unsigned long long)cells[0], (unsigned long long)cells[1]);
+    free(ref.a);
+    dd_cgal_free(g);
+    dd_free(t);
+    free(p);
+}
+
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {
     uint32_t np;
@@ -672,6 +719,7 @@ int main(int argc, char **argv)
         sequence(&st, "moment-100-all-but-4", p, np, np - 4, 8, var, 14);
         free(p);
     }
+    auto_least_degree(&st, 640, 200);
     const char *wrap_sets[][2] = {{"uniform", "2000"}, {"sphere", "1000"}, {"bunny", "2000"}};
     for (size_t i = 0; i < 3; i++) {
         wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "gift-wrap");
