@@ -38,7 +38,7 @@ done
 build/summarize results/cold results/cold/*.csv
 n=1000000 nh=16000
 [ "$mode" = quick ] && n=200000 nh=4000
-build/dtdel build-bench "$n" >results/build.txt || rc=$?
+build/dtdel build-bench "$n" --reps 5 >results/build.txt || rc=$?
 # and on a curve, where point location is most of the work
 echo >>results/build.txt
 build/dtdel build-bench "$nh" --dataset helix >>results/build.txt || rc=$?
