@@ -81,16 +81,21 @@ static int cmd_gen(int argc, char **argv)
         return usage_error("gen", "N must be a non-negative integer, got '%s'", nstr);
     double *xyz = NULL;
     uint32_t np = 0;
-    char msg[512];
-    dd_status s = dd_gen(name, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg);
-    if (s != DD_OK) {
-        fprintf(stderr, "dtdel gen: %s\n", msg);
-        return s == DD_ERR_PARSE ? EXIT_USAGE : EXIT_INPUT;
-    }
+    int rc = gen_points("gen", name, n, seed, &xyz, &np);
+    if (rc) return rc;
     for (uint32_t i = 0; i < np; i++)
         printf("%.17g %.17g %.17g\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
     free(xyz);
     return 0;
+}
+
+int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np)
+{
+    char msg[512];
+    dd_status s = dd_gen(dataset, (uint32_t)n, seed, xyz, np, msg, sizeof msg);
+    if (s == DD_OK) return 0;
+    fprintf(stderr, "dtdel %s: %s\n", cmd, msg);
+    return s == DD_ERR_PARSE ? EXIT_USAGE : EXIT_INPUT;
 }
 
 /* ---- tets ----------------------------------------------------------------- */
@@ -184,6 +189,23 @@ double median_of(double *a, size_t n)
     return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
 }
 
+int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
+                        int *rc)
+{
+    *rc = 0;
+    if (!strcmp(argv[*i], "--seed")) {
+        if (++*i >= argc || parse_u64(argv[*i], seed))
+            *rc = usage_error(cmd, "--seed needs a non-negative integer%s", "");
+        return 1;
+    }
+    if (!strcmp(argv[*i], "--dataset")) {
+        if (++*i >= argc) *rc = usage_error(cmd, "--dataset needs a name%s", "");
+        else *dataset = argv[*i];
+        return 1;
+    }
+    return 0;
+}
+
 #define BUILD_MAX_REPS 9
 
 /* Each engine builds R times, alternating (dtdel, CGAL, dtdel, ...), so
@@ -194,13 +216,9 @@ static int cmd_build_bench(int argc, char **argv)
     if (wants_help(argc, argv)) return print_help("build-bench");
     const char *dataset = "uniform";
     uint64_t n = 1000000, seed = 1, reps = 3;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--seed")) {
-            if (++i >= argc || parse_u64(argv[i], &seed))
-                return usage_error("build-bench", "--seed needs a non-negative integer%s", "");
-        } else if (!strcmp(argv[i], "--dataset")) {
-            if (++i >= argc) return usage_error("build-bench", "--dataset needs a name%s", "");
-            dataset = argv[i];
+    for (int i = 1, rc; i < argc; i++) {
+        if (take_dataset_option("build-bench", argc, argv, &i, &dataset, &seed, &rc)) {
+            if (rc) return rc;
         } else if (!strcmp(argv[i], "--reps")) {
             if (++i >= argc || parse_u64(argv[i], &reps) || reps < 1 || reps > BUILD_MAX_REPS)
                 return usage_error("build-bench", "--reps needs an integer from 1 to 9%s", "");
@@ -211,10 +229,8 @@ static int cmd_build_bench(int argc, char **argv)
     double *xyz;
     uint32_t np;
     char msg[512];
-    if (dd_gen(dataset, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg) != DD_OK) {
-        fprintf(stderr, "dtdel build-bench: %s\n", msg);
-        return EXIT_INPUT;
-    }
+    int rc = gen_points("build-bench", dataset, n, seed, &xyz, &np);
+    if (rc) return rc;
     double ours[BUILD_MAX_REPS], theirs[BUILD_MAX_REPS];
     dd_tri *t = NULL;
     dd_cgal *c = NULL;

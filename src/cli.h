@@ -51,6 +51,15 @@ int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
  * strategy), then times its re-insertion alone into *secs.  0; -1 when
  * the deletion failed, -2 when the re-insertion did (dd_errmsg says why). */
 int reinsert_timed(dd_tri *t, uint32_t v, double *secs);
+/* Points of a generated dataset (dd_gen); 0, or the exit status after a
+ * message on stderr: EXIT_USAGE for an unknown dataset, else EXIT_INPUT. */
+int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np);
+/* --seed S and --dataset NAME of the commands that generate their points
+ * (build-bench, seq-bench): 1 when argv[*i] is one of them (taken, *i on
+ * its value; *rc a usage error when that is missing or bad, else 0), 0
+ * when it is neither.                                                    */
+int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
+                        int *rc);
 /* The median of a[0..n), n > 0; sorts a. */
 double median_of(double *a, size_t n);
 

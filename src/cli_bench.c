@@ -411,13 +411,9 @@ int cmd_seq_bench(int argc, char **argv)
     const char *dataset = "uniform", *var = "auto";
     uint64_t n = 1000000, seed = 1;
     double frac = 0.1;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--seed")) {
-            if (++i >= argc || parse_u64(argv[i], &seed))
-                return usage_error("seq-bench", "--seed needs a non-negative integer%s", "");
-        } else if (!strcmp(argv[i], "--dataset")) {
-            if (++i >= argc) return usage_error("seq-bench", "--dataset needs a name%s", "");
-            dataset = argv[i];
+    for (int i = 1, rc; i < argc; i++) {
+        if (take_dataset_option("seq-bench", argc, argv, &i, &dataset, &seed, &rc)) {
+            if (rc) return rc;
         } else if (!strcmp(argv[i], "--variant")) {
             if (++i >= argc) return usage_error("seq-bench", "--variant needs a name%s", "");
             var = argv[i];
@@ -439,10 +435,8 @@ int cmd_seq_bench(int argc, char **argv)
     double *xyz;
     uint32_t np;
     char msg[512];
-    if (dd_gen(dataset, (uint32_t)n, seed, &xyz, &np, msg, sizeof msg) != DD_OK) {
-        fprintf(stderr, "dtdel seq-bench: %s\n", msg);
-        return EXIT_INPUT;
-    }
+    int rc = gen_points("seq-bench", dataset, n, seed, &xyz, &np);
+    if (rc) return rc;
     dd_tri *t = NULL;
     if (dd_create(&t, xyz, np, msg, sizeof msg) != DD_OK) {
         fprintf(stderr, "dtdel seq-bench: %s\n", msg);
@@ -490,7 +484,7 @@ int cmd_seq_bench(int argc, char **argv)
     double secs[NRUN];
     int32_t *canon[NRUN] = {NULL};
     size_t nc[NRUN] = {0};
-    int rc = 0;
+    rc = 0;
     for (int i = 0; i < NRUN && !rc; i++) {
         secs[i] = seq_run(xyz, np, i == 0 ? t : NULL, runs[i].order, k, runs[i].engine ? var : NULL, runs[i].set,
                           &canon[i], &nc[i]);

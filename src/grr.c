@@ -111,25 +111,16 @@ uint32_t dd_grr_random_any(dd_grr *g)
     return g->rem.n ? g->rem.a[dd_del_rand(g->d) % g->rem.n] : DD_NONE;
 }
 
-uint32_t dd_grr_sample_mindeg(dd_grr *g)
+/* u, or (a counted fallback) a random remaining vertex when u is none. */
+static uint32_t or_any(dd_grr *g, uint32_t u)
 {
-    uint32_t u = dd_grr_random_mindeg(g);
-    if (u == DD_NONE) {
-        g->d->fallbacks++;
-        u = dd_grr_random_any(g);
-    }
-    return u;
+    if (u != DD_NONE) return u;
+    g->d->fallbacks++;
+    return dd_grr_random_any(g);
 }
 
-uint32_t dd_grr_sample_lowdeg(dd_grr *g)
-{
-    uint32_t u = dd_grr_random_lowdeg(g);
-    if (u == DD_NONE) {
-        g->d->fallbacks++;
-        u = dd_grr_random_any(g);
-    }
-    return u;
-}
+uint32_t dd_grr_sample_mindeg(dd_grr *g) { return or_any(g, dd_grr_random_mindeg(g)); }
+uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, dd_grr_random_lowdeg(g)); }
 
 uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
 {

@@ -135,11 +135,15 @@ bench_ok build-bench "$ratio" 3000 --reps 2
 bench_ok build-bench "$ratio" 2000 --dataset helix --reps 1
 bench_ok build-bench "$ratio" 1000 --dataset grid --reps 1
 expect build-bench-reps 2 "reps needs an integer from 1 to 9" "$DTDEL" build-bench 100 --reps 10
+expect build-bench-unknown-dataset 2 "dtdel build-bench: unknown dataset" "$DTDEL" build-bench 100 --dataset nosuchset
+expect build-bench-seed 2 "seed needs a non-negative integer" "$DTDEL" build-bench 100 --seed x
 # seq-bench: most of the vertices deleted one after another, every final DT equal to CGAL's
 bench_ok seq-bench 'deleted one after another' 3000 --fraction 0.5
 bench_ok seq-bench 'deleted one after another' 1000 --dataset grid --fraction 0.9 --variant grr-neighbor
 bench_ok seq-bench 'deleted one after another' 500 --dataset cosphere --fraction 0.9 --variant gift-wrap
 expect seq-bench-fraction 2 "fraction wants a number in" "$DTDEL" seq-bench 100 --fraction 2
+expect seq-bench-unknown-dataset 2 "dtdel seq-bench: unknown dataset" "$DTDEL" seq-bench 100 --dataset nosuchset
+expect seq-bench-dataset 2 "dataset needs a name" "$DTDEL" seq-bench 100 --dataset
 expect seq-bench-cgal-row 1 "unknown engine strategy 'cgal'" "$DTDEL" seq-bench 100 --variant cgal
 out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 8 --seed 4 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ' 8/8 matched')" -eq "$("$DTDEL" variants | wc -l)" ]; then
