@@ -43,8 +43,9 @@ int dd_is_vertex(const dd_tri *t, uint32_t i)
 
 size_t dd_memory_bytes(const dd_tri *t)
 {
-    /* cells: records (plus the alignment slack), stamp; vertices: xyz, vcell, v2in; inputs: in2v;
-     * insertion scratch: the three vectors, the edge hash and table      */
+    /* cells: records (plus the alignment slack), stamp; vertices: xyz,
+     * vcell, v2in; inputs: in2v; insertion scratch: the three vectors,
+     * the edge hash and table                                            */
     return (size_t)t->cap_c * (DD_CELL_WORDS * sizeof(uint32_t) + sizeof(dd_mark)) + (t->cell_block ? 64 : 0)
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
          + (size_t)t->cap_in * sizeof(uint32_t)

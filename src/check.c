@@ -45,7 +45,7 @@ dd_status dd_check(dd_tri *t)
         if (ninf == 0) finite++;
         for (uint32_t i = 0; i < 4; i++) {
             uint32_t f = dd_tn(t, c)[i];
-            if (f == DD_NONE || (f >> 2) >= t->ncell || dd_tv(t, (f >> 2))[0] == DD_DEAD)
+            if (f == DD_NONE || (f >> 2) >= t->ncell || dd_tv(t, f >> 2)[0] == DD_DEAD)
                 return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: no live neighbour", c, i);
             if (*dd_fn(t, f) != 4 * c + i)
                 return dd_fail(t, DD_ERR_INTERNAL, "cell %u facet %u: neighbour link not symmetric", c, i);

@@ -189,6 +189,15 @@ double median_of(double *a, size_t n)
     return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
 }
 
+uint32_t draw_vertex(const dd_tri *t, uint64_t *x, uint32_t np, unsigned char *used)
+{
+    uint32_t v;
+    do v = rand_below(x, np);
+    while (used[v] || !dd_is_vertex(t, v));
+    used[v] = 1;
+    return v;
+}
+
 int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
                         int *rc)
 {

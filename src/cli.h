@@ -60,6 +60,16 @@ int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, 
  * when it is neither.                                                    */
 int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
                         int *rc);
+/* The seeded draws of the CLI (bench and check samples, seq-bench's
+ * shuffle): one xorshift64 step of *x, then a number below m.           */
+static inline uint32_t rand_below(uint64_t *x, uint32_t m)
+{
+    *x ^= *x << 13; *x ^= *x >> 7; *x ^= *x << 17;
+    return (uint32_t)((*x >> 11) % m);
+}
+/* A vertex of t among input indices below np not yet used (used[v] then
+ * set), drawn with rand_below; t must have one left.                    */
+uint32_t draw_vertex(const dd_tri *t, uint64_t *x, uint32_t np, unsigned char *used);
 /* The median of a[0..n), n > 0; sorts a. */
 double median_of(double *a, size_t n);
 

@@ -235,12 +235,7 @@ int cmd_bench(int argc, char **argv)
         unsigned char *used = calloc(np, 1);
         uint32_t *nb = malloc((np + 1) * sizeof *nb);
         for (uint32_t it = 0; it < k; it++) {
-            uint32_t v;
-            do {
-                x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-                v = (uint32_t)((x >> 11) % np);
-            } while (used[v] || !dd_is_vertex(t, v));
-            used[v] = 1;
+            uint32_t v = draw_vertex(t, &x, np, used);
             uint32_t deg = dd_degree(t, v), hull = (uint32_t)dd_on_hull(t, v);
             uint32_t nnb = dd_neighbors(t, v, nb, np);
             uint64_t refh = 0, pre = 0;
@@ -457,8 +452,7 @@ int cmd_seq_bench(int argc, char **argv)
         if (dd_is_vertex(t, i)) rnd[nv++] = i;
     uint64_t x = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
     for (uint32_t i = nv; i > 1; i--) {
-        x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-        uint32_t j = (uint32_t)((x >> 11) % i), s = rnd[i - 1];
+        uint32_t j = rand_below(&x, i), s = rnd[i - 1];
         rnd[i - 1] = rnd[j];
         rnd[j] = s;
     }

@@ -340,15 +340,7 @@ int cmd_check(int argc, char **argv)
     uint32_t nvert = dd_num_vertices(probe);
     if (k > nvert) k = nvert;
     unsigned char *chosen = calloc(np ? np : 1, 1);
-    for (uint64_t i = 0; i < k && chosen; i++) {
-        uint32_t v;
-        do {
-            x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-            v = (uint32_t)((x >> 11) % np);
-        } while (!dd_is_vertex(probe, v) || chosen[v]);
-        chosen[v] = 1;
-        sample[i] = v;
-    }
+    for (uint64_t i = 0; i < k && chosen; i++) sample[i] = draw_vertex(probe, &x, np, chosen);
     free(chosen);
     dd_free(probe);
     int any_bad = 0;

@@ -517,16 +517,6 @@ static int cmp_u32(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* A set of deletions.  The result, DT of the points left, does not depend
- * on the order (the perturbed DT is unique), so they go in vertex id
- * order: the insertion order, BRIO rounds along a Hilbert curve, so that
- * consecutive deletions work in nearby cells and points, in space and in
- * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
- * against a random order, scratch harness).  Checked before the first:
- * every index a vertex and listed once, and the points left at least 4
- * and not all in one plane; then no deletion of the sequence can be
- * refused (each leaves a superset of them).  An unforeseen failure (out
- * of memory) re-inserts those done, in reverse, which restores DT(S).   */
 /* Lists in left[0..max) the first vertices, in id order, that are not
  * among the sorted ids[0..n); returns how many.                          */
 static uint32_t vertices_left(const dd_tri *t, const uint32_t *ids, size_t n, uint32_t *left, uint32_t max)
@@ -559,6 +549,16 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
     return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
 }
 
+/* A set of deletions.  The result, DT of the points left, does not depend
+ * on the order (the perturbed DT is unique), so they go in vertex id
+ * order: the insertion order, BRIO rounds along a Hilbert curve, so that
+ * consecutive deletions work in nearby cells and points, in space and in
+ * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
+ * against a random order, scratch harness).  Checked before the first:
+ * every index a vertex and listed once, and the points left at least 4
+ * and not all in one plane; then no deletion of the sequence can be
+ * refused (each leaves a superset of them).  An unforeseen failure (out
+ * of memory) re-inserts those done, in reverse, which restores DT(S).   */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
     const dd_variant *var;

@@ -156,7 +156,6 @@ uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v)
 /* Updates the sets after a link deletion of p (ring = p's old neighbours). */
 static dd_status update_sets(dd_grr *g, uint32_t p)
 {
-    dd_del *d = g->d;
     cand_del(g, p);
     set_del(&g->rem, g->rempos, p);
     dd_status s = DD_OK;
@@ -167,7 +166,6 @@ static dd_status update_sets(dd_grr *g, uint32_t p)
         if (l->deg[u] <= DD_LOWDEG) s = cand_put(g, u, l->deg[u]);
         else cand_del(g, u);
     }
-    (void)d;
     return s;
 }
 

@@ -578,7 +578,7 @@ static uint32_t star_number_vertices(dd_tri *t)
     uint32_t nl = 3, *vc = t->vcell;
     for (size_t b = 0; b < t->boundary.n; b++) {
         uint32_t f = t->boundary.a[b], i = f & 3;
-        const uint32_t *w = dd_tv(t, (f >> 2));
+        const uint32_t *w = dd_tv(t, f >> 2);
         for (uint32_t k = 0; k < 4; k++) {
             if (k == i || w[k] >= DD_QD) continue;
             uint32_t x = vc[w[k]], fresh = !(x & STAR_TAG);

@@ -255,12 +255,6 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
     return p;
 }
 
-/* Gift wrapping (wrap.c) builds the fill's cells and no others: the
- * cells it reports built equal the cells the deletion added, counted from
- * the mesh (a link of degree d, the infinite vertex included, is a
- * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
- * and hull vertices alike, and for auto, which wraps below degree 600.
- * The result itself is CGAL's: checked by the tests above.              */
 /* auto's conflict DT from degree 600 (variants/auto.c) deletes the link
  * vertices in order of least link degree; grr-neighbor in random order of
  * degree <= 7.  Both must give CGAL's result; the order of least degree
@@ -308,6 +302,12 @@ static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
     free(p);
 }
 
+/* Gift wrapping (wrap.c) builds the fill's cells and no others: the
+ * cells it reports built equal the cells the deletion added, counted from
+ * the mesh (a link of degree d, the infinite vertex included, is a
+ * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
+ * and hull vertices alike, and for auto, which wraps below degree 600.
+ * The result itself is CGAL's: checked by the tests above.              */
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {
     uint32_t np;
