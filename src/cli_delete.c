@@ -189,9 +189,13 @@ int cmd_delete(int argc, char **argv)
                         (unsigned long long)st.fallbacks, (unsigned long long)st.locate_steps);
                 for (int b = 3; b < DD_LINKDEG_BUCKETS; b++)
                     if (st.link_deletions[b]) fprintf(stderr, " %d%s:%u", b, b == DD_LINKDEG_BUCKETS - 1 ? "+" : "", st.link_deletions[b]);
+                static const char *const guess[] = {"every neighbour", "short lists of known neighbours",
+                                                    "known neighbours, two steps"};
                 if (st.wrap > 0)
-                    fprintf(stderr, "\n  gift wrap: %s lifts, %u tests left to the exact predicates",
-                            st.wrap_integer ? "integer (exact)" : "rounded", st.wrap_expansions);
+                    fprintf(stderr, "\n  gift wrap: %s lifts, %u tests left to the exact predicates, last guess"
+                                    " over %s, %u narrow guesses refuted",
+                            st.wrap_integer ? "integer (exact)" : "rounded", st.wrap_expansions,
+                            guess[st.wrap_guess], st.wrap_narrow_refuted);
                 fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",
                         (unsigned long long)cn.insphere_calls, (unsigned long long)cn.insphere_exact,
                         (unsigned long long)cn.orient_calls, (unsigned long long)cn.orient_exact,

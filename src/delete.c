@@ -444,6 +444,8 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->locate_steps = 0;
     d->forced_fill = 0;
     d->wrap_how = DD_WRAP_NONE;
+    d->wrap_guess = DD_GUESS_WIDE;
+    d->wrap_narrow_refuted = 0;
     d->wrap_integer = 0;
     d->wrap_expansions = 0;
     memset(d->link_deletions, 0, sizeof d->link_deletions);
@@ -685,6 +687,8 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
     st->locate_steps = d->locate_steps;
     st->forced_fill = d->forced_fill;
     st->wrap = d->wrap_how;
+    st->wrap_guess = d->wrap_guess;
+    st->wrap_narrow_refuted = d->wrap_narrow_refuted;
     st->wrap_integer = d->wrap_integer;
     st->wrap_expansions = d->wrap_expansions;
     memcpy(st->link_deletions, d->link_deletions, sizeof st->link_deletions);

@@ -79,6 +79,8 @@ typedef struct dd_del {
     uint64_t locate_steps;        /* cells tested by guided/scan location  */
     int forced_fill;              /* fill_coplanar_hull ran                */
     int wrap_how;                 /* DD_WRAP_*, set by dd_wrap_fill        */
+    int wrap_guess;               /* DD_GUESS_*, set by dd_wrap_fill       */
+    uint32_t wrap_narrow_refuted; /* dd_wrap_fill: narrow guesses refuted  */
     int wrap_integer;             /* dd_wrap_fill: integer lifts            */
     uint32_t wrap_expansions;     /* dd_wrap_fill: tests left to the exact
                                      predicates                            */

@@ -134,6 +134,14 @@ enum {
     DD_WRAP_DECLINED    /* left to the conflict DT                         */
 };
 
+/* Where the wrap's last guess took its candidates (wrap.c,
+ * w_guess_narrow), in dd_delete_stats.wrap_guess.                     */
+enum {
+    DD_GUESS_WIDE,      /* every neighbour                                 */
+    DD_GUESS_SHORT,     /* the short lists of known neighbours             */
+    DD_GUESS_TWO_STEP   /* those and their own lists                       */
+};
+
 /* What the last dd_delete did.  Phase times only in counting builds. */
 typedef struct dd_delete_stats {
     uint32_t degree;          /* neighbours, the infinite vertex included  */
@@ -142,6 +150,8 @@ typedef struct dd_delete_stats {
                                  neighbours: the framework's forced fill
                                  ran instead of the strategy             */
     int wrap;                 /* gift wrapping's course: DD_WRAP_*        */
+    int wrap_guess;           /* its last guess's candidates: DD_GUESS_*  */
+    uint32_t wrap_narrow_refuted; /* narrow guesses refuted before it     */
     int wrap_integer;         /* the wrap's lifts were integers: each of
                                  its tests exact in doubles (wrap.c)      */
     uint32_t wrap_expansions; /* the wrap's tests left to the exact

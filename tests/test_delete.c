@@ -255,18 +255,23 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
     return p;
 }
 
-/* auto's conflict DT from degree 600 (variants/auto.c) deletes the link
- * vertices in order of least link degree; grr-neighbor in random order of
- * degree <= 7.  Both must give CGAL's result; the order of least degree
- * must build fewer cells (on the moment curve, 18% fewer at degree 511:
- * its links have nearly every vertex at degree 4, and deleting those of
- * degree 3 first keeps them so).                                        */
-static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
+/* auto's conflict DT from degree 40 (variants/auto.c), where the wrap
+ * declines, deletes the link vertices in order of least link degree;
+ * grr-neighbor in random order of degree <= 7.  Both must give CGAL's
+ * result; the order of least degree must build fewer cells.  The vertex:
+ * the centre of n points of a sphere, whose link has no hub, so that from
+ * degree 600 auto does not try the wide guess and the conflict DT runs
+ * (degree 700: 10503 cells against 11949; on the moment curve, where the
+ * GRR ran before the narrow guesses, 18% fewer at degree 511).          */
+static void auto_least_degree(tl_state *st, uint32_t n)
 {
     uint32_t np;
-    double *p = gen("moment", n, &np);
+    double *p = gen("sphere", n, &np);
+    p = realloc(p, 3 * sizeof *p * (np + 1));
+    p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
+    const uint32_t v = np++;
     char msg[256], name[96];
-    snprintf(name, sizeof name, "auto-least-degree/moment-%u", np);
+    snprintf(name, sizeof name, "auto-least-degree/sphere-%u-centre", np - 1);
     dd_tri *t;
     if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
         tl_check(st, 0, name, "dd_create: %s", msg);
@@ -278,7 +283,7 @@ static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
     canon ref = theirs(g);
     const char *vars[2] = {"auto", "grr-neighbor"};
     uint64_t cells[2] = {0, 0};
-    int ok = cg == 0 && dd_degree(t, v) >= 600;
+    int ok = cg == 0 && dd_degree(t, v) >= 600, wrap = DD_WRAP_NONE;
     char why[160] = "";
     for (int k = 0; k < 2 && ok; k++) {
         dd_delete_stats ds;
@@ -291,11 +296,13 @@ static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
             ok = 0;
         }
         cells[k] = ds.tets_created;
+        if (k == 0) wrap = ds.wrap;
         free(now.a);
         if (dd_reinsert(t, v) != DD_OK) ok = 0;
     }
-    tl_check(st, ok && cells[0] < cells[1], name, "%s; cells built: least degree %llu, random %llu", why,
-             (unsigned long long)cells[0], (unsigned long long)cells[1]);
+    tl_check(st, ok && wrap == DD_WRAP_DECLINED && cells[0] < cells[1], name,
+             "%s; auto's wrap: course %d (declined: %d); cells built: least degree %llu, random %llu", why, wrap,
+             DD_WRAP_DECLINED, (unsigned long long)cells[0], (unsigned long long)cells[1]);
     free(ref.a);
     dd_cgal_free(g);
     dd_free(t);
@@ -306,7 +313,7 @@ static void auto_least_degree(tl_state *st, uint32_t n, uint32_t v)
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
- * and hull vertices alike, and for auto, which wraps below degree 600.
+ * and hull vertices alike, and for auto, which wraps there.
  * The result itself is CGAL's: checked by the tests above.              */
 static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, const char *variant)
 {
@@ -333,8 +340,9 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
         dd_delete_stats ds_;
         dd_last_delete_stats(t, &ds_);
         size_t fill = dd_num_tets(t) + star - before;
-        /* a refuted guess (wrap_guess_course below) built cells it dropped */
-        if (ds_.wrap != DD_WRAP_REFUTED && ds_.tets_created != fill) {
+        /* a refuted guess (wrap_guess_course, wrap_narrow_course below)
+         * built cells it dropped                                        */
+        if (ds_.wrap != DD_WRAP_REFUTED && ds_.wrap_narrow_refuted == 0 && ds_.tets_created != fill) {
             snprintf(why, sizeof why, "vertex %u (degree %u, hull %d): %llu cells built, fill %zu", v,
                      ds_.degree, ds_.on_hull, (unsigned long long)ds_.tets_created, fill);
             ok = 0;
@@ -457,6 +465,44 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-guess/%s", name);
     wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, k, want, -1);
+}
+
+/* The narrow guesses (wrap.c, w_guess_narrow), on a point set whose
+ * links have hubs: deletes vertices lo..hi-1 with `variant`, each result
+ * CGAL's (wrap_one), none declined, and counts the kept guesses by where
+ * their candidates came from.  want: bit 0, some short-list guess kept
+ * at once; bit 1, some two-step guess kept after a refuted short one;
+ * bit 2, some wide guess kept after two refuted narrow ones (the
+ * sanitizer build's narrower lists, wrap.c).                            */
+static void wrap_narrow_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
+                               uint32_t lo, uint32_t hi, int want)
+{
+    char tn[128], msg[256], why[200] = "";
+    snprintf(tn, sizeof tn, "wrap-narrow/%s/%s", name, variant);
+    dd_tri *t;
+    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, tn, "dd_create: %s", msg);
+        return;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    long course[5] = {0}, bad = 0, done = 0, kept[3] = {0, 0, 0}, after[3] = {0, 0, 0};
+    for (uint32_t v = lo; v < hi && v < n; v++) {
+        dd_delete_stats ds_;
+        if (!dd_is_vertex(t, v) || !wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
+        done++;
+        if (ds_.wrap != DD_WRAP_PROVED) continue;
+        kept[ds_.wrap_guess]++;
+        after[ds_.wrap_guess] += ds_.wrap_narrow_refuted > 0;
+    }
+    int seen = (kept[DD_GUESS_SHORT] > 0) | (after[DD_GUESS_TWO_STEP] > 0) << 1 | (after[DD_GUESS_WIDE] > 0) << 2;
+    tl_check(st, bad == 0 && done > 0 && course[DD_WRAP_DECLINED] == 0 && (seen & want) == want, tn,
+             "%ld of %ld wrong (%s); declined %ld; kept: short %ld, two-step %ld (%ld after a refuted guess), "
+             "wide %ld (%ld after refuted ones)", bad, done, why, course[DD_WRAP_DECLINED], kept[DD_GUESS_SHORT],
+             kept[DD_GUESS_TWO_STEP], after[DD_GUESS_TWO_STEP], kept[DD_GUESS_WIDE], after[DD_GUESS_WIDE]);
+    printf("# %s: %ld deletions; kept: short %ld, two-step %ld, wide %ld (%ld after refuted narrow ones)\n", tn,
+           done, kept[DD_GUESS_SHORT], kept[DD_GUESS_TWO_STEP], kept[DD_GUESS_WIDE], after[DD_GUESS_WIDE]);
+    dd_cgal_free(g);
+    dd_free(t);
 }
 
 static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
@@ -719,7 +765,7 @@ int main(int argc, char **argv)
         sequence(&st, "moment-100-all-but-4", p, np, np - 4, 8, var, 14);
         free(p);
     }
-    auto_least_degree(&st, 640, 200);
+    auto_least_degree(&st, 700);
     const char *wrap_sets[][2] = {{"uniform", "2000"}, {"sphere", "1000"}, {"bunny", "2000"}};
     for (size_t i = 0; i < 3; i++) {
         wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "gift-wrap");
@@ -752,6 +798,23 @@ int main(int argc, char **argv)
          * *unsure).  Every guess must now be proved.                     */
         p = gen("moment", 300, &np);
         wrap_guess_course(&st, "moment-300", p, np, -1, small ? 2 : 6, 5);
+        free(p);
+        /* The narrow guesses: on the helix, n = 4000 (degree ~140, every
+         * link with hubs), the short lists hold for most vertices; for
+         * 69, 70, 87, 89 and 105 the two-step guess holds after them.  (The
+         * helix's DT has ~70 cells a point: each comparison with CGAL's
+         * whole triangulation costs ~0.2 s, so few vertices.)           */
+        p = gen("helix", 4000, &np);
+#ifdef DD_TEST_BUILD
+        const int narrow_want = 7;
+#else
+        const int narrow_want = 3;
+#endif
+        wrap_narrow_course(&st, "helix-4000", p, np, "gift-wrap", 66, 106, narrow_want);
+        free(p);
+        /* from degree 600 auto wraps only with a narrow guess           */
+        p = gen("moment", 640, &np);
+        wrap_narrow_course(&st, "moment-640", p, np, "auto", 0, small ? 2 : 4, 1);
         free(p);
         for (int e = 12; e <= 16; e += 2) {
             char name[64];

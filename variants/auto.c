@@ -2,13 +2,17 @@
  * auto.c -- the default strategy, a dispatcher over the fastest correct
  * choice by the cavity's degree (so that dd_delete(t, v, NULL) is that
  * choice):
- *  - below degree 600: gift wrapping (wrap.h), which builds only the
- *    fill's cells, unless it declines (a refuted guess from 40
- *    neighbours on, a degenerate cavity past its budget of exact tests,
- *    both unless the neighbours are cospherical; a hull whose neighbours
- *    all lie in one plane);
- *  - otherwise, below degree 40, the compact conflict DT (qsmall.c) with
- *    the neighbours inserted nearest to q first;
+ *  - gift wrapping (wrap.h), which builds only the fill's cells: where
+ *    the link has a hub (the curves), narrow guesses first, over the
+ *    known neighbours of each facet's corners, a few points a cell; the
+ *    wide guess, over every neighbour (O(d) a cell), only below degree
+ *    600 (AUTO_WIDE_BELOW_DEGREE); unless it declines (a refuted guess
+ *    from 40 neighbours on, a degenerate cavity past its budget of exact
+ *    tests, both unless the neighbours are cospherical; a hull whose
+ *    neighbours all lie in one plane; from degree 600, no narrow guess
+ *    that holds);
+ *  - where it declines, below degree 40, the compact conflict DT (qsmall.c)
+ *    with the neighbours inserted nearest to q first;
  *  - from 40 on, GRR-CONSTRUCT with grr-neighbor's guides but the link
  *    vertex of least degree deleted first (a random one among those),
  *    not a random one of degree <= 7.
@@ -49,7 +53,14 @@
 #include "../src/wrap.h"
 #include "../src/grr.h"
 
-#define AUTO_WRAP_BELOW_DEGREE 600
+/* The narrow guesses hold on the curves at every degree of the bench
+ * (wrap.c), where wrapping then beats GRR: moment n = 1024, degree
+ * ~1020, median of 5 deletions of 4 vertices, gift-wrap 347-540 us
+ * against 722-766 us for auto (then GRR from degree 600) and 791-1438 us
+ * for grr-neighbor in the same runs, 2.0-2.2 against 4.3-4.8 times a
+ * re-insertion.  Without a narrow guess that holds, the wide guess's
+ * O(d) a cell loses to GRR from degree ~600 (above).                   */
+#define AUTO_WIDE_BELOW_DEGREE 600
 #define AUTO_GRR_FROM_DEGREE 40
 
 /* Below the crossover every neighbour set fits the compact structure. */
@@ -73,21 +84,21 @@ dd_status dd_auto_conflict_dt(dd_del *d)
     return dd_qs_fill(d);
 }
 
-dd_status dd_auto_wrap_first(dd_del *d)
+dd_status dd_auto_wrap_first(dd_del *d, uint32_t wide_below)
 {
     int declined;
-    dd_status s = dd_wrap_fill(d, &declined);
+    dd_status s = dd_wrap_fill(d, wide_below, &declined);
     if (s != DD_OK || !declined) return s;
     return dd_auto_conflict_dt(d);
 }
 
 static dd_status auto_fill(dd_del *d)
 {
-    return d->degree < AUTO_WRAP_BELOW_DEGREE ? dd_auto_wrap_first(d) : dd_auto_conflict_dt(d);
+    return dd_auto_wrap_first(d, AUTO_WIDE_BELOW_DEGREE);
 }
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: below degree 600 gift wrapping; else below 40 the compact conflict DT, nearest first; else GRR, least link degree first",
+    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first",
     auto_fill,
 };

@@ -10,7 +10,8 @@
  * conflict DT, nearest neighbours first; from 40 on, grr-neighbor.       */
 dd_status dd_auto_conflict_dt(dd_del *d);
 
-/* Gift wrapping (wrap.h), or where it declines, dd_auto_conflict_dt. */
-dd_status dd_auto_wrap_first(dd_del *d);
+/* Gift wrapping (wrap.h; wide_below as in dd_wrap_fill), or where it
+ * declines, dd_auto_conflict_dt.                                       */
+dd_status dd_auto_wrap_first(dd_del *d, uint32_t wide_below);
 
 #endif

@@ -9,10 +9,10 @@
  */
 #include "auto.h"
 
-/* auto's own choice below degree 600, at every degree. */
+/* auto's own choice, with the wide guess at every degree. */
 static dd_status gift_wrap_fill(dd_del *d)
 {
-    return dd_auto_wrap_first(d);
+    return dd_auto_wrap_first(d, UINT32_MAX);
 }
 
 const dd_variant dd_variant_gift_wrap = {
