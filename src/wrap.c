@@ -48,15 +48,16 @@
  * perturbation's alone, cheap and not counted.                          */
 #define W_EXACT_FROM 40
 
-/* The narrow guesses (w_guess_narrow), from W_NARROW_FROM neighbours on
- * and only where the link has a hub: each point keeps up to W_ADJ_CAP
- * known neighbours; one with more is a hub (W_ADJ_FULL), whose list is
- * not kept.  On uniform points (bunny, degree 24-64) the link has no hub
- * and the fill's new edges are many: narrow guesses there were refuted
- * for half the deletions, 2.4 -> 5.3 times a re-insertion.             */
-#define W_NARROW_FROM 24
+/* The narrow guesses (w_guess_narrow), only where the link has a hub:
+ * each point keeps up to W_ADJ_CAP known neighbours; one with more is a
+ * hub (W_ADJ_FULL), whose list is not kept.  A hub has W_ADJ_CAP + 1
+ * link neighbours, so there are none below W_NARROW_FROM neighbours.
+ * On uniform points (bunny, degree 24-64) the link has no hub and the
+ * fill's new edges are many: narrow guesses taken there regardless were
+ * refuted for half the deletions, 2.4 -> 5.3 times a re-insertion.     */
 #define W_ADJ_CAP 32
 #define W_ADJ_FULL (W_ADJ_CAP + 1)
+#define W_NARROW_FROM (W_ADJ_CAP + 2)
 
 struct dd_wrap {
     uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
