@@ -99,7 +99,7 @@ uint32_t dd_grr_random_lowdeg(dd_grr *g)
     return g->cand[k].a[r];
 }
 
-uint32_t dd_grr_random_mindeg(dd_grr *g)
+static uint32_t random_mindeg(dd_grr *g)
 {
     for (int k = 0; k <= DD_LOWDEG; k++)
         if (g->cand[k].n) return g->cand[k].a[dd_del_rand(g->d) % g->cand[k].n];
@@ -119,7 +119,7 @@ static uint32_t or_any(dd_grr *g, uint32_t u)
     return dd_grr_random_any(g);
 }
 
-uint32_t dd_grr_sample_mindeg(dd_grr *g) { return or_any(g, dd_grr_random_mindeg(g)); }
+uint32_t dd_grr_sample_mindeg(dd_grr *g) { return or_any(g, random_mindeg(g)); }
 uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, dd_grr_random_lowdeg(g)); }
 
 uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)

@@ -50,8 +50,7 @@ uint32_t dd_grr_random_any(dd_grr *g);
  * <= 7, or (a counted fallback) a random remaining one when none is left. */
 uint32_t dd_grr_sample_lowdeg(dd_grr *g);
 /* A random link vertex of the least degree (base points excluded) if that
- * is <= 7, or DD_NONE; and the sampling on it, with the same fallback.  */
-uint32_t dd_grr_random_mindeg(dd_grr *g);
+ * is <= 7, or (the same counted fallback) a random remaining one.      */
 uint32_t dd_grr_sample_mindeg(dd_grr *g);
 /* Link degree of v. */
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v);

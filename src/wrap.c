@@ -654,18 +654,20 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
 }
 #endif
 
-static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
+/* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
+ * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
+ * W_TIE when two such quotients are equal; *unsure: how many had unsure
+ * orientation.                                                          */
+static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const double N[4], const double T[4],
+                                     const uint32_t *ks, uint32_t nk, uint32_t *unsure)
 {
     double *const *L = w->lift;
-    const double oerr = w->oerr;
-#ifdef W_AVX2
-    if (w->avx2) return w_guess_avx2(L, w->n, a, N, T, oerr, unsure);
-#endif
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, oerr = w->oerr;
     double br = 1.0 / 0.0;
-    uint32_t best = W_NONE;
-    int tie = 0, uns = 0;
-    for (uint32_t k = 0; k < w->n; k++) {
+    uint32_t best = W_NONE, uns = 0;
+    int tie = 0;
+    for (uint32_t i = 0; i < nk; i++) {
+        const uint32_t k = ks ? ks[i] : i;
         double P[4], ok = w_row_o(L, k, A, N, P);
         int pos = ok > oerr;
         uns += !pos & (ok >= -oerr);
@@ -674,8 +676,19 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
         best = r < br ? k : best;
         br = r < br ? r : br;
     }
-    *unsure = uns != 3;
+    *unsure = uns;
     return tie ? W_TIE : best;
+}
+
+static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
+{
+#ifdef W_AVX2
+    if (w->avx2) return w_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
+#endif
+    uint32_t uns;
+    const uint32_t best = w_least_ratio(w, a, N, T, NULL, w->n, &uns);
+    *unsure = uns != 3;                              /* a, b, c always are */
+    return best;
 }
 
 /* Known neighbours.  The fill cell on facet abc is a cell of DT(S \ q),
@@ -715,8 +728,8 @@ static void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v)
  * vertices.  The link triangles (the first nlink records) make a closed
  * oriented surface, where each edge is met once in each direction: each
  * triangle gives each corner the next one, and every neighbour of a
- * vertex comes once.                                                    */
-static void w_adj_init(struct dd_wrap *w, size_t nlink)
+ * vertex comes once.  Returns whether the link has a hub.               */
+static int w_adj_init(struct dd_wrap *w, size_t nlink)
 {
     const uint32_t inf = w->n;
     memset(w->nadj, 0, w->n * sizeof *w->nadj);
@@ -727,11 +740,7 @@ static void w_adj_init(struct dd_wrap *w, size_t nlink)
             if (k != inf && u != inf) w_adj_put(w, k, u);
         }
     }
-}
-
-/* Whether some point has more than W_ADJ_CAP known neighbours.         */
-static int w_has_hub(const struct dd_wrap *w)
-{
+    /* a pass of its own: testing each put cost 25% more (callgrind)     */
     for (uint32_t k = 0; k < w->n; k++)
         if (w->nadj[k] == W_ADJ_FULL) return 1;
     return 0;
@@ -783,23 +792,8 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
         if (w->nadj[v[i]] <= bound) nc = w_take_list(w, v[i], nc);
     for (uint32_t i = 0, n1 = nc; w->narrow == DD_GUESS_TWO_STEP && !w->narrower && i < n1; i++)
         if (w->nadj[w->cand[i]] != W_ADJ_FULL) nc = w_take_list(w, w->cand[i], nc);
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, oerr = w->oerr;
-    double br = 1.0 / 0.0;
-    uint32_t best = W_NONE;
-    int tie = 0, uns = 0;
-    for (uint32_t i = 0; i < nc; i++) {
-        const uint32_t k = w->cand[i];
-        double P[4], ok = w_row_o(L, k, A, N, P);
-        int pos = ok > oerr;
-        uns |= !pos & (ok >= -oerr);
-        double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
-        tie |= pos & (r == br);
-        best = r < br ? k : best;
-        br = r < br ? r : br;
-    }
-    if (tie) return W_TIE;
-    if (best != W_NONE && uns) best = wrap_scan_exact(w, pr, a, b, c, m, best, 1, w->cand, nc);
+    uint32_t uns, best = w_least_ratio(w, a, N, T, w->cand, nc, &uns);   /* a, b, c not among them */
+    if (best != W_NONE && best != W_TIE && uns) best = wrap_scan_exact(w, pr, a, b, c, m, best, 1, w->cand, nc);
     return best;
 }
 
@@ -1272,8 +1266,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
          * the guess over every neighbour is not tried: taken as refuted,
          * it leaves the cavity to the scans if cospherical, else to the
          * caller (below).                                              */
-        if (n >= W_NARROW_FROM) w_adj_init(w, d->star.n);
-        w->narrow = n >= W_NARROW_FROM && w_has_hub(w) ? DD_GUESS_SHORT : DD_GUESS_WIDE;
+        w->narrow = n >= W_NARROW_FROM && w_adj_init(w, d->star.n) ? DD_GUESS_SHORT : DD_GUESS_WIDE;
         for (;;) {
             if (w->narrow == DD_GUESS_WIDE && n >= wide_below) break;
             d->wrap_guess = w->narrow;

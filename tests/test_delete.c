@@ -255,6 +255,16 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
     return p;
 }
 
+/* n points of the unit sphere (gen) and its centre, last: *np of them.  */
+static double *sphere_and_centre(uint32_t n, uint32_t *np)
+{
+    double *p = gen("sphere", n, np);
+    p = realloc(p, 3 * sizeof *p * (*np + 1));
+    p[3 * *np] = p[3 * *np + 1] = p[3 * *np + 2] = 0;
+    ++*np;
+    return p;
+}
+
 /* auto's conflict DT from degree 40 (variants/auto.c), where the wrap
  * declines, deletes the link vertices in order of least link degree;
  * grr-neighbor in random order of degree <= 7.  Both must give CGAL's
@@ -266,10 +276,8 @@ static double *gen(const char *ds, uint32_t n, uint32_t *np)
 static void auto_least_degree(tl_state *st, uint32_t n)
 {
     uint32_t np;
-    double *p = gen("sphere", n, &np);
-    p = realloc(p, 3 * sizeof *p * (np + 1));
-    p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
-    const uint32_t v = np++;
+    double *p = sphere_and_centre(n, &np);
+    const uint32_t v = np - 1;
     char msg[256], name[96];
     snprintf(name, sizeof name, "auto-least-degree/sphere-%u-centre", np - 1);
     dd_tri *t;
@@ -696,18 +704,14 @@ int main(int argc, char **argv)
      * of mesh.c (DD_STAR_MAXV vertices) and glue through the edge hash.   */
     {
         uint32_t np;
-        double *p = gen("sphere", 300, &np);
-        p = realloc(p, 3 * sizeof *p * (np + 1));
-        p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
-        single_deletions(&st, "sphere-300-centre", p, np + 1, small ? 4 : 10, 6, 1, np);
+        double *p = sphere_and_centre(300, &np);
+        single_deletions(&st, "sphere-300-centre", p, np, small ? 4 : 10, 6, 1, np - 1);
         free(p);
         /* 2200 points: the centre's star has 4396 cells, more than one
          * pass's marks (DD_EPOCH_STEP_MAX), so the link finds star slots
          * through the link-triangle hash (link.c).                        */
-        p = gen("sphere", 2200, &np);
-        p = realloc(p, 3 * sizeof *p * (np + 1));
-        p[3 * np] = p[3 * np + 1] = p[3 * np + 2] = 0;
-        single_deletions(&st, "sphere-2200-centre", p, np + 1, 1, 6, 1, np);
+        p = sphere_and_centre(2200, &np);
+        single_deletions(&st, "sphere-2200-centre", p, np, 1, 6, 1, np - 1);
         free(p);
     }
     /* The vertex of highest degree among 3000 integer points of a sphere:

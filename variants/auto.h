@@ -7,7 +7,8 @@
 #include "../src/delete.h"
 
 /* auto's choice without gift wrapping: below degree 40 the compact
- * conflict DT, nearest neighbours first; from 40 on, grr-neighbor.       */
+ * conflict DT, nearest neighbours first; from 40 on, GRR with the link
+ * vertex of least degree deleted first (grr-neighbor's guides).        */
 dd_status dd_auto_conflict_dt(dd_del *d);
 
 /* Gift wrapping (wrap.h; wide_below as in dd_wrap_fill), or where it
