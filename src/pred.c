@@ -26,6 +26,7 @@
 void dd_pred_init(dd_pred *ctx)
 {
     for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
+    ctx->unfiltered = 0;
 #ifdef DD_COUNTERS
     ctx->orient_calls = ctx->orient_exact = 0;
     ctx->insphere_calls = ctx->insphere_exact = 0;
@@ -236,6 +237,7 @@ int dd_orient3d_unfiltered(dd_pred *ctx, const double *p, const double *q,
                            const double *r, const double *s)
 {
     DD_COUNT(ctx, orient_exact);
+    ctx->unfiltered++;
     int e = dd_orient3d_exp(p, q, r, s);
     if (e != DD_EXP_UNSAFE) return e;
     return orient3d_exact(ctx, p, q, r, s);
@@ -252,6 +254,7 @@ int dd_insphere_unfiltered(dd_pred *ctx, const double *p, const double *q,
                            const double *r, const double *s, const double *t)
 {
     DD_COUNT(ctx, insphere_exact);
+    ctx->unfiltered++;
     int e = dd_insphere_exp(p, q, r, s, t);
     if (e != DD_EXP_UNSAFE) return e;
     return insphere_exact(ctx, p, q, r, s, t);

@@ -32,6 +32,9 @@
 
 typedef struct dd_pred {
     mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused            */
+    uint64_t unfiltered;        /* orientations and in-sphere tests past
+                                   the filters (the exact stages), ever:
+                                   the gift wrap's budget (wrap.c)       */
 #ifdef DD_COUNTERS
     uint64_t orient_calls, orient_exact;
     uint64_t insphere_calls, insphere_exact;

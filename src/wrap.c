@@ -37,8 +37,15 @@
  * on, wrapping declines once its exact tests pass 2n (then, warm,
  * cosphere degree [48,64): 719 us wrapping against 383 us for
  * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
- * The budget counts the exact tests of a guess's proof too (the moment
- * curve, degree 512, 768, 1024: 455-546, ~1200, 1543-1902: below 2n).
+ * The budget counts the tests of a guess's proof too, but what it counts
+ * is their cost (w_spent): a test the wrap's own filters leave to the
+ * predicates is mostly settled by the predicates' filters, at about a
+ * sixteenth of the cost of their exact stages.  So w_spent counts the
+ * tests past the predicates' filters, and the others one in 16.  On the
+ * moment curve, n = 2048, the proof leaves 6 200-7 400 tests to the
+ * predicates and 1 600-2 300 of them reach the exact stages: counted
+ * whole, they declined every deletion (to GRR: 2.6-3.9 ms), where the
+ * wrap takes 1.3-2.5 ms; at n = 1024, 1 700 tests, 95 past the filters.
  * From 40 neighbours on, a refuted guess declines too, without the scans:
  * such cavities are nearly degenerate, where the scans make O(n) exact
  * tests a cell (moment n = 272: refuted after ~140 exact tests, then
@@ -79,6 +86,8 @@ struct dd_wrap {
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
+    uint64_t unf0;                /* the predicates' count of tests past
+                                     their filters when the wrap began   */
     uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
                                      this deletion's neighbours only      */
     dd_trihash ftab;              /* triangle -> its facet record         */
@@ -1023,6 +1032,13 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
  * (a facet without a point beyond, a triangle met from the wrong side or
  * by a third cell, a fill too large).                                    */
+/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
+ * the predicates' filters, and one in 16 of the others left to them.   */
+static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
+{
+    return pr->unfiltered - w->unf0 + w->nexact / 16;
+}
+
 static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
     dd_tri *x = d->qdt;
@@ -1041,7 +1057,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         if (w->closed[r]) continue;
         w->closed[r] = 1;
         uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
-        if (n >= W_EXACT_FROM && w->nexact > 2 * n) {
+        if (n >= W_EXACT_FROM && w_spent(w, &x->pred) > 2 * (uint64_t)n) {
             *outcome = W_DECLINED;              /* see W_EXACT_FROM */
             return DD_OK;
         }
@@ -1204,6 +1220,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
         w->loc[gid[k]] = k;
     }
     w_lift(w, d->qp);
+    w->unf0 = d->qdt->pred.unfiltered;
     d->wrap_integer = w->exact;
     w->cosph = 0;                                    /* w_cospherical may set it */
     /* The sanitizer build of the tests takes the plain C scan for vertices

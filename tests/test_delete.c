@@ -317,6 +317,45 @@ static void auto_least_degree(tl_state *st, uint32_t n)
     free(p);
 }
 
+/* The exact-test budget of gift wrapping (wrap.c, W_EXACT_FROM) counts
+ * what the tests cost.  On the moment curve, n = 2048, a deletion's proof
+ * leaves ~7 000 tests to the predicates, ~2 000 of them past their
+ * filters; counted whole, they declined every deletion there, to the
+ * conflict DT, about twice as slow.  auto must now wrap with a proved
+ * guess.  CGAL's remove() takes seconds at this degree, so the result is
+ * checked by the perturbed empty-sphere test of every facet (dd_check)
+ * and against grr-neighbor's, which never wraps.                        */
+static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
+{
+    uint32_t np;
+    double *p = gen("moment", 2048, &np);
+    char msg[256], name[64];
+    snprintf(name, sizeof name, "wrap-budget/moment-%u/vertex-%u", np, v);
+    dd_tri *t;
+    if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "dd_create: %s", msg);
+        free(p);
+        return;
+    }
+    const char *vars[2] = {"grr-neighbor", "auto"};
+    canon got[2] = {{NULL, 0}, {NULL, 0}};
+    dd_delete_stats ds = {0};
+    int ok = dd_degree(t, v) >= 2000;
+    for (int k = 0; k < 2 && ok; k++) {
+        ok = dd_delete(t, v, vars[k]) == DD_OK && dd_check(t) == DD_OK;
+        dd_last_delete_stats(t, &ds);
+        got[k] = ours(t);
+        ok = ok && dd_reinsert(t, v) == DD_OK;
+    }
+    tl_check(st, ok && same(got[0], got[1]) && ds.wrap == DD_WRAP_PROVED, name,
+             "%s; results %s; auto's wrap: course %d (proved: %d)", ok ? "checked" : "a deletion failed",
+             same(got[0], got[1]) ? "equal" : "differ", ds.wrap, DD_WRAP_PROVED);
+    free(got[0].a);
+    free(got[1].a);
+    dd_free(t);
+    free(p);
+}
+
 /* Gift wrapping (wrap.c) builds the fill's cells and no others: the
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
@@ -770,6 +809,7 @@ int main(int argc, char **argv)
         free(p);
     }
     auto_least_degree(&st, 700);
+    auto_wraps_dense_moment(&st, 1000);
     const char *wrap_sets[][2] = {{"uniform", "2000"}, {"sphere", "1000"}, {"bunny", "2000"}};
     for (size_t i = 0; i < 3; i++) {
         wrap_builds_only_fill(&st, wrap_sets[i][0], (uint32_t)atoi(wrap_sets[i][1]), "gift-wrap");
