@@ -339,8 +339,10 @@ static const command commands[] = {
      "on the mode's datasets, each deletion timed alone and compared with\n"
      "CGAL's result; one CSV per dataset in DIR (default results/).  --scale\n"
      "multiplies the number of deletions per case (larger runs: --scale 4).\n"
-     "--reps R (1-5, default 5): repetitions per timing, the median kept;\n"
-     "--reps 1 times only first runs (cold branch predictors and caches).\n"
+     "--reps R (1-5, default 5): repetitions per timing, the median kept,\n"
+     "after one warm-up run (dropped; a row of 2 ms or more keeps its one\n"
+     "run); --reps 1 times only first runs (cold branch predictors and\n"
+     "caches), with no warm-up.\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
      "--phases DIR merges such a run's phase columns into this one.", cmd_bench},
     {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R]",

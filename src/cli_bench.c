@@ -7,7 +7,16 @@
  * a monotonic clock (median of up to 5 repetitions, or --reps R, while
  * they take under 2 ms together), its result is compared with CGAL's, and
  * the vertex is re-inserted untimed so the next deletion starts from DT(S)
- * again.
+ * again.  With more than one repetition, one more runs first as a
+ * warm-up and is dropped when another follows (so a row of 2 ms or more
+ * keeps its single run): rows run one after another on the same vertex,
+ * and the first runs of a row pay for the caches and branch predictors
+ * of the row before.  Without it, auto, the first engine row after
+ * CGAL's, measured up to 1.5x gift-wrap, the same code run later (moment
+ * n = 1024: 2.52 against 1.80 times a re-insertion; cosphere degree
+ * [64,96): 3.02 against 1.94), and re-running CGAL's two rows before
+ * auto in a harness moved helix n = 1000 from 1.90-2.08 to 2.28-2.35
+ * (1.97-2.13 with the warm-up).  --reps 1 (the cold run) has none.
  *
  * The comparison: the canonical form of the cells incident to the deleted
  * vertex's neighbours (everything a deletion can change) must equal
@@ -20,7 +29,7 @@
  * cost a deletion is measured against (target: deleting costs at most 2x
  * re-inserting, at every degree).  Each repetition deletes the vertex
  * untimed (dd_delete, default strategy) and times dd_reinsert alone; same
- * repetition rule and median as the other rows.  Its match column is 1 iff
+ * repetition rule, warm-up and median as the other rows.  Its match column is 1 iff
  * the local canonical hash around the neighbours after the re-insertion
  * equals the one taken on the intact DT(S) before the vertex's rows ran (a
  * broken insertion is a mismatch); tets_created and the phases are empty.
@@ -117,6 +126,20 @@ static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, u
 /* The insert row hashes the engine's triangulation like an engine row. */
 static const row insert_row = {"insert", ROW_ENGINE};
 
+/* Repetitions to run under the rule above: max_reps, and a warm-up
+ * before them when there is more than one. */
+static int runs_for(int max_reps)
+{
+    return max_reps > 1 ? max_reps + 1 : max_reps;
+}
+
+/* The median of the repetitions kept: all but the warm-up, if another
+ * followed it. */
+static double kept_median(double *us, int reps, int max_reps)
+{
+    return max_reps > 1 && reps > 1 ? median_of(us + 1, (size_t)(reps - 1)) : median_of(us, (size_t)reps);
+}
+
 /* The "insert" row of vertex v (see the top): 0, or -1 when a deletion or
  * re-insertion failed (dd_errmsg(t) says why).  *med: median µs of the
  * re-insertions; *match: the local hash after the first re-insertion
@@ -124,10 +147,10 @@ static const row insert_row = {"insert", ROW_ENGINE};
 static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, uint64_t pre, int pre_ok,
                        int max_reps, double *med, int *match)
 {
-    double us[5], spent = 0;
+    double us[6], spent = 0;
     int reps = 0;
     *match = 0;
-    while (reps < max_reps && (reps == 0 || spent < 2e-3)) {
+    while (reps < runs_for(max_reps) && (reps == 0 || spent < 2e-3)) {
         double secs = 0;
         if (reinsert_timed(t, v, &secs)) return -1;
         us[reps++] = 1e6 * secs;
@@ -137,7 +160,7 @@ static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, 
             *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
         }
     }
-    *med = median_of(us, (size_t)reps);
+    *med = kept_median(us, reps, max_reps);
     return 0;
 }
 
@@ -245,14 +268,14 @@ int cmd_bench(int argc, char **argv)
             for (size_t ri = 0; ri < nr; ri++) {
                 const row *r = &rows[ri];
                 if (counting && r->kind != ROW_ENGINE) continue;
-                double us[5];
+                double us[6];
                 int reps = 0, bad = 0;
                 double spent = 0;
                 uint64_t h = 0;
                 int hashed = 0;
                 dd_delete_stats st;
                 memset(&st, 0, sizeof st);
-                while (reps < max_reps && (reps == 0 || spent < 2e-3) && !bad) {
+                while (reps < runs_for(max_reps) && (reps == 0 || spent < 2e-3) && !bad) {
                     double t0 = now_seconds();
                     bad = row_delete(r, t, g, v, seed + it + (uint64_t)reps);
                     double t1 = now_seconds();
@@ -277,7 +300,7 @@ int cmd_bench(int argc, char **argv)
                 if (r->kind == ROW_CGAL) { refh = h; have_ref = 1; }
                 int match = counting ? 1 : have_ref && h == refh;
                 if (!match) mismatches++;
-                double med = median_of(us, (size_t)reps);
+                double med = kept_median(us, reps, max_reps);
                 fprintf(csv, "%s,%u,%u,%u,%u,%s,%.3f,", c->dataset, np, v, deg, hull, r->name, med);
                 if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st.tets_created);
                 const phase_row *pr = counting ? NULL : find_phase(ph, nph, np, v, r->name);
