@@ -29,10 +29,11 @@
  * cost a deletion is measured against (target: deleting costs at most 2x
  * re-inserting, at every degree).  Each repetition deletes the vertex
  * untimed (dd_delete, default strategy) and times dd_reinsert alone; same
- * repetition rule, warm-up and median as the other rows.  Its match column is 1 iff
- * the local canonical hash around the neighbours after the re-insertion
- * equals the one taken on the intact DT(S) before the vertex's rows ran (a
- * broken insertion is a mismatch); tets_created and the phases are empty.
+ * repetition rule, warm-up and median as the other rows.  Its match
+ * column is 1 iff the local canonical hash around the neighbours after
+ * the re-insertion equals the one taken on the intact DT(S) before the
+ * vertex's rows ran (a broken insertion is a mismatch); tets_created and
+ * the phases are empty.
  * Counting builds write no insert row.
  *
  * Phases: counting builds (build/count/dtdel) write only the engine rows,

@@ -44,8 +44,8 @@
  * tests past the predicates' filters, and the others one in 16.  On the
  * moment curve, n = 2048, the proof leaves 6 200-7 400 tests to the
  * predicates and 1 600-2 300 of them reach the exact stages: counted
- * whole, they declined every deletion (to GRR: 2.6-3.9 ms), where the
- * wrap takes 1.3-2.5 ms; at n = 1024, 1 700 tests, 95 past the filters.
+ * whole, they declined every deletion (to GRR: 2.9-4.8 ms), where the
+ * wrap takes 1.2-2.6 ms; at n = 1024, 1 700 tests, 95 past the filters.
  * From 40 neighbours on, a refuted guess declines too, without the scans:
  * such cavities are nearly degenerate, where the scans make O(n) exact
  * tests a cell (moment n = 272: refuted after ~140 exact tests, then
@@ -1022,6 +1022,13 @@ static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
     return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
 }
 
+/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
+ * the predicates' filters, and one in 16 of the others left to them.   */
+static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
+{
+    return pr->unfiltered - w->unf0 + w->nexact / 16;
+}
+
 enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
 
 /* The wrap from record `start`: each open facet gives the cell on its
@@ -1032,13 +1039,6 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
  * (a facet without a point beyond, a triangle met from the wrong side or
  * by a third cell, a fill too large).                                    */
-/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
- * the predicates' filters, and one in 16 of the others left to them.   */
-static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
-{
-    return pr->unfiltered - w->unf0 + w->nexact / 16;
-}
-
 static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
     dd_tri *x = d->qdt;
