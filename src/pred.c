@@ -26,10 +26,9 @@
 void dd_pred_init(dd_pred *ctx)
 {
     for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
-    ctx->unfiltered = 0;
+    ctx->orient_exact = ctx->insphere_exact = 0;
 #ifdef DD_COUNTERS
-    ctx->orient_calls = ctx->orient_exact = 0;
-    ctx->insphere_calls = ctx->insphere_exact = 0;
+    ctx->orient_calls = ctx->insphere_calls = 0;
     ctx->perturbed = 0;
 #endif
 }
@@ -236,8 +235,7 @@ int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
 int dd_orient3d_unfiltered(dd_pred *ctx, const double *p, const double *q,
                            const double *r, const double *s)
 {
-    DD_COUNT(ctx, orient_exact);
-    ctx->unfiltered++;
+    ctx->orient_exact++;
     int e = dd_orient3d_exp(p, q, r, s);
     if (e != DD_EXP_UNSAFE) return e;
     return orient3d_exact(ctx, p, q, r, s);
@@ -253,8 +251,7 @@ int dd_insphere(dd_pred *ctx, const double *p, const double *q,
 int dd_insphere_unfiltered(dd_pred *ctx, const double *p, const double *q,
                            const double *r, const double *s, const double *t)
 {
-    DD_COUNT(ctx, insphere_exact);
-    ctx->unfiltered++;
+    ctx->insphere_exact++;
     int e = dd_insphere_exp(p, q, r, s, t);
     if (e != DD_EXP_UNSAFE) return e;
     return insphere_exact(ctx, p, q, r, s, t);

@@ -32,12 +32,11 @@
 
 typedef struct dd_pred {
     mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused            */
-    uint64_t unfiltered;        /* orientations and in-sphere tests past
-                                   the filters (the exact stages), ever:
-                                   the gift wrap's budget (wrap.c)       */
+    /* tests past the filters (the exact stages), in every build: the gift
+     * wrap's budget counts them (wrap.c, w_spent)                        */
+    uint64_t orient_exact, insphere_exact;
 #ifdef DD_COUNTERS
-    uint64_t orient_calls, orient_exact;
-    uint64_t insphere_calls, insphere_exact;
+    uint64_t orient_calls, insphere_calls;
     uint64_t perturbed;
 #endif
 } dd_pred;

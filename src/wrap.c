@@ -1022,11 +1022,17 @@ static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
     return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
 }
 
+/* The predicates' tests past their filters so far (pred.h).             */
+static inline uint64_t w_unfiltered(const dd_pred *pr)
+{
+    return pr->orient_exact + pr->insphere_exact;
+}
+
 /* The exact tests of this deletion for W_EXACT_FROM's budget: those past
  * the predicates' filters, and one in 16 of the others left to them.   */
 static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
 {
-    return pr->unfiltered - w->unf0 + w->nexact / 16;
+    return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
 }
 
 enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
@@ -1220,7 +1226,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
         w->loc[gid[k]] = k;
     }
     w_lift(w, d->qp);
-    w->unf0 = d->qdt->pred.unfiltered;
+    w->unf0 = w_unfiltered(&d->qdt->pred);
     d->wrap_integer = w->exact;
     w->cosph = 0;                                    /* w_cospherical may set it */
     /* The sanitizer build of the tests takes the plain C scan for vertices

@@ -265,6 +265,27 @@ static double *sphere_and_centre(uint32_t n, uint32_t *np)
     return p;
 }
 
+/* Deletes v from t with vars[0] and vars[1] in turn, re-inserting it
+ * after each: their canonical results in got[k], their stats in ds[k].
+ * 1; 0, the reason in why, when a deletion or the re-insertion fails or
+ * a result fails dd_check (the perturbed empty-sphere test of every
+ * facet).  The caller frees got[k].a.                                   */
+static int delete_each(dd_tri *t, uint32_t v, const char *const vars[2], canon got[2], dd_delete_stats ds[2],
+                       char *why, size_t nwhy)
+{
+    for (int k = 0; k < 2; k++) {
+        dd_status s = dd_delete(t, v, vars[k]);
+        dd_last_delete_stats(t, &ds[k]);
+        got[k] = ours(t);
+        dd_status c = s == DD_OK ? dd_check(t) : DD_OK;
+        if (s != DD_OK || c != DD_OK || dd_reinsert(t, v) != DD_OK) {
+            snprintf(why, nwhy, "%s: status %s, check %s", vars[k], dd_status_name(s), dd_status_name(c));
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* auto's conflict DT from degree 40 (variants/auto.c), where the wrap
  * declines, deletes the link vertices in order of least link degree;
  * grr-neighbor in random order of degree <= 7.  Both must give CGAL's
@@ -288,29 +309,24 @@ static void auto_least_degree(tl_state *st, uint32_t n)
     }
     dd_cgal *g = dd_cgal_build(p, np);
     int cg = dd_cgal_remove(g, v);
-    canon ref = theirs(g);
-    const char *vars[2] = {"auto", "grr-neighbor"};
-    uint64_t cells[2] = {0, 0};
-    int ok = cg == 0 && dd_degree(t, v) >= 600, wrap = DD_WRAP_NONE;
+    canon ref = theirs(g), got[2] = {{NULL, 0}, {NULL, 0}};
+    const char *const vars[2] = {"auto", "grr-neighbor"};
+    dd_delete_stats ds[2];
+    memset(ds, 0, sizeof ds);
     char why[160] = "";
-    for (int k = 0; k < 2 && ok; k++) {
-        dd_delete_stats ds;
-        dd_status s = dd_delete(t, v, vars[k]);
-        dd_last_delete_stats(t, &ds);
-        canon now = ours(t);
-        if (s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK || ds.fallbacks != 0) {
-            snprintf(why, sizeof why, "%s: status %s, %s CGAL's, %llu fallbacks", vars[k], dd_status_name(s),
-                     same(now, ref) ? "equals" : "differs from", (unsigned long long)ds.fallbacks);
+    int ok = cg == 0 && dd_degree(t, v) >= 600 && delete_each(t, v, vars, got, ds, why, sizeof why);
+    for (int k = 0; k < 2 && ok; k++)
+        if (!same(got[k], ref) || ds[k].fallbacks != 0) {
+            snprintf(why, sizeof why, "%s: %s CGAL's, %llu fallbacks", vars[k],
+                     same(got[k], ref) ? "equals" : "differs from", (unsigned long long)ds[k].fallbacks);
             ok = 0;
         }
-        cells[k] = ds.tets_created;
-        if (k == 0) wrap = ds.wrap;
-        free(now.a);
-        if (dd_reinsert(t, v) != DD_OK) ok = 0;
-    }
-    tl_check(st, ok && wrap == DD_WRAP_DECLINED && cells[0] < cells[1], name,
-             "%s; auto's wrap: course %d (declined: %d); cells built: least degree %llu, random %llu", why, wrap,
-             DD_WRAP_DECLINED, (unsigned long long)cells[0], (unsigned long long)cells[1]);
+    tl_check(st, ok && ds[0].wrap == DD_WRAP_DECLINED && ds[0].tets_created < ds[1].tets_created, name,
+             "%s; auto's wrap: course %d (declined: %d); cells built: least degree %llu, random %llu", why,
+             ds[0].wrap, DD_WRAP_DECLINED, (unsigned long long)ds[0].tets_created,
+             (unsigned long long)ds[1].tets_created);
+    free(got[0].a);
+    free(got[1].a);
     free(ref.a);
     dd_cgal_free(g);
     dd_free(t);
@@ -329,7 +345,7 @@ static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
 {
     uint32_t np;
     double *p = gen("moment", 2048, &np);
-    char msg[256], name[64];
+    char msg[256], name[64], why[160] = "";
     snprintf(name, sizeof name, "wrap-budget/moment-%u/vertex-%u", np, v);
     dd_tri *t;
     if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
@@ -337,19 +353,14 @@ static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
         free(p);
         return;
     }
-    const char *vars[2] = {"grr-neighbor", "auto"};
+    const char *const vars[2] = {"grr-neighbor", "auto"};
     canon got[2] = {{NULL, 0}, {NULL, 0}};
-    dd_delete_stats ds = {0};
-    int ok = dd_degree(t, v) >= 2000;
-    for (int k = 0; k < 2 && ok; k++) {
-        ok = dd_delete(t, v, vars[k]) == DD_OK && dd_check(t) == DD_OK;
-        dd_last_delete_stats(t, &ds);
-        got[k] = ours(t);
-        ok = ok && dd_reinsert(t, v) == DD_OK;
-    }
-    tl_check(st, ok && same(got[0], got[1]) && ds.wrap == DD_WRAP_PROVED, name,
-             "%s; results %s; auto's wrap: course %d (proved: %d)", ok ? "checked" : "a deletion failed",
-             same(got[0], got[1]) ? "equal" : "differ", ds.wrap, DD_WRAP_PROVED);
+    dd_delete_stats ds[2];
+    memset(ds, 0, sizeof ds);
+    int ok = dd_degree(t, v) >= 2000 && delete_each(t, v, vars, got, ds, why, sizeof why);
+    tl_check(st, ok && same(got[0], got[1]) && ds[1].wrap == DD_WRAP_PROVED, name,
+             "%s; results %s; auto's wrap: course %d (proved: %d)", why, same(got[0], got[1]) ? "equal" : "differ",
+             ds[1].wrap, DD_WRAP_PROVED);
     free(got[0].a);
     free(got[1].a);
     dd_free(t);
