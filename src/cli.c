@@ -337,8 +337,11 @@ static const command commands[] = {
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
      "The deletion benchmark (make bench runs it): every row (dtdel variants)\n"
      "on the mode's datasets, each deletion timed alone and compared with\n"
-     "CGAL's result; one CSV per dataset in DIR (default results/).  --scale\n"
-     "multiplies the number of deletions per case (larger runs: --scale 4).\n"
+     "CGAL's result; then an insert row (our re-insertion of the vertex)\n"
+     "and an auto-paired row (the default's deletion, timed right before\n"
+     "each of those re-insertions); one CSV per dataset in DIR (default\n"
+     "results/).  --scale multiplies the number of deletions per case\n"
+     "(larger runs: --scale 4).\n"
      "--reps R (1-5, default 5): repetitions per timing, the median kept,\n"
      "after one warm-up run (dropped; a row of 2 ms or more keeps its one\n"
      "run); --reps 1 times only first runs (cold branch predictors and\n"

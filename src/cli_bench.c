@@ -28,13 +28,21 @@
  * with variant name "insert" times our engine's re-insertion of it, the
  * cost a deletion is measured against (target: deleting costs at most 2x
  * re-inserting, at every degree).  Each repetition deletes the vertex
- * untimed (dd_delete, default strategy) and times dd_reinsert alone; same
- * repetition rule, warm-up and median as the other rows.  Its match
- * column is 1 iff the local canonical hash around the neighbours after
- * the re-insertion equals the one taken on the intact DT(S) before the
- * vertex's rows ran (a broken insertion is a mismatch); tets_created and
+ * with the default strategy (dd_delete) and re-inserts it (dd_reinsert),
+ * both timed; same repetition rule (on the re-insertions' time), warm-up
+ * and median as the other rows.  Its match column is 1 iff the local
+ * canonical hash around the neighbours after the re-insertion equals the
+ * one taken on the intact DT(S) before the vertex's rows ran (a broken
+ * insertion is a mismatch); tets_created and the phases are empty.
+ * Before it comes the paired row, "<default>-paired" (auto-paired): the
+ * median of those deletions, each timed right before the re-insertion it
+ * is compared with, where the default's own row ran up to seconds
+ * earlier (after CGAL's rows; on this VM the machine's speed drifts
+ * between the two: moment n = 1024, the same re-insertion measured 177
+ * and 433 us on two vertices of one run).  Its match column compares the
+ * first deletion with CGAL's, as a deletion row's does; tets_created and
  * the phases are empty.
- * Counting builds write no insert row.
+ * Counting builds write neither row.
  *
  * Phases: counting builds (build/count/dtdel) write only the engine rows,
  * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
@@ -141,27 +149,37 @@ static double kept_median(double *us, int reps, int max_reps)
     return max_reps > 1 && reps > 1 ? median_of(us + 1, (size_t)(reps - 1)) : median_of(us, (size_t)reps);
 }
 
-/* The "insert" row of vertex v (see the top): 0, or -1 when a deletion or
- * re-insertion failed (dd_errmsg(t) says why).  *med: median µs of the
- * re-insertions; *match: the local hash after the first re-insertion
- * equals pre (pre_ok: pre could be computed). */
+/* The "insert" row of vertex v and its paired deletion row (see the
+ * top): 0, or -1 when a deletion or re-insertion failed (dd_errmsg(t)
+ * says why).  Each repetition deletes v with the default strategy and
+ * re-inserts it, each timed.  *med, *del_med: the medians of the
+ * re-insertions and of the deletions; *match: the local hash after the
+ * first re-insertion equals pre (pre_ok: pre could be computed);
+ * *del_match: the one after the first deletion equals CGAL's, refh
+ * (have_ref: CGAL's row ran). */
 static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, uint64_t pre, int pre_ok,
-                       int max_reps, double *med, int *match)
+                       uint64_t refh, int have_ref, int max_reps, double *med, double *del_med, int *match,
+                       int *del_match)
 {
-    double us[6], spent = 0;
+    double us[6], ds[6], spent = 0;
     int reps = 0;
-    *match = 0;
+    *match = *del_match = 0;
     while (reps < runs_for(max_reps) && (reps == 0 || spent < 2e-3)) {
-        double secs = 0;
-        if (reinsert_timed(t, v, &secs)) return -1;
-        us[reps++] = 1e6 * secs;
-        spent += secs;
-        if (reps == 1) {
-            uint64_t h = 0;
-            *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
-        }
+        double t0 = now_seconds();
+        if (dd_delete(t, v, NULL) != DD_OK) return -1;
+        double t1 = now_seconds();
+        uint64_t h = 0;
+        if (reps == 0) *del_match = have_ref && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == refh;
+        double t2 = now_seconds();
+        if (dd_reinsert(t, v) != DD_OK) return -1;
+        double t3 = now_seconds();
+        ds[reps] = 1e6 * (t1 - t0);
+        us[reps++] = 1e6 * (t3 - t2);
+        spent += t3 - t2;
+        if (reps == 1) *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
     }
     *med = kept_median(us, reps, max_reps);
+    *del_med = kept_median(ds, reps, max_reps);
     return 0;
 }
 
@@ -314,14 +332,17 @@ int cmd_bench(int argc, char **argv)
                 fprintf(csv, ",%d\n", match);
             }
             if (!counting && !skipped) {
-                double med;
-                int match;
-                if (time_insert(t, v, nb, nnb, pre, pre_ok, max_reps, &med, &match)) {
+                double med, del_med;
+                int match, del_match;
+                if (time_insert(t, v, nb, nnb, pre, pre_ok, refh, have_ref, max_reps, &med, &del_med, &match,
+                                &del_match)) {
                     fprintf(stderr, "dtdel bench: %s %u: insert row failed on vertex %u: %s\n", c->dataset, np, v,
                             dd_errmsg(t));
                     mismatches++;
                 } else {
-                    if (!match) mismatches++;
+                    mismatches += !match + !del_match;
+                    fprintf(csv, "%s,%u,%u,%u,%u,%s-paired,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull,
+                            dd_variant_name(0), del_med, del_match);
                     fprintf(csv, "%s,%u,%u,%u,%u,insert,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull, med, match);
                 }
             }
