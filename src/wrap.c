@@ -546,9 +546,9 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
  * if none is beyond does a second take the least ranked of the others.
  * Each answer is w_symbolic's (the same orientations, exact or filtered
  * as w_orient's), so the point is the one wrap_scan_exact finds; at the
- * cosphere's degree 82 (1.7M instructions a deletion, three fifths in
- * the exact scan's w_symbolic calls, each making the normal of a plane
- * through y) it costs less than half of that.                          */
+ * cosphere's degree 82 (1.7M instructions a deletion, three quarters in
+ * the exact scan, two fifths in its w_symbolic calls, each making the
+ * normal of a plane through y) a deletion costs less than half of that. */
 static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
                                 const double N[4])
 {
