@@ -484,6 +484,8 @@ static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t
     return W_NONE;
 }
 
+static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure);
+
 /* The exact scan: one pass keeping the best point so far, each test
  * filtered (bounds of w_lift) and else decided by the exact perturbed
  * predicates.  Its branches depend on the data, which costs where the
@@ -507,7 +509,8 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         w_cofactors(K, P, m);
     }
     int zero = 0;
-    for (uint32_t i = 0; i < nk; i++) {
+    const int skip = unsure_only && !ks;            /* to the unsure points, four at a time */
+    for (uint32_t i = skip ? w_next(w, a, N, 0, 1) : 0; i < nk; i = skip ? w_next(w, a, N, i + 1, 1) : i + 1) {
         const uint32_t k = ks ? ks[i] : i;
         if (k == a || k == b || k == c) continue;
         double o = w_row_o(L, k, A, N, P);
@@ -722,22 +725,25 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
     return (uint32_t)vi[__builtin_ctz(at)];
 }
 
-/* w_not_behind with AVX2: four points at a time, o as w_row_o has it
- * (the same operations, bit for bit); a lane of the NaN padding past n
- * is never behind, and is returned as n.                                */
-__attribute__((target("avx2"))) static uint32_t w_not_behind_avx2(double *const *L, uint32_t n, uint32_t a,
-                                                                  const double N[4], double oerr, uint32_t from)
+/* w_next with AVX2: four points at a time, o as w_row_o has it (the
+ * same operations, bit for bit); a lane of the NaN padding past n is
+ * never unsure, never behind, and is returned as n.                     */
+__attribute__((target("avx2"))) static uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a,
+                                                            const double N[4], double oerr, uint32_t from,
+                                                            int unsure)
 {
     const __m256d ax = _mm256_set1_pd(L[0][a]), ay = _mm256_set1_pd(L[1][a]), az = _mm256_set1_pd(L[2][a]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]),
-                  ner = _mm256_set1_pd(-oerr);
+                  er = _mm256_set1_pd(oerr), ner = _mm256_set1_pd(-oerr), sign = _mm256_set1_pd(-0.0);
     uint32_t k = from & ~3u;
     unsigned before = (1u << (from - k)) - 1;        /* lanes before `from` */
     for (; k < n; k += 4) {
         __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
         __m256d P2 = _mm256_sub_pd(_mm256_loadu_pd(L[2] + k), az);
         __m256d ok = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
-        unsigned m = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(ok, ner, _CMP_NLT_UQ)) & ~before;
+        __m256d hit = unsure ? _mm256_cmp_pd(_mm256_andnot_pd(sign, ok), er, _CMP_LE_OQ)
+                             : _mm256_cmp_pd(ok, ner, _CMP_NLT_UQ);
+        unsigned m = (unsigned)_mm256_movemask_pd(hit) & ~before;
         before = 0;
         if (m) {
             uint32_t k1 = k + (uint32_t)__builtin_ctz(m);
@@ -748,22 +754,25 @@ __attribute__((target("avx2"))) static uint32_t w_not_behind_avx2(double *const 
 }
 #endif
 
-/* The first point k >= from not surely behind the plane of normal N
- * through a (o evaluated as in the scans, not below -oerr), or n if
- * none: the scans over points nearly all behind a plane (w_all_behind,
- * the Jarvis pass of wrap_scan_inf) look only at those.  At helix
- * n = 4000, degree [64,128), those two scalar passes were 16% of a
- * deletion (callgrind), 38 instructions a point.                        */
-static inline uint32_t w_not_behind(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from)
+/* The first point k >= from whose orientation to the plane of normal N
+ * through a (o evaluated as in the scans) is, with `unsure`, within the
+ * filter's bound (|o| <= oerr), else not surely behind (o not below
+ * -oerr); n if none.  The passes over points nearly all surely on one
+ * side look only at those: w_all_behind and the Jarvis pass of
+ * wrap_scan_inf (helix n = 4000, degree [64,128): those two scalar
+ * passes were 16% of a deletion, callgrind, 38 instructions a point),
+ * and the guess's exact pass over the unsure points (moment n = 1024,
+ * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
+static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
 {
 #ifdef W_AVX2
-    if (w->avx2) return w_not_behind_avx2(w->lift, w->n, a, N, w->oerr, from);
+    if (w->avx2) return w_next_avx2(w->lift, w->n, a, N, w->oerr, from, unsure);
 #endif
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     for (uint32_t k = from; k < w->n; k++) {
-        double P[4];
-        if (!(w_row_o(L, k, A, N, P) < -w->oerr)) return k;
+        double P[4], o = w_row_o(L, k, A, N, P);
+        if (unsure ? !(o > w->oerr) && !(o < -w->oerr) : !(o < -w->oerr)) return k;
     }
     return w->n;
 }
@@ -917,7 +926,7 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
 static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
 {
     uint32_t unsure = 0;                             /* a, b, c always are */
-    for (uint32_t k = 0; (k = w_not_behind(w, a, N, k)) < w->n && unsure <= 3; k++) unsure++;
+    for (uint32_t k = 0; (k = w_next(w, a, N, k, 0)) < w->n && unsure <= 3; k++) unsure++;
     return unsure == 3;
 }
 
@@ -954,7 +963,7 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     uint32_t i = 0;
     for (; i < w->n && best == W_NONE; i++)
         if (i != a && i != b && dd_orient_coplanar(pr, pt[a], pt[b], pt[i]) != 0) w_normal(w, b, a, best = i, N);
-    for (; (i = w_not_behind(w, b, N, i)) < w->n; i++)     /* the others are behind: not further round */
+    for (; (i = w_next(w, b, N, i, 0)) < w->n; i++)     /* the others are behind: not further round */
         if (i != a && i != b && i != best && w_orient(w, pr, b, a, best, N, i) > 0) w_normal(w, b, a, best = i, N);
     if (best == W_NONE) return W_NONE;
     if (w_all_behind(w, b, N)) return best;     /* the check, on the points not surely behind */
