@@ -135,6 +135,12 @@ static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, u
 /* The insert row hashes the engine's triangulation like an engine row. */
 static const row insert_row = {"insert", ROW_ENGINE};
 
+/* The deletions of case c under --scale. */
+static uint32_t deletions_of(const bcase *c, double scale)
+{
+    return (uint32_t)((double)c->deletions * scale + 0.5);
+}
+
 /* Repetitions to run under the rule above: max_reps, and a warm-up
  * before them when there is more than one. */
 static int runs_for(int max_reps)
@@ -236,7 +242,7 @@ int cmd_bench(int argc, char **argv)
         if (all[i].kind != ROW_CGAL) rows[nr++] = all[i];
     double total_work = 0, done_work = 0, t_start = now_seconds(), last_print = -10;
     for (const bcase *c = cases; c->dataset; c++)
-        if (!only || !strcmp(only, c->dataset)) total_work += (double)c->deletions;
+        if (!only || !strcmp(only, c->dataset)) total_work += deletions_of(c, scale);
     long mismatches = 0;
     const char *open_ds = NULL;
     FILE *csv = NULL;
@@ -270,7 +276,7 @@ int cmd_bench(int argc, char **argv)
         /* counting runs time no CGAL row: no CGAL triangulation needed */
         dd_cgal *g = counting ? NULL : dd_cgal_build(pts, np);
         dd_cgal *ref = !counting && np <= 20000 ? dd_cgal_build(pts, np) : NULL;
-        uint32_t k = (uint32_t)((double)c->deletions * scale + 0.5);
+        uint32_t k = deletions_of(c, scale);
         if (k < 1) k = 1;
         if (k > dd_num_vertices(t)) k = dd_num_vertices(t);
         uint64_t x = (seed + c->n) * 0x9E3779B97F4A7C15ull | 1;

@@ -129,6 +129,17 @@ bench_ok() {
     if [ $rc -eq 0 ] && echo "$out" | grep -q '^identical to CGAL: yes$' && echo "$out" | grep -qE "$pat"; then
         echo "ok cli/$name"; else echo "FAIL cli/$name: rc $rc: $out"; fi
 }
+# bench: a small run matches CGAL on every row, and each vertex has one
+# insert row and one auto-paired row (the default's deletion, timed with
+# the re-insertions), both matching
+"$DTDEL" bench --mode quick --dataset uniform --scale 0.1 --reps 2 --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err"; rc=$?
+csv="$tmp/bench/uniform.csv"
+nv=$(tail -n +2 "$csv" 2>/dev/null | cut -d, -f3 | sort -u | wc -l)
+ni=$(grep -cE '^uniform,[0-9]+,[0-9]+,[0-9]+,[01],insert,[0-9.]+,,,,,,1$' "$csv" 2>/dev/null)
+npd=$(grep -cE '^uniform,[0-9]+,[0-9]+,[0-9]+,[01],auto-paired,[0-9.]+,,,,,,1$' "$csv" 2>/dev/null)
+if [ $rc -eq 0 ] && grep -q 'bench: 0 mismatches' "$tmp/err" && [ "$nv" -eq 4 ] && [ "$ni" -eq 4 ] && [ "$npd" -eq 4 ]; then
+    echo "ok cli/bench-paired-rows"; else
+    echo "FAIL cli/bench-paired-rows: rc $rc, $nv vertices, $ni insert and $npd auto-paired rows matching: $(tail -c 300 "$tmp/err")"; fi
 # build-bench: both engines' DT(S) identical, on generic, curve and degenerate points
 ratio='^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'
 bench_ok build-bench "$ratio" 3000 --reps 2
