@@ -47,10 +47,6 @@ int find_row(const char *name, row *out);
  * for CGAL); returns 0 on success.  Reinsert undoes it.                  */
 int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed);
 int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
-/* The insert row's timing: deletes input vertex v untimed (default
- * strategy), then times its re-insertion alone into *secs.  0; -1 when
- * the deletion failed, -2 when the re-insertion did (dd_errmsg says why). */
-int reinsert_timed(dd_tri *t, uint32_t v, double *secs);
 /* Points of a generated dataset (dd_gen); 0, or the exit status after a
  * message on stderr: EXIT_USAGE for an unknown dataset, else EXIT_INPUT. */
 int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np);

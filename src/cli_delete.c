@@ -51,7 +51,10 @@ int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v)
     return r->kind == ROW_ENGINE ? dd_reinsert(t, v) != DD_OK : dd_cgal_reinsert(g, v);
 }
 
-int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
+/* `dtdel time --variant insert`: deletes input vertex v untimed (default
+ * strategy), then times its re-insertion alone into *secs.  0; -1 when
+ * the deletion failed, -2 when the re-insertion did (dd_errmsg says why). */
+static int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
 {
     if (dd_delete(t, v, NULL) != DD_OK) return -1;
     double t0 = now_seconds();

@@ -532,6 +532,17 @@ static uint32_t wrap_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
     return best == W_NONE && zero ? w_flat_hull(w, pr, a, b, c) : best;
 }
 
+/* orient3d(a, b, c, k) as w_orient has it, A being the lifts of a, and
+ * an unsure o counted for W_EXACT_FROM's budget as wrap_scan_exact
+ * counts it.                                                            */
+static inline int w_orient_counted(struct dd_wrap *w, dd_pred *pr, const double A[4], const double N[4], uint32_t a,
+                                   uint32_t b, uint32_t c, uint32_t k)
+{
+    double P[4], o = w_row_o(w->lift, k, A, N, P);
+    w->nexact += !w->exact && !(o > w->oerr || o < -w->oerr);
+    return w_sign_o(w, pr, o, a, b, c, k);
+}
+
 /* The scan for cospherical neighbours (w->cosph): the point beyond abc
  * that w_symbolic prefers to every other, found with the ranks first.
  * With y and the best so far, x, both beyond abc, w_symbolic's first
@@ -564,13 +575,11 @@ static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
     for (int i = 1; i < 3; i++)
         if (rk[lv[i]] > rk[lv[top]]) top = i;
     const uint32_t rtop = rk[lv[top]], u0 = lv[(top + 2) % 3], u1 = lv[(top + 1) % 3];
-    double Nx[4], P[4];
+    double Nx[4];
     int zero = 0;
     for (uint32_t k = 0; k < n; k++) {
         if (rk[k] >= rtop || k == u0 || k == u1) continue;
-        double ok = w_row_o(L, k, A, N, P);
-        w->nexact += !w->exact && !(ok > w->oerr || ok < -w->oerr);
-        int o = w_sign_o(w, pr, ok, a, b, c, k);
+        int o = w_orient_counted(w, pr, A, N, a, b, c, k);
         zero |= o == 0;
         if (o <= 0) continue;
         if (lv[3] != W_NONE) {
@@ -585,9 +594,7 @@ static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
     uint32_t best = W_NONE;
     for (uint32_t k = 0; k < n; k++) {
         if (rk[k] <= rtop || (best != W_NONE && rk[k] > rk[best])) continue;
-        double ok = w_row_o(L, k, A, N, P);
-        w->nexact += !w->exact && !(ok > w->oerr || ok < -w->oerr);
-        int o = w_sign_o(w, pr, ok, a, b, c, k);
+        int o = w_orient_counted(w, pr, A, N, a, b, c, k);
         zero |= o == 0;
         if (o > 0) best = k;
     }
