@@ -117,29 +117,35 @@ static dd_status collect_star(dd_del *d)
     }
     uint32_t vep = d->vepoch;
     d->star.n = d->nbr.n = 0;
-    d->on_hull = 0;
+    d->star_inf = 0;
     uint32_t c0 = t->vcell[q];
     t->stamp[c0] = ep;
     dd_status s = dd_vec_push(&d->star, c0);
-    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+    for (size_t k = 0; k < d->star.n; k++) {
+        /* room for the cell's three other vertices and neighbours: one
+         * test a cell, none a push                                      */
+        if (d->star.n + 3 > d->star.cap) s = dd_vec_reserve(&d->star, 2 * d->star.cap + 64);
+        if (d->nbr.n + 3 > d->nbr.cap && s == DD_OK) s = dd_vec_reserve(&d->nbr, 2 * d->nbr.cap + 64);
+        if (s != DD_OK) break;
         uint32_t c = d->star.a[k];
         const uint32_t *v = dd_tv(t, c);
-        for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
+        for (uint32_t j = 0; j < 4; j++) {
             uint32_t w = v[j];
             if (w == q) continue;
-            if (w == DD_INF) d->on_hull = 1;
+            if (w == DD_INF) d->star_inf++;          /* once per infinite cell */
             else if (d->vmark[w] != vep) {
                 d->vmark[w] = vep;
-                s = dd_vec_push(&d->nbr, w);
+                d->nbr.a[d->nbr.n++] = w;
             }
             uint32_t nb = dd_tn(t, c)[j] >> 2;
-            if (s == DD_OK && t->stamp[nb] != ep) {
+            if (t->stamp[nb] != ep) {
                 t->stamp[nb] = ep;
-                s = dd_vec_push(&d->star, nb);
+                d->star.a[d->star.n++] = nb;
             }
         }
     }
     if (s != DD_OK) return s;
+    d->on_hull = d->star_inf > 0;
     d->lhash_ready = 0;
     d->sew_direct = 0;
     d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
@@ -371,13 +377,8 @@ static dd_status sew(dd_del *d)
      * (in reverse, so the free list gives them back in the star's order),
      * so that the fill takes their places: where the deletion is, in
      * memory, whatever the free list held before.                        */
-    int finite_star = 0;
-    for (size_t k = d->star.n; k-- > 0;) {
-        uint32_t c = d->star.a[k];
-        if (!dd_is_infinite_cell(t, c)) finite_star++;
-        dd_kill_cell(t, c);
-    }
-    t->nfinite -= (uint32_t)finite_star;
+    for (size_t k = d->star.n; k-- > 0;) dd_kill_cell(t, d->star.a[k]);
+    t->nfinite -= (uint32_t)d->star.n - d->star_inf;
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = dd_new_cell(t);
         memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
@@ -462,9 +463,7 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     if (dd_del_pick_base(d, d->order.a, d->order.n) != DD_OK) {
         /* Coplanar finite neighbours: q is on the hull.  If every finite
          * cell holds q, every other point is a neighbour: all coplanar.   */
-        size_t finite_star = 0;
-        for (size_t k = 0; k < d->star.n; k++) finite_star += !dd_is_infinite_cell(t, d->star.a[k]);
-        if (finite_star == t->nfinite)
+        if (d->star.n - d->star_inf == t->nfinite)
             return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points",
                            t->v2in[q]);
         if (!d->on_hull)

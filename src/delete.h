@@ -45,6 +45,7 @@ typedef struct dd_del {
     uint32_t q;           /* vertex id being deleted                      */
     const double *qp;     /* its point                                    */
     int on_hull;          /* DD_INF is a neighbour of q                   */
+    uint32_t star_inf;    /* infinite cells in the star                   */
 
     dd_vec star;          /* cells incident to q                          */
     dd_vec nbr;           /* P minus DD_INF: the finite neighbours of q   */
