@@ -147,10 +147,18 @@ typedef struct dd_vec {
 } dd_vec;
 
 dd_status dd_vec_reserve(dd_vec *v, size_t cap);
+/* Room for `more` more entries, the capacity doubling (at least 64). */
+static inline dd_status dd_vec_room(dd_vec *v, size_t more)
+{
+    if (v->n + more <= v->cap) return DD_OK;
+    size_t cap = v->cap ? 2 * v->cap : 64;
+    while (cap < v->n + more) cap *= 2;
+    return dd_vec_reserve(v, cap);
+}
 static inline dd_status dd_vec_push(dd_vec *v, uint32_t x)
 {
     if (v->n == v->cap) {
-        dd_status s = dd_vec_reserve(v, v->cap ? 2 * v->cap : 64);
+        dd_status s = dd_vec_room(v, 1);
         if (s != DD_OK) return s;
     }
     v->a[v->n++] = x;

@@ -987,12 +987,7 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
 }
 
 #ifdef W_AVX2
-/* Rank sort of distinct ids: each goes to the place given by the number
- * of ids below it, counted eight at a time (the ids biased by 2^31 for
- * the signed compare; the padding, UINT32_MAX, is below none).  O(n^2)
- * compares but no branch on the data, where the insertion sort's inner
- * loop ends on a mispredicted branch for each id.  tmp has room for n
- * rounded up to 8.                                                      */
+/* The sum of x's eight lanes. */
 __attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
 {
     __m128i s = _mm_add_epi32(_mm256_castsi256_si128(x), _mm256_extracti128_si256(x, 1));
@@ -1001,6 +996,12 @@ __attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
     return (uint32_t)_mm_cvtsi128_si32(s);
 }
 
+/* Rank sort of distinct ids: each goes to the place given by the number
+ * of ids below it, counted eight at a time (the ids biased by 2^31 for
+ * the signed compare; the padding, UINT32_MAX, is below none).  O(n^2)
+ * compares but no branch on the data, where the insertion sort's inner
+ * loop ends on a mispredicted branch for each id.  tmp has room for n
+ * rounded up to 8.                                                      */
 __attribute__((target("avx2"))) static void w_rank_sort_avx2(uint32_t *a, size_t n, uint32_t *tmp)
 {
     const size_t m = (n + 7) & ~(size_t)7;
