@@ -478,14 +478,34 @@ dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
 
 /* ---- Bowyer-Watson insertion --------------------------------------------- */
 
+/* Asks for the records and marks of c's neighbours ahead: the conflict
+ * search tests them after it has tested c's siblings.  Construction only
+ * (dd_build_insert): there they are out of cache (10^6 uniform points:
+ * 4.20 -> 3.86 s, median of 10 alternated builds, with the dedup's
+ * look-ahead, build.c), where a re-insertion finds the cavity the
+ * deletion just left in cache and would run 6% more instructions
+ * (callgrind, uniform degree 24-31).  So the search is compiled twice,
+ * each copy a function of its own (inlined into the insertion, its
+ * in-sphere filter took 7% more instructions).                          */
+static inline void prefetch_neighbours(const dd_tri *t, uint32_t c)
+{
+    for (uint32_t j = 0; j < 4; j++) {
+        uint32_t x = dd_tn(t, c)[j] >> 2;
+        __builtin_prefetch(dd_tv(t, x));
+        __builtin_prefetch(&t->stamp[x]);
+    }
+}
+
 /* Marks the conflict region of p reachable from c0 (stamp == ep) and lists
  * its boundary facets (4c+i, c in conflict, its neighbour not).  Cells found
  * not in conflict get stamp ep+1 so they are tested once.                  */
-dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
+__attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t, const double *p, uint32_t c0,
+                                                                   const int ahead)
 {
     dd_mark ep = dd_new_epoch(t, 2), tested = (dd_mark)(ep + 1);
     t->stack.n = t->conflict.n = t->boundary.n = 0;
     t->stamp[c0] = ep;
+    if (ahead) prefetch_neighbours(t, c0);
     dd_status s = dd_vec_push(&t->stack, c0);
     while (s == DD_OK && t->stack.n > 0) {
         uint32_t c = t->stack.a[--t->stack.n];
@@ -495,6 +515,7 @@ dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
             if (t->stamp[nb] == ep) continue;
             if (t->stamp[nb] != tested && cell_conflict_fast(t, nb, p)) {
                 t->stamp[nb] = ep;
+                if (ahead) prefetch_neighbours(t, nb);
                 s = dd_vec_push(&t->stack, nb);
             } else {
                 t->stamp[nb] = tested;
@@ -503,6 +524,16 @@ dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
         }
     }
     return s;
+}
+
+dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
+{
+    return find_conflicts(t, p, c0, 0);
+}
+
+static dd_status find_conflicts_ahead(dd_tri *t, const double *p, uint32_t c0)
+{
+    return find_conflicts(t, p, c0, 1);
 }
 
 /* Makes sure the edge hash has at least 4 * nfacets slots (load <= 3/8
@@ -662,7 +693,7 @@ void dd_clear_cells(dd_tri *t)
     t->inf_cell = t->hint = DD_NONE;
 }
 
-dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
+static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
 {
     const double *p = dd_pt(t, v);
     uint32_t start = t->hint;
@@ -676,10 +707,20 @@ dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
             if (dd_lex_cmp(dd_pt(t, w), p) == 0)
                 return dd_fail(t, DD_ERR_DUPLICATE, "point %u equals vertex %u", t->v2in[v], t->v2in[w]);
         }
-    s = dd_find_conflicts(t, p, c0);
+    s = ahead ? find_conflicts_ahead(t, p, c0) : dd_find_conflicts(t, p, c0);
     if (s == DD_OK) s = dd_reserve_star(t);
     if (s != DD_OK) return dd_fail(t, s, "out of memory inserting point %u", t->v2in[v]);
     dd_fill_star(t, v);
     t->nvert++;
     return DD_OK;
+}
+
+dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
+{
+    return insert_vertex(t, v, 0);
+}
+
+dd_status dd_build_insert(dd_tri *t, uint32_t v)
+{
+    return insert_vertex(t, v, 1);
 }

@@ -341,6 +341,9 @@ void dd_fill_star(dd_tri *t, uint32_t v);
 /* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
  * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+/* The same for construction, whose cells are mostly out of cache: the
+ * conflict search fetches the next cells ahead.                          */
+dd_status dd_build_insert(dd_tri *t, uint32_t v);
 
 /* The first tetrahedron v[0..3] (any orientation) and its four infinite
  * cells, in an empty t.  Room for 5 cells must be reserved.              */
