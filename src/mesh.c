@@ -101,13 +101,8 @@ static void trihash_insert(dd_tri_slot *s, uint32_t mask, uint32_t gen, const dd
         }
 }
 
-/* Open-addressing tables whose slots carry a generation (a slot is used
- * iff its gen is the table's): sizes *tab to the least power of two of at
- * least 64 and `min` slots of `elsize` bytes (*mask = that size - 1), all
- * unused, by taking a new generation in *gen.  O(1) unless it grows or
- * the generation counter wraps (then it clears once).                   */
-static dd_status gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_t *mask,
-                                 size_t min, size_t elsize)
+dd_status dd_gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_t *mask, size_t min,
+                             size_t elsize)
 {
     size_t size = 64;
     while (size < min) size *= 2;
@@ -130,7 +125,7 @@ static dd_status gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uin
 dd_status dd_trihash_reset(dd_trihash *h, size_t expect)
 {
     void *s = h->s;
-    dd_status st = gen_table_reset(&s, &h->alloc, &h->gen, &h->mask, 2 * expect, sizeof *h->s);
+    dd_status st = dd_gen_table_reset(&s, &h->alloc, &h->gen, &h->mask, 2 * expect, sizeof *h->s);
     h->s = s;
     h->n = 0;
     return st;
@@ -541,7 +536,7 @@ static dd_status find_conflicts_ahead(dd_tri *t, const double *p, uint32_t c0)
 dd_status dd_reserve_edge_hash(dd_tri *t, size_t nfacets)
 {
     void *h = t->ehash;   /* the mask, not the capacity: small stars stay in cache */
-    dd_status st = gen_table_reset(&h, &t->ehash_cap, &t->ehash_gen, &t->ehash_mask, 4 * nfacets,
+    dd_status st = dd_gen_table_reset(&h, &t->ehash_cap, &t->ehash_gen, &t->ehash_mask, 4 * nfacets,
                                    sizeof *t->ehash);
     t->ehash = h;
     return st;

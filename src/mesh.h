@@ -93,6 +93,15 @@ typedef struct dd_trihash {
     uint32_t alloc, mask, n, gen;
 } dd_trihash;
 
+/* Open-addressing tables whose slots carry a generation (a slot is used
+ * iff its gen is the table's): sizes *tab to the least power of two of at
+ * least 64 and `min` slots of `elsize` bytes (*mask = that size - 1), all
+ * unused, by taking a new generation in *gen.  O(1) unless it grows or
+ * the generation counter wraps (then it clears once: a zeroed slot is
+ * unused, generations start at 1).                                      */
+dd_status dd_gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_t *mask, size_t min,
+                             size_t elsize);
+
 /* Empties h and sizes it for about `expect` entries. */
 dd_status dd_trihash_reset(dd_trihash *h, size_t expect);
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val);
