@@ -161,7 +161,8 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
 }
 
 /* A triangle's rank in a canonical order (its sorted local numbers, 21
- * bits each): picks the link triangle the wrap starts from.             */
+ * bits each): picks the link triangle the wrap starts from, and keys the
+ * facet table from 64 neighbours on.                                    */
 static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
 {
     dd_sort3u(&a, &b, &c);
