@@ -185,11 +185,16 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
     memset(slot, 0xFF, cap * sizeof *slot); /* empty: id UINT32_MAX > any id */
     size_t mask = cap - 1;
     uint32_t m = 0;
+    uint64_t ahead[DEDUP_AHEAD];             /* the hashes of i .. i + 15 */
+    for (uint32_t i = 0; i < DEDUP_AHEAD && i < n; i++) ahead[i] = hash_point(pts + 3 * (size_t)i);
     for (uint32_t i = 0; i < n; i++) {
-        if (i + DEDUP_AHEAD < n)
-            __builtin_prefetch(&slot[hash_point(pts + 3 * (size_t)(i + DEDUP_AHEAD)) & mask]);
         const double *p = pts + 3 * (size_t)i;
-        uint64_t hp = hash_point(p), tag = hp >> 32 << 32;
+        uint64_t hp = ahead[i % DEDUP_AHEAD], tag = hp >> 32 << 32;
+        if (i + DEDUP_AHEAD < n) {
+            uint64_t hn = hash_point(pts + 3 * (size_t)(i + DEDUP_AHEAD));
+            ahead[i % DEDUP_AHEAD] = hn;
+            __builtin_prefetch(&slot[hn & mask]);
+        }
         size_t h = (size_t)hp & mask;
         for (;; h = (h + 1) & mask) {
             uint64_t e = slot[h];

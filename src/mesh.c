@@ -131,7 +131,8 @@ dd_status dd_trihash_reset(dd_trihash *h, size_t expect)
     return st;
 }
 
-dd_status dd_trihash_grow(dd_trihash *h)
+/* Doubles h (put does, when half full). */
+static dd_status trihash_grow(dd_trihash *h)
 {
     uint32_t size = 2 * (h->mask + 1);
     dd_tri_slot *s = calloc(size, sizeof *s);
@@ -148,7 +149,7 @@ dd_status dd_trihash_grow(dd_trihash *h)
 
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val)
 {
-    if (2 * (h->n + 1) > h->mask + 1 && dd_trihash_grow(h) != DD_OK) return DD_ERR_NOMEM;
+    if (2 * (h->n + 1) > h->mask + 1 && trihash_grow(h) != DD_OK) return DD_ERR_NOMEM;
     dd_sort3u(&a, &b, &c);
     dd_tri_slot e = {a, b, c, val, 0};
     trihash_insert(h->s, h->mask, h->gen, &e);

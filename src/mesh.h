@@ -107,8 +107,6 @@ dd_status dd_trihash_reset(dd_trihash *h, size_t expect);
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val);
 /* The value stored under the triple {a, b, c}, or DD_NONE. */
 uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c);
-/* Doubles h (put and slot do, when half full). */
-dd_status dd_trihash_grow(dd_trihash *h);
 
 static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
 {
@@ -125,28 +123,6 @@ static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t 
     return (uint32_t)(h >> 40) & mask;
 }
 
-/* Find or add, in one probe: the value of {a, b, c}, *found = 1; or a new
- * entry for it, value DD_NONE, *found = 0.  The pointer is valid until the
- * next insertion; NULL when the table could not grow.  Inline: the gift
- * wrap calls it for every facet of every cell.                           */
-static inline uint32_t *dd_trihash_slot(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, int *found)
-{
-    if (2 * (h->n + 1) > h->mask + 1 && dd_trihash_grow(h) != DD_OK) return NULL;
-    dd_sort3u(&a, &b, &c);
-    for (uint32_t i = dd_tri_hash(a, b, c, h->mask);; i = (i + 1) & h->mask) {
-        dd_tri_slot *e = &h->s[i];
-        if (e->gen != h->gen) {
-            *e = (dd_tri_slot){a, b, c, DD_NONE, h->gen};
-            h->n++;
-            *found = 0;
-            return &e->val;
-        }
-        if (e->a == a && e->b == b && e->c == c) {
-            *found = 1;
-            return &e->val;
-        }
-    }
-}
 void dd_trihash_free(dd_trihash *h);
 
 /* A growable array of uint32_t (scratch; reused, never shrunk). */
