@@ -101,10 +101,10 @@ $(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(B)/obj/sr
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
-$(B)/summarize: scripts/summarize.c
+$(B)/summarize: scripts/summarize.c src/buckets.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) $< -o $@ -lm
-$(A)/summarize: scripts/summarize.c
+$(A)/summarize: scripts/summarize.c src/buckets.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) $< -o $@ -lm
 

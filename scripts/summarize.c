@@ -27,14 +27,8 @@
  * means the re-insertion did not restore the triangulation.  "Engine
  * deletion variants" below are all variants but cgal, cgal-rnd and insert.
  *
- * Degree buckets.  [0,4) [4,8), then two buckets per power of two:
- * [2^k, 1.5*2^k) and [1.5*2^k, 2^(k+1)) for k >= 3, i.e.
- *   [8,12) [12,16) [16,24) [24,32) [32,48) [48,64) [64,96) [96,128)
- *   [128,192) [192,256) [256,384) [384,512) [512,768) [768,1024)
- *   [1024,1536) [1536,2048) ...
- * so each is a half or a third of its lower bound wide: nearly even steps
- * on the log axis, about 6.6 buckets per decade of degree, with the paper's
- * 64, 128 and 256 as boundaries.  Empty buckets are skipped.  A bucket's
+ * Degree buckets: src/buckets.h ([4,8), [8,12), [12,16), [16,24), ...,
+ * nearly even steps on the log axis).  Empty buckets are skipped.  A bucket's
  * plotted x is the middle of its integer degrees, (lo + hi - 1) / 2.
  * "deletions" in a bucket is the row count of the variant with the most
  * rows there (every variant deletes the same vertices); a variant with
@@ -93,6 +87,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+
+#include "../src/buckets.h"
 
 #define EXIT_INPUT 1
 #define EXIT_USAGE 2
@@ -214,30 +210,10 @@ static size_t intern(strtab *t, const char *s)
 
 /* ---- degree buckets --------------------------------------------------------- */
 
-/* Bucket index of a degree (see the file top for the boundaries). */
-static int bucket_of(long long d)
-{
-    if (d < 4) return 0;
-    if (d < 8) return 1;
-    int k = 3;
-    while (k < 62 && (d >> (k + 1)) != 0) k++;     /* 2^k <= d < 2^(k+1) */
-    int upper = d >= 3LL << (k - 1);
-    return 2 + 2 * (k - 3) + upper;
-}
-
-static void bucket_bounds(int b, long long *lo, long long *hi)
-{
-    if (b == 0) { *lo = 0; *hi = 4; return; }
-    if (b == 1) { *lo = 4; *hi = 8; return; }
-    int k = 3 + (b - 2) / 2;
-    if ((b - 2) % 2) { *lo = 3LL << (k - 1); *hi = 1LL << (k + 1); }
-    else             { *lo = 1LL << k;       *hi = 3LL << (k - 1); }
-}
-
 static double bucket_center(int b)
 {
     long long lo, hi;
-    bucket_bounds(b, &lo, &hi);
+    dd_bucket_bounds(b, &lo, &hi);
     return (double)(lo + hi - 1) / 2.0;
 }
 
@@ -368,7 +344,7 @@ static int parse_row(ctx *c, char *line, size_t file, long lineno)
 #undef BAD
     if (r->ds == (size_t)-1 || r->var == (size_t)-1)
         return fail(c, "out of memory reading %s", where);
-    r->bucket = bucket_of(r->degree);
+    r->bucket = dd_degree_bucket(r->degree);
     c->nrows++;
     return 0;
 }
@@ -680,7 +656,7 @@ static const char *fmt_count(double v, char buf[32])
 static const char *fmt_bucket(int b, char buf[48])
 {
     long long lo, hi;
-    bucket_bounds(b, &lo, &hi);
+    dd_bucket_bounds(b, &lo, &hi);
     snprintf(buf, 48, "[%lld,%lld)", lo, hi);
     return buf;
 }
@@ -964,7 +940,7 @@ static int write_plotdata(ctx *c, const table *t, size_t ds, const char *name)
             const cell *ce = &t->cells[(size_t)b * t->nvar + j];
             if (!ce->rows) continue;
             long long lo, hi;
-            bucket_bounds(b, &lo, &hi);
+            dd_bucket_bounds(b, &lo, &hi);
             fprintf(dat, "%.6g", bucket_center(b));
             put_num(dat, ce->med);
             put_num(dat, ce->q1);

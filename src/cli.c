@@ -334,14 +334,16 @@ static const command commands[] = {
      "mismatch.", cmd_check},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
-    {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
+    {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
      "The deletion benchmark (make bench runs it): every row (dtdel variants)\n"
      "on the mode's datasets, each deletion timed alone and compared with\n"
      "CGAL's result; then an insert row (our re-insertion of the vertex)\n"
      "and an auto-paired row (the default's deletion, timed right before\n"
      "each of those re-insertions); one CSV per dataset in DIR (default\n"
      "results/).  --scale multiplies the number of deletions per case\n"
-     "(larger runs: --scale 4).\n"
+     "(larger runs: --scale 4).  Degree buckets left with few deletions\n"
+     "by the random draw get more, drawn among their vertices, up to the\n"
+     "case's minimum times F; --bucket-min M sets that minimum (0: none).\n"
      "--reps R (1-5, default 5): repetitions per timing, the median kept,\n"
      "after one warm-up run (dropped; a row of 2 ms or more keeps its one\n"
      "run); --reps 1 times only first runs (cold branch predictors and\n"

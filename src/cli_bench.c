@@ -3,7 +3,8 @@
  *
  * Per dataset and size: DT(S) is built once by the engine and once by
  * CGAL; the vertices to delete are drawn from a seeded generator, the same
- * for every row; for each vertex and row the deletion alone is timed with
+ * for every row, and sparse degree buckets topped up (bcase, --bucket-min
+ * M: at least M a bucket, 0: none); for each vertex and row the deletion alone is timed with
  * a monotonic clock (median of up to 5 repetitions, or --reps R, while
  * they take under 2 ms together), its result is compared with CGAL's, and
  * the vertex is re-inserted untimed so the next deletion starts from DT(S)
@@ -49,24 +50,34 @@
  * copies those phase columns into its own rows (same seed, same sample).
  */
 #include "cli.h"
+#include "buckets.h"
 
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-typedef struct bcase { const char *dataset; uint32_t n, deletions; } bcase;
+/* A case: `deletions` vertices drawn at random, then, per degree bucket
+ * (src/buckets.h) with fewer than `bucket_min` of them, more drawn at
+ * random among the vertices of that bucket until it has bucket_min or
+ * all of them (bench_sample).  A random sample leaves the tails of the
+ * degree distribution with a handful of deletions (uniform degree
+ * [24,32): 6 of 150, [4,8): 3; bunny [24,32): 5 of 100; helix n = 1000,
+ * [96,128): 1), whose medians then moved by 10-25% from run to run with
+ * the same code.  Moment-curve vertices all have one degree per case and
+ * the large helix cases cost seconds a deletion: no top-up there.      */
+typedef struct bcase { const char *dataset; uint32_t n, deletions, bucket_min; } bcase;
 
 static const bcase full_cases[] = {
-    {"moment", 8, 6}, {"moment", 16, 6}, {"moment", 32, 6}, {"moment", 64, 6}, {"moment", 128, 6},
-    {"moment", 256, 6}, {"moment", 512, 5}, {"moment", 1024, 4},
-    {"helix", 1000, 12}, {"helix", 4000, 12}, {"helix", 16000, 12}, {"helix", 64000, 10},
-    {"uniform", 100000, 150}, {"sphere", 100000, 150}, {"bunny", 0, 100},
-    {"grid", 8000, 60}, {"cosphere", 4000, 60}, {NULL, 0, 0}};
+    {"moment", 8, 6, 0}, {"moment", 16, 6, 0}, {"moment", 32, 6, 0}, {"moment", 64, 6, 0},
+    {"moment", 128, 6, 0}, {"moment", 256, 6, 0}, {"moment", 512, 5, 0}, {"moment", 1024, 4, 0},
+    {"helix", 1000, 12, 12}, {"helix", 4000, 12, 12}, {"helix", 16000, 12, 0}, {"helix", 64000, 10, 0},
+    {"uniform", 100000, 150, 20}, {"sphere", 100000, 150, 20}, {"bunny", 0, 100, 20},
+    {"grid", 8000, 60, 20}, {"cosphere", 4000, 60, 20}, {NULL, 0, 0, 0}};
 static const bcase quick_cases[] = {
-    {"moment", 16, 3}, {"moment", 64, 3}, {"moment", 256, 3}, {"moment", 512, 2},
-    {"helix", 1000, 6}, {"helix", 16000, 6},
-    {"uniform", 20000, 40}, {"sphere", 20000, 40}, {"bunny", 10000, 20},
-    {"grid", 1000, 20}, {"cosphere", 1000, 20}, {NULL, 0, 0}};
+    {"moment", 16, 3, 0}, {"moment", 64, 3, 0}, {"moment", 256, 3, 0}, {"moment", 512, 2, 0},
+    {"helix", 1000, 6, 6}, {"helix", 16000, 6, 0},
+    {"uniform", 20000, 40, 8}, {"sphere", 20000, 40, 8}, {"bunny", 10000, 20, 8},
+    {"grid", 1000, 20, 8}, {"cosphere", 1000, 20, 8}, {NULL, 0, 0, 0}};
 
 typedef struct phase_row { uint32_t n, vertex; char variant[24]; double ph[4]; uint64_t tets; } phase_row;
 
@@ -141,6 +152,46 @@ static uint32_t deletions_of(const bcase *c, double scale)
     return (uint32_t)((double)c->deletions * scale + 0.5);
 }
 
+/* The vertices case c deletes, into *out (*nout of them; malloc'd): k
+ * drawn at random (draw_vertex, in the order drawn; marked in used),
+ * then the top-up of the buckets with fewer than bmin (see bcase), each
+ * from its unused vertices at random, in increasing bucket order.  0, or
+ * -1 when out of memory.                                              */
+static int bench_sample(dd_tri *t, uint32_t np, uint32_t k, uint32_t bmin, uint64_t *x, unsigned char *used,
+                        uint32_t **out, uint32_t *nout)
+{
+    enum { NB = 64 };                                /* buckets of 64-bit degrees */
+    uint32_t have[NB] = {0}, *deg = NULL, *pool = NULL;
+    uint32_t *v = malloc((size_t)np * sizeof *v);
+    if (!v) return -1;
+    uint32_t n = 0;
+    for (; n < k; n++) v[n] = draw_vertex(t, x, np, used);
+    if (bmin > 0) {
+        deg = malloc((size_t)np * sizeof *deg);
+        pool = malloc((size_t)np * sizeof *pool);
+        if (!deg || !pool) { free(v); free(deg); free(pool); return -1; }
+        for (uint32_t i = 0; i < n; i++) have[dd_degree_bucket(dd_degree(t, v[i]))]++;
+        for (uint32_t i = 0; i < np; i++) deg[i] = dd_is_vertex(t, i) && !used[i] ? dd_degree(t, i) : 0;
+        for (int b = 0; b < NB; b++) {
+            if (have[b] >= bmin) continue;
+            uint32_t m = 0;
+            for (uint32_t i = 0; i < np; i++)
+                if (deg[i] && dd_degree_bucket(deg[i]) == b) pool[m++] = i;
+            for (; have[b] < bmin && m > 0; have[b]++) {     /* a draw without replacement */
+                uint32_t j = rand_below(x, m);
+                v[n++] = pool[j];
+                used[pool[j]] = 1;
+                pool[j] = pool[--m];
+            }
+        }
+    }
+    free(deg);
+    free(pool);
+    *out = v;
+    *nout = n;
+    return 0;
+}
+
 /* Repetitions to run under the rule above: max_reps, and a warm-up
  * before them when there is more than one. */
 static int runs_for(int max_reps)
@@ -206,7 +257,7 @@ int cmd_bench(int argc, char **argv)
     const char *mode = "full", *outdir = "results", *phasedir = NULL, *only = NULL;
     uint64_t seed = 1;
     double scale = 1.0;
-    int max_reps = 5;
+    int max_reps = 5, bucket_min = -1;               /* -1: the case's */
     int counting = 0;
 #ifdef DD_COUNTERS
     counting = 1;
@@ -221,6 +272,13 @@ int cmd_bench(int argc, char **argv)
             long r = strtol(argv[++i], &end, 10);
             if (*end || r < 1 || r > 5) return usage_error("bench", "--reps wants 1 to 5, got '%s'", argv[i]);
             max_reps = (int)r;
+        }
+        else if (!strcmp(argv[i], "--bucket-min") && i + 1 < argc) {
+            char *end;
+            long b = strtol(argv[++i], &end, 10);
+            if (*end || end == argv[i] || b < 0 || b > 1000)
+                return usage_error("bench", "--bucket-min wants 0 to 1000, got '%s'", argv[i]);
+            bucket_min = (int)b;
         }
         else if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
             char *end;
@@ -281,9 +339,14 @@ int cmd_bench(int argc, char **argv)
         if (k > dd_num_vertices(t)) k = dd_num_vertices(t);
         uint64_t x = (seed + c->n) * 0x9E3779B97F4A7C15ull | 1;
         unsigned char *used = calloc(np, 1);
-        uint32_t *nb = malloc((np + 1) * sizeof *nb);
-        for (uint32_t it = 0; it < k; it++) {
-            uint32_t v = draw_vertex(t, &x, np, used);
+        uint32_t *nb = malloc((np + 1) * sizeof *nb), *sample = NULL, ns = 0;
+        uint32_t bmin = bucket_min >= 0 ? (uint32_t)bucket_min : (uint32_t)((double)c->bucket_min * scale + 0.5);
+        if (!used || !nb || bench_sample(t, np, k, bmin, &x, used, &sample, &ns)) {
+            fprintf(stderr, "dtdel bench: out of memory\n");
+            return EXIT_INPUT;
+        }
+        for (uint32_t it = 0; it < ns; it++) {
+            uint32_t v = sample[it];
             uint32_t deg = dd_degree(t, v), hull = (uint32_t)dd_on_hull(t, v);
             uint32_t nnb = dd_neighbors(t, v, nb, np);
             uint64_t refh = 0, pre = 0;
@@ -352,9 +415,9 @@ int cmd_bench(int argc, char **argv)
                     fprintf(csv, "%s,%u,%u,%u,%u,insert,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull, med, match);
                 }
             }
-            done_work += 1.0;
+            done_work += (double)k / ns;             /* the top-up shares its case's part */
             double el = now_seconds() - t_start;
-            if (el - last_print >= 2.0 || it + 1 == k) {   /* at most every 2 s */
+            if (el - last_print >= 2.0 || it + 1 == ns) {   /* at most every 2 s */
                 last_print = el;
                 fprintf(stderr, "  %-9s n=%-7u %3.0f%% of the deletions done, %4.0f s elapsed\n", c->dataset, np,
                         100.0 * done_work / total_work, el);
@@ -363,6 +426,7 @@ int cmd_bench(int argc, char **argv)
         fflush(csv);
         free(used);
         free(nb);
+        free(sample);
         free(pts);
         dd_free(t);
         dd_cgal_free(g);

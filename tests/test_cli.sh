@@ -132,7 +132,7 @@ bench_ok() {
 # bench: a small run matches CGAL on every row, and each vertex has one
 # insert row and one auto-paired row (the default's deletion, timed with
 # the re-insertions), both matching
-"$DTDEL" bench --mode quick --dataset uniform --scale 0.1 --reps 2 --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err"; rc=$?
+"$DTDEL" bench --mode quick --dataset uniform --scale 0.1 --reps 2 --bucket-min 0 --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err"; rc=$?
 csv="$tmp/bench/uniform.csv"
 nv=$(tail -n +2 "$csv" 2>/dev/null | cut -d, -f3 | sort -u | wc -l)
 ni=$(grep -cE '^uniform,[0-9]+,[0-9]+,[0-9]+,[01],insert,[0-9.]+,,,,,,1$' "$csv" 2>/dev/null)
@@ -140,6 +140,25 @@ npd=$(grep -cE '^uniform,[0-9]+,[0-9]+,[0-9]+,[01],auto-paired,[0-9.]+,,,,,,1$' 
 if [ $rc -eq 0 ] && grep -q 'bench: 0 mismatches' "$tmp/err" && [ "$nv" -eq 4 ] && [ "$ni" -eq 4 ] && [ "$npd" -eq 4 ]; then
     echo "ok cli/bench-paired-rows"; else
     echo "FAIL cli/bench-paired-rows: rc $rc, $nv vertices, $ni insert and $npd auto-paired rows matching: $(tail -c 300 "$tmp/err")"; fi
+# bench's top-up of sparse degree buckets: the same run (4 random
+# vertices) with --bucket-min 3 deletes at least min(3, c) vertices of
+# each degree bucket holding c vertices of DT(S), and at most 3 + 4;
+# the degrees counted here from `dtdel tets` (distinct neighbours, the
+# infinite vertex included), the buckets of src/buckets.h
+bucket_awk='function bk(d,  k) { if (d < 4) return 0; if (d < 8) return 1; k = 3; while (d >= 2 ^ (k + 1)) k++; return 2 + 2 * (k - 3) + (d >= 3 * 2 ^ (k - 1)) }'
+"$DTDEL" gen uniform 20000 >"$tmp/u20k.xyz" && "$DTDEL" tets "$tmp/u20k.xyz" |
+    awk "$bucket_awk"' { for (i = 1; i <= 4; i++) for (j = i + 1; j <= 4; j++) { a = $i; b = $j; if (a > b) { x = a; a = b; b = x }
+                           if (!((a "," b) in e)) { e[a "," b] = 1; deg[a]++; deg[b]++ } } }
+          END { for (v in deg) if (v != -1) h[bk(deg[v])]++; for (b in h) print b, h[b] }' | sort -n >"$tmp/have"
+"$DTDEL" bench --mode quick --dataset uniform --scale 0.1 --reps 1 --bucket-min 3 --out "$tmp/bench3" >"$tmp/out" 2>"$tmp/err"; rc=$?
+tail -n +2 "$tmp/bench3/uniform.csv" 2>/dev/null | awk -F, "$bucket_awk"' !seen[$3]++ { s[bk($4)]++ } END { for (b in s) print b, s[b] }' |
+    sort -n >"$tmp/got"
+bad=$(awk 'NR == FNR { got[$1] = $2; next } { need = $2 < 3 ? $2 : 3; g = got[$1] + 0; if (g < need || g > 7) print "bucket " $1 ": " g " of " $2 }' \
+          "$tmp/got" "$tmp/have")
+if [ $rc -eq 0 ] && grep -q 'bench: 0 mismatches' "$tmp/err" && [ -s "$tmp/have" ] && [ "$(wc -l <"$tmp/have")" -ge 5 ] && [ -z "$bad" ]; then
+    echo "ok cli/bench-bucket-min"; else
+    echo "FAIL cli/bench-bucket-min: rc $rc, buckets $(tr '\n' ' ' <"$tmp/have"), sampled $(tr '\n' ' ' <"$tmp/got"): $bad $(tail -c 300 "$tmp/err")"; fi
+expect bench-bucket-min-bad 2 "bucket-min wants 0 to 1000, got .x." "$DTDEL" bench --bucket-min x
 # build-bench: both engines' DT(S) identical, on generic, curve and degenerate points
 ratio='^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'
 bench_ok build-bench "$ratio" 3000 --reps 2
