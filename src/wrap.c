@@ -224,12 +224,11 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
     return s;
 }
 
-/* The entry of triangle (a, b, c): *found = 1 and its record, or a new
- * entry (*found = 0) that w_open fills; NULL when the table cannot grow. */
-static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, int *found)
+/* The entry of the triangle of key `key` (w_fkey): *found = 1 and its
+ * record, or a new entry (*found = 0) that w_open fills.  The table has
+ * room (w_reserve_recs).                                                */
+static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
 {
-    if (2 * (w->nrec + 1) > w->fs_mask + 1 && w_ftab_grow(w) != DD_OK) return NULL;
-    uint64_t key = w_fkey(w, a, b, c);
     struct w_fslot *e = w_fprobe(w, key);
     *found = e->gen == w->fs_gen;
     if (!*found) *e = (struct w_fslot){key, W_NONE, w->fs_gen};
@@ -238,21 +237,27 @@ static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint32_t a, uint32_t b, ui
 
 static dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
-    uint32_t cap = w->cap_rec ? w->cap_rec : 256;
-    while (cap < w->nrec + more) cap *= 2;
-    if (!grow((void **)&w->tri, cap, sizeof *w->tri) || !grow((void **)&w->own, cap, sizeof *w->own) ||
-        !grow((void **)&w->out, cap, sizeof *w->out) || !grow((void **)&w->closed, cap, sizeof *w->closed) ||
-        !grow((void **)&w->stack, cap, sizeof *w->stack))
-        return DD_ERR_NOMEM;
-    w->cap_rec = cap;
-    return DD_OK;
+    if (w->nrec + more > w->cap_rec) {
+        uint32_t cap = w->cap_rec ? w->cap_rec : 256;
+        while (cap < w->nrec + more) cap *= 2;
+        if (!grow((void **)&w->tri, cap, sizeof *w->tri) || !grow((void **)&w->own, cap, sizeof *w->own) ||
+            !grow((void **)&w->out, cap, sizeof *w->out) || !grow((void **)&w->closed, cap, sizeof *w->closed) ||
+            !grow((void **)&w->stack, cap, sizeof *w->stack))
+            return DD_ERR_NOMEM;
+        w->cap_rec = cap;
+    }
+    dd_status s = DD_OK;
+    while (s == DD_OK && 2 * (w->nrec + more) > w->fs_mask + 1) s = w_ftab_grow(w);
+    return s;
 }
 
-/* Room for `more` more facet records (inline: w_run asks for each
- * facet it opens).                                                        */
+/* Room for `more` more facet records, in the arrays and in the table
+ * (inline, the growth apart: w_run asks once a cell, for its three new
+ * facets, where asking at each facet, table and records apart, cost 10
+ * instructions a facet).                                                 */
 static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
 {
-    return w->nrec + more <= w->cap_rec ? DD_OK : w_grow_recs(w, more);
+    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
 }
 
 /* Opens triangle (a, b, c), whose other side is qdt facet `own` (W_NONE:
@@ -1228,8 +1233,7 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
                 if (lv[j] != inf && u != inf) w_adj_put(w, lv[j], u);
             }
         int found;
-        uint32_t *val = w_fslot_of(w, lv[0], lv[1], lv[2], &found);
-        if (!val) return DD_ERR_NOMEM;
+        uint32_t *val = w_fslot_of(w, w_fkey(w, lv[0], lv[1], lv[2]), &found);
         if (found) return w_broken(d, "a link triangle appears twice");
         if ((lv[0] == lead) | (lv[1] == lead) | (lv[2] == lead)) {
             uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
@@ -1370,11 +1374,13 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             nlink++;
         }
         d->fill.a[d->fill.n++] = m;
+        if ((s = w_reserve_recs(w, 3)) != DD_OK) return s;
+        /* facet j's key: the cell's set of local numbers less lv[j]      */
+        const uint64_t set = w->fs_sets ? 1ull << a | 1ull << b | 1ull << e | 1ull << p : 0;
         for (uint32_t j = 0; j < 3; j++) {
             uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
             int found;
-            uint32_t *val = w_fslot_of(w, f0, f1, f2, &found);
-            if (!val) return DD_ERR_NOMEM;
+            uint32_t *val = w_fslot_of(w, w->fs_sets ? set & ~(1ull << lv[j]) : w_tri_key(f0, f1, f2), &found);
             if (found) {                         /* its other side is known */
                 uint32_t o = *val;
                 if (w->closed[o]) W_WRONG("a triangle bounds three cells");
@@ -1392,8 +1398,6 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
                 }
                 continue;
             }
-            s = w_reserve_recs(w, 1);
-            if (s != DD_OK) return s;
             tn[j] = DD_NONE;
             so[j] = DD_NONE;
             w->stack[ns++] = w->nrec;
