@@ -196,9 +196,10 @@ int cmd_delete(int argc, char **argv)
                                                     "known neighbours, two steps"};
                 if (st.wrap > 0)
                     fprintf(stderr, "\n  gift wrap: %s lifts, %u tests left to the exact predicates, last guess"
-                                    " over %s, %u narrow guesses refuted",
+                                    " over %s%s, %u narrow guesses refuted",
                             st.wrap_integer ? "integer (exact)" : "rounded", st.wrap_expansions,
-                            guess[st.wrap_guess], st.wrap_narrow_refuted);
+                            guess[st.wrap_guess], st.wrap_shift_guess ? " (again, on shifted lifts)" : "",
+                            st.wrap_narrow_refuted);
                 fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",
                         (unsigned long long)cn.insphere_calls, (unsigned long long)cn.insphere_exact,
                         (unsigned long long)cn.orient_calls, (unsigned long long)cn.orient_exact,

@@ -154,6 +154,9 @@ typedef struct dd_delete_stats {
     uint32_t wrap_narrow_refuted; /* narrow guesses refuted before it     */
     int wrap_integer;         /* the wrap's lifts were integers: each of
                                  its tests exact in doubles (wrap.c)      */
+    int wrap_shift_guess;     /* its guess over every neighbour refuted,
+                                 then made again on shifted lifts (nearly
+                                 cospherical neighbours; wrap.c)          */
     uint32_t wrap_expansions; /* the wrap's tests left to the exact
                                  predicates' expansions                   */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */

@@ -398,9 +398,11 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
         dd_delete_stats ds_;
         dd_last_delete_stats(t, &ds_);
         size_t fill = dd_num_tets(t) + star - before;
-        /* a refuted guess (wrap_guess_course, wrap_narrow_course below)
-         * built cells it dropped                                        */
-        if (ds_.wrap != DD_WRAP_REFUTED && ds_.wrap_narrow_refuted == 0 && ds_.tets_created != fill) {
+        /* a refuted guess (wrap_guess_course, wrap_narrow_course below,
+         * and the one made again on shifted lifts) built cells it
+         * dropped                                                        */
+        if (ds_.wrap != DD_WRAP_REFUTED && ds_.wrap_narrow_refuted == 0 && !ds_.wrap_shift_guess &&
+            ds_.tets_created != fill) {
             snprintf(why, sizeof why, "vertex %u (degree %u, hull %d): %llu cells built, fill %zu", v,
                      ds_.degree, ds_.on_hull, (unsigned long long)ds_.tets_created, fill);
             ok = 0;
@@ -468,8 +470,10 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
 /* Wrap courses (wrap.c, dd_wrap_fill), checked against CGAL with
  * wrap_one: deletes up to k vertices with `variant`, of the given parity
  * (-1: any) or, when hull_below > 0, hull vertices of lower degree only,
- * and counts the courses.  `want`: bit 0, some guess proved; bit 1, some
- * refuted; bit 2, none declined.
+ * or, when deg_from > 0, vertices of at least that degree only, and
+ * counts the courses.  `want`: bit 0, some guess proved; bit 1, some
+ * refuted; bit 2, none declined; bit 3, some guess over every neighbour
+ * refuted, then proved on shifted lifts (wrap-shift-guess/).
  *  - The guess proved and refuted (wrap-guess/): whatever the proof
  *    decides, kept or refuted and wrapped again by the scans, the result
  *    is CGAL's; both sides of the proof must be exercised.
@@ -479,11 +483,17 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
  *    of the perturbation triangulate.  Every hull vertex of degree below
  *    W_EXACT_FROM (40) is deleted, and the wrap must finish the fill
  *    itself, with no decline to the conflict DT.
+ *  - Nearly cospherical neighbours (wrap-shift-guess/, points of a
+ *    sphere, degree 24 and more): a guess on the plain lifts is refuted
+ *    there (the quotients t/o differ by less than their rounding), and
+ *    from 40 neighbours on the wrap declined to the conflict DT, 4.8x a
+ *    re-insertion; it must now guess again on the shifted lifts, prove
+ *    that guess on some vertices, and decline none.
  *  - Integer lifts (wrap-integer/, see wrap_integer): `lifts` >= 0 asks
  *    every wrap to have taken integer lifts (1) or rounded ones (0), and
  *    none with integer lifts to leave a test to the exact predicates.    */
 static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_t n, const char *variant,
-                        int parity, uint32_t hull_below, uint32_t k, int want, int lifts)
+                        int parity, uint32_t hull_below, uint32_t deg_from, uint32_t k, int want, int lifts)
 {
     char msg[256], why[200] = "";
     dd_tri *t;
@@ -492,27 +502,30 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
         return;
     }
     dd_cgal *g = dd_cgal_build(pts, n);
-    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0;
+    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0, shifted = 0;
     for (uint32_t v = 0; v < n && done < k; v++) {
         if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
         if (hull_below && (!dd_on_hull(t, v) || dd_degree(t, v) >= hull_below)) continue;
+        if (deg_from && dd_degree(t, v) < deg_from) continue;
         dd_delete_stats ds_;
         memset(&ds_, 0, sizeof ds_);
         if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
         done++;
+        shifted += ds_.wrap == DD_WRAP_PROVED && ds_.wrap_shift_guess;
         if (lifts < 0 || ds_.wrap == DD_WRAP_NONE) continue;   /* forced fill: no wrap */
         wrong_lifts += ds_.wrap_integer != lifts;
         if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1 |
-               (course[DD_WRAP_DECLINED] == 0) << 2;
+               (course[DD_WRAP_DECLINED] == 0) << 2 | (shifted > 0) << 3;
     tl_check(st, bad == 0 && done > 0 && (seen & want) == want && wrong_lifts == 0 && expansions == 0, tn,
-             "%ld of %ld wrong (%s); proved %ld, refuted %ld, scanned %ld, declined %ld; %ld wraps with %s lifts, "
-             "%ld tests left to the exact predicates with integer lifts", bad, done, why,
-             course[DD_WRAP_PROVED], course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED],
-             wrong_lifts, lifts ? "rounded" : "integer", expansions);
-    printf("# %s: proved %ld, refuted %ld, scanned %ld, declined %ld\n", tn, course[DD_WRAP_PROVED],
-           course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED], course[DD_WRAP_DECLINED]);
+             "%ld of %ld wrong (%s); proved %ld (%ld on shifted lifts), refuted %ld, scanned %ld, declined %ld; "
+             "%ld wraps with %s lifts, %ld tests left to the exact predicates with integer lifts", bad, done, why,
+             course[DD_WRAP_PROVED], shifted, course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED],
+             course[DD_WRAP_DECLINED], wrong_lifts, lifts ? "rounded" : "integer", expansions);
+    printf("# %s: proved %ld (%ld on shifted lifts), refuted %ld, scanned %ld, declined %ld\n", tn,
+           course[DD_WRAP_PROVED], shifted, course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED],
+           course[DD_WRAP_DECLINED]);
     dd_cgal_free(g);
     dd_free(t);
 }
@@ -522,7 +535,7 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
 {
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-guess/%s", name);
-    wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, k, want, -1);
+    wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, 0, k, want, -1);
 }
 
 /* The narrow guesses (wrap.c, w_guess_narrow), on a point set whose
@@ -567,7 +580,7 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
 {
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-flat-hull/%s/%s", name, variant);
-    wrap_course(st, tn, pts, n, variant, -1, 40, UINT32_MAX, 4, -1);
+    wrap_course(st, tn, pts, n, variant, -1, 40, 0, UINT32_MAX, 4, -1);
 }
 
 /* Integer lifts (wrap.c, w_lift): when q and its neighbours have integer
@@ -587,7 +600,7 @@ static void wrap_integer(tl_state *st, const char *name, const double *pts, uint
 {
     char tn[128];
     snprintf(tn, sizeof tn, "wrap-integer/%s/%s", name, variant);
-    wrap_course(st, tn, pts, n, variant, -1, 0, UINT32_MAX, 0, want);
+    wrap_course(st, tn, pts, n, variant, -1, 0, 0, UINT32_MAX, 0, want);
 }
 
 static void refusals(tl_state *st)
@@ -842,6 +855,12 @@ int main(int argc, char **argv)
          * some guesses are refuted), and the moment curve                */
         p = gen("sphere", 1000, &np);
         wrap_guess_course(&st, "sphere-1000", p, np, -1, small ? 100 : 300, 3);
+        free(p);
+        /* its vertices of degree 24 and more (wrap_course)             */
+        p = gen("sphere", 3000, &np);
+        wrap_course(&st, "wrap-shift-guess/sphere-3000/auto", p, np, "auto", -1, 0, 24, small ? 40 : 120, 13, -1);
+        wrap_course(&st, "wrap-shift-guess/sphere-3000/gift-wrap", p, np, "gift-wrap", -1, 0, 24, small ? 40 : 120,
+                    13, -1);
         free(p);
         p = gen("moment", 128, &np);
         wrap_guess_course(&st, "moment-128", p, np, -1, small ? 20 : 128, 1);
