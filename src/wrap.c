@@ -342,10 +342,12 @@ static void w_lift(struct dd_wrap *w, const double *q)
 /* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
  * wrap_scan have the same entries and at most as many roundings), for
  * nearly cospherical cavities where the plain filter abstains.  Tried
- * once per deletion, when a fast scan first fails its check, with at
- * least DD_SHIFT_FROM neighbours (below that the exact expansions of the
- * shift cost more than the tests they save, as in qsmall.c); the scan is
- * then run again.                                                        */
+ * once per deletion, with at least DD_SHIFT_FROM neighbours (below that
+ * the exact expansions of the shift cost more than the tests they save,
+ * as in qsmall.c): when a guess over every neighbour is refuted, which
+ * is then made again (dd_wrap_fill), or when a fast scan first fails its
+ * check, which is then run again.  0 when the shift is no tighter (the
+ * lifts are kept).                                                      */
 static int w_shift(struct dd_wrap *w)
 {
     w->shifted = 1;
