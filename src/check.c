@@ -61,6 +61,15 @@ dd_status dd_check(dd_tri *t)
     if (live != t->nlive || finite != t->nfinite)
         return dd_fail(t, DD_ERR_INTERNAL, "cell counts wrong: %zu live (recorded %u), %zu finite (recorded %u)",
                        live, t->nlive, finite, t->nfinite);
+    /* every other cell is free, once, on the free list: none lost (a
+     * strategy's cells given back, wrap.c's w_drop_fill)                 */
+    size_t nfree = 0;
+    for (uint32_t c = t->free_head; c != DD_NONE; c = dd_tn(t, c)[0])
+        if (c >= t->ncell || dd_tv(t, c)[0] != DD_DEAD || ++nfree > t->nfree)
+            return dd_fail(t, DD_ERR_INTERNAL, "the free list is broken at cell %u", c);
+    if (nfree != t->nfree || live + nfree != t->ncell)
+        return dd_fail(t, DD_ERR_INTERNAL, "cells lost: %zu live and %zu free (recorded %u) of %u", live, nfree,
+                       t->nfree, t->ncell);
     uint32_t nv = 0;
     for (uint32_t v = 0; v < t->nvid; v++) {
         uint32_t c = t->vcell[v];

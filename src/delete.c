@@ -145,7 +145,7 @@ static dd_status collect_star(dd_del *d)
     if (s != DD_OK) return s;
     d->on_hull = d->star_inf > 0;
     d->lhash_ready = 0;
-    d->sew_direct = 0;
+    d->fill_in_mesh = 0;
     d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
     return DD_OK;
 }
@@ -357,15 +357,51 @@ static dd_status sew_match(dd_del *d)
     return DD_OK;
 }
 
+/* The sew's last step for fill cell m, now in the mesh and glued: the
+ * vertices' cells, the finite count, the hint.                          */
+static inline void sew_settle(dd_tri *t, uint32_t m)
+{
+    int inf = 0;
+    for (uint32_t j = 0; j < 4; j++) {
+        uint32_t w = dd_tv(t, m)[j];
+        if (w == DD_INF) { inf = 1; t->inf_cell = m; }
+        else t->vcell[w] = m;
+    }
+    if (!inf) t->nfinite++;
+    t->hint = m;
+}
+
+/* The star's cells recycled (point of no return). */
+static void sew_recycle_star(dd_del *d)
+{
+    dd_tri *t = d->t;
+    for (size_t k = d->star.n; k-- > 0;) dd_kill_cell(t, d->star.a[k]);
+    t->nfinite -= (uint32_t)d->star.n - d->star_inf;
+}
+
 static dd_status sew(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
     size_t nf = d->fill.n;
-    dd_status s = DD_OK;
-    if (!d->sew_direct) {
-        s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
-        if (s == DD_OK) s = sew_match(d);
+    if (d->fill_in_mesh) {
+        /* The fill is in the mesh already (wrap.c), glued inside and
+         * matched to the link: glue it to the outside.  Against making it
+         * in d->qdt and copying it here: see w_run.                      */
+        sew_recycle_star(d);
+        for (size_t k = 0; k < nf; k++) {
+            uint32_t m = d->fill.a[k];
+            for (uint32_t j = 0; j < 4; j++) {
+                uint32_t o = d->sew_out.a[4 * k + j];
+                if (o != DD_NONE) dd_glue(t, 4 * m + j, o);
+            }
+            sew_settle(t, m);
+        }
+        t->vcell[d->q] = DD_NONE;
+        t->nvert--;
+        return DD_OK;
     }
+    dd_status s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
+    if (s == DD_OK) s = sew_match(d);
     if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
     if (s != DD_OK) return s;
     s = dd_reserve_cells(t, (uint32_t)nf);
@@ -375,8 +411,7 @@ static dd_status sew(dd_del *d)
      * (in reverse, so the free list gives them back in the star's order),
      * so that the fill takes their places: where the deletion is, in
      * memory, whatever the free list held before.                        */
-    for (size_t k = d->star.n; k-- > 0;) dd_kill_cell(t, d->star.a[k]);
-    t->nfinite -= (uint32_t)d->star.n - d->star_inf;
+    sew_recycle_star(d);
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = dd_new_cell(t);
         memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
@@ -393,14 +428,7 @@ static dd_status sew(dd_del *d)
                 dd_tn(t, m)[j] = 4 * d->cellmap.a[f >> 2] + (f & 3);
             }
         }
-        int inf = 0;
-        for (uint32_t j = 0; j < 4; j++) {
-            uint32_t w = dd_tv(t, m)[j];
-            if (w == DD_INF) { inf = 1; t->inf_cell = m; }
-            else t->vcell[w] = m;
-        }
-        if (!inf) t->nfinite++;
-        t->hint = m;
+        sew_settle(t, m);
     }
     t->vcell[d->q] = DD_NONE;
     t->nvert--;

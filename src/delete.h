@@ -10,11 +10,14 @@
  *      the points of the main one, and list in d->fill the cells of d->qdt
  *      that fill the cavity;
  *   3. sew: match each fill facet that has no fill neighbour to its link
- *      triangle (through a hash of the link triangles, unless the strategy
- *      did the matching itself: d->sew_direct, gift wrapping), copy the
- *      fill cells into the mesh glued to the outside, recycle the star.
- *      Steps 1-2 never touch the mesh and step 3 starts only once every
- *      boundary facet is matched: all or nothing.
+ *      triangle (through a hash of the link triangles), copy the fill
+ *      cells into the mesh glued to the outside, recycle the star.  Gift
+ *      wrapping (d->fill_in_mesh) makes its fill in free cells of the
+ *      mesh and matches it itself: the sew then only glues it to the
+ *      outside.  Steps 1-2 never change the triangulation (wrapping's
+ *      cells are reached from no live cell, and given back exactly as
+ *      they were when its fill is not kept) and step 3 starts only once
+ *      every boundary facet is matched: all or nothing.
  *
  * The conflict DT DT(x)_q(P_i) lives in d->qdt closed by the dummy vertex
  * DD_QD: each boundary triangle abc of DT(x) carries a dummy cell
@@ -64,12 +67,15 @@ typedef struct dd_del {
     void (*vscratch_free)(void *);
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */
     uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
-    dd_vec fill;          /* cells of qdt that fill the cavity            */
+    dd_vec fill;          /* cells of qdt that fill the cavity (of the
+                             mesh itself when fill_in_mesh)               */
     dd_vec order;         /* scratch: the strategy's insertion order      */
     dd_vec sew_out;       /* per fill facet 4k+j, its outside facet (or
                              DD_NONE: inside the fill); a strategy that
-                             sets sew_direct has filled it                */
-    int sew_direct;       /* the strategy matched the fill to the link    */
+                             sets fill_in_mesh has filled it              */
+    int fill_in_mesh;     /* the strategy made the fill in free cells of
+                             the mesh, glued to each other, and matched
+                             it to the link (gift wrapping, wrap.c)      */
     dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
     uint64_t rng;
 

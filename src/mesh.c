@@ -248,6 +248,20 @@ void dd_kill_cell(dd_tri *t, uint32_t c)
     t->nlive--;
 }
 
+void dd_unmake_cells(dd_tri *t, const uint32_t *c, size_t n, uint32_t ncell0)
+{
+    for (size_t k = n; k-- > 0;) {
+        if (c[k] >= ncell0) {                      /* c[k] == t->ncell - 1 */
+            dd_tv(t, c[k])[0] = DD_DEAD;
+            t->ncell--;
+            t->nlive--;
+        } else {
+            dd_kill_cell(t, c[k]);
+        }
+    }
+    t->tets_created -= n;
+}
+
 /* Five cells: the tetrahedron and one infinite cell on each of its facets. */
 void dd_make_first_cells(dd_tri *t, uint32_t v[4])
 {

@@ -289,6 +289,12 @@ uint32_t dd_new_cell(dd_tri *t);     /* after dd_reserve_cells */
 /* Gives back the capacity beyond the cells in use (after construction). */
 void dd_shrink_cells(dd_tri *t);
 void dd_kill_cell(dd_tri *t, uint32_t c);
+/* Undoes the dd_new_cell calls that made c[0..n), in that order, with no
+ * other change of the cells between; ncell0: t->ncell before them.  The
+ * free list, the cell count and the counters are as before them (a cell
+ * made past the end, at or above ncell0, is taken back from the end, one
+ * from the free list goes back on top).                               */
+void dd_unmake_cells(dd_tri *t, const uint32_t *c, size_t n, uint32_t ncell0);
 
 static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
 {

@@ -195,10 +195,58 @@ static void run_case(tl_state *st, const char *name, const double *pts, uint32_t
     dd_free(t);
 }
 
+/* dd_unmake_cells (mesh.c), which gives back the cells gift wrapping made
+ * for a fill it does not keep (wrap.c, w_drop_fill): after deleting and
+ * re-inserting vertices (a free list of some cells), k cells are made,
+ * from the free list and, past it, from the end, then unmade: the free
+ * list (cell by cell), the cell counts and dd_check as before; then the
+ * same k cells are made again, in the same order.                     */
+static void unmake_cells(tl_state *st, uint32_t k)
+{
+    char name[64], msg[256];
+    snprintf(name, sizeof name, "mesh/unmake-cells-%u", k);
+    uint32_t n;
+    double *p = NULL;
+    dd_tri *t;
+    if (dd_gen("uniform", 400, 1, &p, &n, msg, sizeof msg) != DD_OK || dd_create(&t, p, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, name, "setup failed");
+        free(p);
+        return;
+    }
+    for (uint32_t v = 0; v < 40; v += 7)              /* free cells, then none */
+        if (dd_delete(t, v, NULL) != DD_OK || dd_reinsert(t, v) != DD_OK) break;
+    uint32_t before[512], nb = 0, head = t->free_head, nfree = t->nfree, ncell = t->ncell, nlive = t->nlive;
+    for (uint32_t c = t->free_head; c != DD_NONE && nb < 512; c = dd_tn(t, c)[0]) before[nb++] = c;
+    uint32_t made[2][600];
+    int ok = k <= 600 && dd_reserve_cells(t, k) == DD_OK, again = 1;
+    for (int round = 0; ok && round < 2; round++) {
+        uint32_t ncell0 = t->ncell;
+        for (uint32_t i = 0; i < k; i++) {
+            made[round][i] = dd_new_cell(t);
+            dd_tv(t, made[round][i])[0] = 0;          /* as a fill cell would be */
+        }
+        dd_unmake_cells(t, made[round], k, ncell0);
+        uint32_t nafter = 0;
+        for (uint32_t c = t->free_head; c != DD_NONE && nafter < 512 && ok; c = dd_tn(t, c)[0])
+            ok = nafter < nb && before[nafter++] == c;
+        ok = ok && nafter == nb && t->free_head == head && t->nfree == nfree && t->ncell == ncell &&
+             t->nlive == nlive && dd_check(t) == DD_OK;
+        if (round == 1) again = !memcmp(made[0], made[1], k * sizeof made[0][0]);
+    }
+    /* k = 40 within the free list, k = 300 past it                      */
+    int kind = k < 100 ? nfree >= k : nfree < k && nfree > 0;
+    tl_check(st, ok && again && kind, name, "free list or counts changed, or not the case meant (%u free cells, %u made): %s",
+             nfree, k, dd_errmsg(t));
+    dd_free(t);
+    free(p);
+}
+
 int main(int argc, char **argv)
 {
     tl_state st = {0, 0};
     int small = argc > 1 && !strcmp(argv[1], "small");
+    unmake_cells(&st, 40);
+    unmake_cells(&st, 300);
     tl_rng r = {2024};
     struct { const char *ds; uint32_t n; int cases; } sets[] = {
         {"uniform", 60, 300}, {"sphere", 40, 200}, {"cosphere", 60, 200}, {"grid", 64, 200},
