@@ -371,11 +371,13 @@ static inline void sew_settle(dd_tri *t, uint32_t m)
     t->hint = m;
 }
 
-/* The star's cells recycled (point of no return). */
-static void sew_recycle_star(dd_del *d)
+/* The star's cells from the k0-th on recycled (point of no return), in
+ * reverse, so that the free list gives them back in the star's order;
+ * those before, the fill has taken over.                                */
+static void sew_recycle_star(dd_del *d, size_t k0)
 {
     dd_tri *t = d->t;
-    for (size_t k = d->star.n; k-- > 0;) dd_kill_cell(t, d->star.a[k]);
+    for (size_t k = d->star.n; k-- > k0;) dd_kill_cell(t, d->star.a[k]);
     t->nfinite -= (uint32_t)d->star.n - d->star_inf;
 }
 
@@ -384,10 +386,13 @@ static dd_status sew(dd_del *d)
     dd_tri *t = d->t, *x = d->qdt;
     size_t nf = d->fill.n;
     if (d->fill_in_mesh) {
-        /* The fill is in the mesh already (wrap.c), glued inside and
-         * matched to the link: glue it to the outside.  Against making it
-         * in d->qdt and copying it here: see w_run.                      */
-        sew_recycle_star(d);
+        /* The fill is in the mesh already (wrap.c), over the star's first
+         * cells and past them in new ones, glued inside and matched to
+         * the link: glue it to the outside.  Against making it in d->qdt
+         * and copying it here: see w_run.                                */
+        size_t taken = nf < d->star.n ? nf : d->star.n;
+        sew_recycle_star(d, taken);
+        t->tets_created += taken;
         for (size_t k = 0; k < nf; k++) {
             uint32_t m = d->fill.a[k];
             for (uint32_t j = 0; j < 4; j++) {
@@ -411,7 +416,7 @@ static dd_status sew(dd_del *d)
      * (in reverse, so the free list gives them back in the star's order),
      * so that the fill takes their places: where the deletion is, in
      * memory, whatever the free list held before.                        */
-    sew_recycle_star(d);
+    sew_recycle_star(d, 0);
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = dd_new_cell(t);
         memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
