@@ -1327,9 +1327,10 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * is not kept is dropped (w_drop_fill): the star written back, the mesh
  * as it was.  Against building it in d->qdt and copying it over the
  * star's cells at the sew (callgrind, 300 deletions): uniform degree
- * 24-31, 18.80M -> 18.17M instructions, bunny degree 32-47 11.63M ->
- * 11.23M; deletion / re-insertion, alternated runs, uniform 24-31: 1.76
- * -> 1.72.  Made in free cells instead (not over the star), the fill
+ * 24-31, 18.80M -> 17.91M instructions, bunny degree 32-47 11.63M ->
+ * 11.08M (made in free cells: 18.17M, 11.23M; deletion / re-insertion,
+ * alternated runs, uniform 24-31: 1.76 -> 1.72).  Made in free cells
+ * instead (not over the star), the fill
  * took whatever the free list held, the star's cells went on it, and
  * the cells of a region scattered over memory: deleting 10% of 10^6
  * uniform points in random order, one after another, cost 15.1 against
