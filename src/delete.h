@@ -12,12 +12,13 @@
  *   3. sew: match each fill facet that has no fill neighbour to its link
  *      triangle (through a hash of the link triangles), copy the fill
  *      cells into the mesh glued to the outside, recycle the star.  Gift
- *      wrapping (d->fill_in_mesh) makes its fill in free cells of the
- *      mesh and matches it itself: the sew then only glues it to the
- *      outside.  Steps 1-2 never change the triangulation (wrapping's
- *      cells are reached from no live cell, and given back exactly as
- *      they were when its fill is not kept) and step 3 starts only once
- *      every boundary facet is matched: all or nothing.
+ *      wrapping (d->fill_in_mesh) makes its fill in the mesh, over the
+ *      star's cells (then in new ones), and matches it itself: the sew
+ *      then only glues it to the outside.  Steps 1-2 leave the
+ *      triangulation as it was (wrapping keeps the star's cells aside
+ *      and writes them back, and gives back the new cells, when its fill
+ *      is not kept) and step 3 starts only once every boundary facet is
+ *      matched: all or nothing.
  *
  * The conflict DT DT(x)_q(P_i) lives in d->qdt closed by the dummy vertex
  * DD_QD: each boundary triangle abc of DT(x) carries a dummy cell
@@ -73,9 +74,10 @@ typedef struct dd_del {
     dd_vec sew_out;       /* per fill facet 4k+j, its outside facet (or
                              DD_NONE: inside the fill); a strategy that
                              sets fill_in_mesh has filled it              */
-    int fill_in_mesh;     /* the strategy made the fill in free cells of
-                             the mesh, glued to each other, and matched
-                             it to the link (gift wrapping, wrap.c)      */
+    int fill_in_mesh;     /* the strategy made the fill in the mesh, over
+                             the star's cells and in new ones, glued to
+                             each other, and matched it to the link
+                             (gift wrapping, wrap.c)                     */
     dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
     uint64_t rng;
 

@@ -35,11 +35,12 @@
 
 #include "delete.h"
 
-/* Makes the fill of the cavity of d->q in free cells of the mesh
- * (d->fill), glued to each other, and the sew's matching (d->sew_out;
- * d->fill_in_mesh); d->order holds d->nbr and is sorted by vertex id.
- * It declines (*declined = 1, DD_OK; the cells it made given back, the
- * mesh's cells as they were, d->fill empty) for a cavity of 40 neighbours or more, not all on one
+/* Makes the fill of the cavity of d->q in the mesh (d->fill), over the
+ * star's cells and past them in new ones, glued to each other, and the
+ * sew's matching (d->sew_out; d->fill_in_mesh); d->order holds d->nbr
+ * and is sorted by vertex id.  It declines (*declined = 1, DD_OK; the
+ * star written back and the new cells given back, the mesh as it was,
+ * d->fill empty) for a cavity of 40 neighbours or more, not all on one
  * sphere, whose guess is refuted or whose exact tests pass the budget
  * (wrap.c, W_EXACT_FROM), and for the flat hull cases that its checks do
  * not settle (every neighbour in one plane; wrap.c, W_BAIL).  From
@@ -50,7 +51,7 @@
  * faces are otherwise triangulated by the perturbation's coplanar rules
  * (wrap_scan_inf, w_flat_hull).
  * DD_ERR_INTERNAL (with a message) if the fill does not close, which only
- * a broken triangulation can cause (the cells given back as well).      */
+ * a broken triangulation can cause (the mesh as it was as well).       */
 dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined);
 
 void dd_wrap_free(struct dd_wrap *w);
