@@ -4,7 +4,8 @@
  * Owns: struct dd_wrap (kept in d->wrap across deletions: no allocation
  * once warm), the local numbering of the neighbours (the infinite vertex
  * is number n), the table of open facets, the scans that find the fill
- * cell on a facet, the cells it writes into d->qdt and the matching it
+ * cell on a facet, the cells it writes into the mesh (over the star's,
+ * kept aside in case the fill is not kept: w_run) and the matching it
  * hands to the sew (d->sew_out).
  *
  * An open facet is a triangle (a, b, c) of local numbers whose fill cell
