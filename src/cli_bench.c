@@ -161,22 +161,24 @@ static int bench_sample(dd_tri *t, uint32_t np, uint32_t k, uint32_t bmin, uint6
                         uint32_t **out, uint32_t *nout)
 {
     enum { NB = 64 };                                /* buckets of 64-bit degrees */
-    uint32_t have[NB] = {0}, *deg = NULL, *pool = NULL;
+    uint32_t have[NB] = {0}, *pool = NULL;
+    uint8_t *bk = NULL;                              /* bucket of each candidate, else NB */
     uint32_t *v = malloc((size_t)np * sizeof *v);
     if (!v) return -1;
     uint32_t n = 0;
     for (; n < k; n++) v[n] = draw_vertex(t, x, np, used);
     if (bmin > 0) {
-        deg = malloc((size_t)np * sizeof *deg);
+        bk = malloc((size_t)np * sizeof *bk);
         pool = malloc((size_t)np * sizeof *pool);
-        if (!deg || !pool) { free(v); free(deg); free(pool); return -1; }
+        if (!bk || !pool) { free(v); free(bk); free(pool); return -1; }
         for (uint32_t i = 0; i < n; i++) have[dd_degree_bucket(dd_degree(t, v[i]))]++;
-        for (uint32_t i = 0; i < np; i++) deg[i] = dd_is_vertex(t, i) && !used[i] ? dd_degree(t, i) : 0;
+        for (uint32_t i = 0; i < np; i++)                /* each degree once */
+            bk[i] = dd_is_vertex(t, i) && !used[i] ? (uint8_t)dd_degree_bucket(dd_degree(t, i)) : NB;
         for (int b = 0; b < NB; b++) {
             if (have[b] >= bmin) continue;
             uint32_t m = 0;
             for (uint32_t i = 0; i < np; i++)
-                if (deg[i] && dd_degree_bucket(deg[i]) == b) pool[m++] = i;
+                if (bk[i] == b) pool[m++] = i;
             for (; have[b] < bmin && m > 0; have[b]++) {     /* a draw without replacement */
                 uint32_t j = rand_below(x, m);
                 v[n++] = pool[j];
@@ -185,7 +187,7 @@ static int bench_sample(dd_tri *t, uint32_t np, uint32_t k, uint32_t bmin, uint6
             }
         }
     }
-    free(deg);
+    free(bk);
     free(pool);
     *out = v;
     *nout = n;

@@ -97,7 +97,8 @@ struct dd_wrap {
     int fs_sets;                  /* keys are sets of local numbers       */
     /* facet records */
     uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
-    uint32_t *own;                /* qdt facet 4c+j on the other side, or
+    uint32_t *own;                /* fill facet 4k+j (facet j of the k-th
+                                     fill cell) on the other side, or
                                      W_NONE for a link triangle           */
     uint32_t *out;                /* a link triangle's mesh facet outside
                                      the cavity                           */
@@ -266,7 +267,7 @@ static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
     return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
 }
 
-/* Opens triangle (a, b, c), whose other side is qdt facet `own` (W_NONE:
+/* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
  * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
 static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
 {
@@ -1194,23 +1195,6 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
     return s;
 }
 
-/* Opens the link triangles, oriented towards q, as the first records (all
- * in the table) and returns the record the wrap starts from, *start: the
- * triangle of least key, rotated to begin with its least local number;
- * for a hull vertex, the least among the triangles through the infinite
- * vertex, so that the wrap's first step is wrap_scan_inf: where it
- * cannot settle the hull (W_BAIL: every neighbour in one plane, or one
- * of its checks failing) the wrap declines before any other work.
- * With the neighbours sorted by id, the whole wrap, and so the order and
- * rotation of the fill cells, does not depend on how the star was stored:
- * the same deletion repeated is the same computation, as with the other
- * strategies.
- * With hub not NULL it also makes the known neighbours at the start (see
- * w_guess_narrow): the link's edges between finite vertices.  The link
- * triangles make a closed oriented surface, where each edge is met once
- * in each direction: each triangle gives each corner the next one, and
- * every neighbour of a vertex comes once.  *hub: whether the link has a
- * hub.                                                                   */
 /* Keeps the star's cells as they are (w->keep), before w_run writes the
  * fill over them.                                                      */
 static dd_status w_keep_star(dd_del *d, struct dd_wrap *w)
@@ -1237,12 +1221,28 @@ static void w_drop_fill(dd_del *d, struct dd_wrap *w)
     d->fill.n = 0;
 }
 
+/* Opens the link triangles, oriented towards q, as the first records (all
+ * in the table) and returns the record the wrap starts from, *start: the
+ * triangle of least key, rotated to begin with its least local number;
+ * for a hull vertex, the least among the triangles through the infinite
+ * vertex, so that the wrap's first step is wrap_scan_inf: where it
+ * cannot settle the hull (W_BAIL: every neighbour in one plane, or one
+ * of its checks failing) the wrap declines before any other work.
+ * With the neighbours sorted by id, the whole wrap, and so the order and
+ * rotation of the fill cells, does not depend on how the star was stored:
+ * the same deletion repeated is the same computation, as with the other
+ * strategies.
+ * With hub not NULL it also makes the known neighbours at the start (see
+ * w_guess_narrow): the link's edges between finite vertices.  The link
+ * triangles make a closed oriented surface, where each edge is met once
+ * in each direction: each triangle gives each corner the next one, and
+ * every neighbour of a vertex comes once.  *hub: whether the link has a
+ * hub.                                                                   */
 static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
 {
     dd_tri *t = d->t;
     const uint32_t n = w->n, inf = n;
-    w_drop_fill(d, w);
-    dd_qdt_reset(d, 0);
+    w_drop_fill(d, w);   /* d->qdt is not reset: the wrap uses only its predicates */
     w->nrec = 0;
     dd_status s = w_ftab_reset(w, 4 * (size_t)n);
     if (s != DD_OK) return s;
@@ -1331,17 +1331,18 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
  * 24-31, 18.80M -> 17.91M instructions, bunny degree 32-47 11.63M ->
  * 11.08M (made in free cells: 18.17M, 11.23M; deletion / re-insertion,
  * alternated runs, uniform 24-31: 1.76 -> 1.72).  Made in free cells
- * instead (not over the star), the fill
- * took whatever the free list held, the star's cells went on it, and
- * the cells of a region scattered over memory: deleting 10% of 10^6
- * uniform points in random order, one after another, cost 15.1 against
- * 9.9 us a deletion.                                                     *outcome: W_DONE, W_DECLINED (see dd_wrap_fill), or
+ * instead (not over the star), the fill took whatever the free list
+ * held, the star's cells went on it, and the cells of a region scattered
+ * over memory: deleting 10% of 10^6 uniform points in random order, one
+ * after another, cost 15.1 against 9.9 us a deletion.
+ * *outcome: W_DONE, W_DECLINED (see dd_wrap_fill), or
  * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
  * (a facet without a point beyond, a triangle met from the wrong side or
  * by a third cell, a fill too large).                                    */
 static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
-    dd_tri *x = d->qdt, *t = d->t;               /* x: the predicates' counters */
+    dd_tri *t = d->t;
+    dd_pred *pr = &d->qdt->pred;                 /* the predicates' counters */
     const uint32_t n = w->n, inf = n, *gid = d->order.a;
     size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
     dd_status s = w_reserve_fill(d, w, 0, room);
@@ -1357,7 +1358,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
         if (w->closed[r]) continue;
         w->closed[r] = 1;
         uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
-        if (n >= W_EXACT_FROM && w_spent(w, &x->pred) > 2 * (uint64_t)n) {
+        if (n >= W_EXACT_FROM && w_spent(w, pr) > 2 * (uint64_t)n) {
             *outcome = W_DECLINED;              /* see W_EXACT_FROM */
             return DD_OK;
         }
@@ -1366,23 +1367,23 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
                 uint32_t a0 = a;
                 a = b; b = e; e = a0;
             }
-            p = wrap_scan_inf(w, &x->pred, a, b);
+            p = wrap_scan_inf(w, pr, a, b);
         } else if (guess) {
             int unsure;
             w_pencil(w, a, b, e, mb, N, T);
-            p = w->narrow ? w_guess_narrow(w, &x->pred, a, b, e, mb, N, T) : W_NONE;
+            p = w->narrow ? w_guess_narrow(w, pr, a, b, e, mb, N, T) : W_NONE;
             if (p == W_NONE) {
                 p = wrap_guess(w, a, N, T, &unsure);
                 /* points of unsure orientation: decided exactly, each
                  * beyond compared with the guess's choice               */
-                if (unsure && p != W_TIE) p = wrap_scan_exact(w, &x->pred, a, b, e, mb, p, 1, NULL, n);
+                if (unsure && p != W_TIE) p = wrap_scan_exact(w, pr, a, b, e, mb, p, 1, NULL, n);
                 if (p == W_NONE && d->on_hull && (unsure || w_all_behind(w, a, N))) p = inf;
             }
         } else {
-            p = wrap_scan(w, &x->pred, a, b, e);
+            p = wrap_scan(w, pr, a, b, e);
             if (p == W_SHIFT) {
                 w_shift(w);
-                p = wrap_scan(w, &x->pred, a, b, e);
+                p = wrap_scan(w, pr, a, b, e);
             }
             if (p == W_NONE && d->on_hull) p = inf;
         }
@@ -1417,7 +1418,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
          * finite fill cell (see dd_wrap_fill); the scans' cells are so.  */
 #define W_CHECK_FACET(own)                                                                 \
         if (guess && finite && (own) != W_NONE && w->lcell[own] != inf &&                \
-            w_conflicts(w, &x->pred, lv, K, w->lcell[own]))                               \
+            w_conflicts(w, pr, lv, K, w->lcell[own]))                               \
             W_WRONG("")
         W_CHECK_FACET(w->own[r]);
         if (w->own[r] != W_NONE) {
@@ -1519,8 +1520,8 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     if (s != DD_OK) return s;
     d->fill.n = 0;                       /* no fill cell made yet (w_drop_fill) */
     w->ncell0 = t->ncell;
-    if ((s = w_keep_star(d, w)) != DD_OK) return s;
     DD_PHASE_BEGIN(d);
+    if ((s = w_keep_star(d, w)) != DD_OK) return s;
     /* The sanitizer build of the tests takes the plain C code (scans,
      * sort) for vertices of odd index, so that both are tested with the
      * same inputs.                                                       */
