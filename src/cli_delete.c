@@ -197,7 +197,10 @@ int cmd_delete(int argc, char **argv)
                 if (st.wrap > 0)
                     fprintf(stderr, "\n  gift wrap: %s lifts, %u tests left to the exact predicates, last guess"
                                     " over %s%s, %u narrow guesses refuted",
-                            st.wrap_integer ? "integer (exact)" : "rounded", st.wrap_expansions,
+                            st.wrap_integer == 1   ? "integer (exact)"
+                            : st.wrap_integer == 2 ? "integer cofactors (exact in 128 bits)"
+                                                   : "rounded",
+                            st.wrap_expansions,
                             guess[st.wrap_guess], st.wrap_shift_guess ? " (again, on shifted lifts)" : "",
                             st.wrap_narrow_refuted);
                 fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",

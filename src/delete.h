@@ -90,7 +90,8 @@ typedef struct dd_del {
     int wrap_how;                 /* DD_WRAP_*, set by dd_wrap_fill        */
     int wrap_guess;               /* DD_GUESS_*, set by dd_wrap_fill       */
     uint32_t wrap_narrow_refuted; /* dd_wrap_fill: narrow guesses refuted  */
-    int wrap_integer;             /* dd_wrap_fill: integer lifts            */
+    int wrap_integer;             /* dd_wrap_fill: integer lifts (1), or
+                                     cofactors (2), else 0 (dtdel.h)      */
     int wrap_shift_guess;         /* dd_wrap_fill: guessed again, shifted   */
     uint32_t wrap_expansions;     /* dd_wrap_fill: tests left to the exact
                                      predicates                            */

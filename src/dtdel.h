@@ -152,8 +152,11 @@ typedef struct dd_delete_stats {
     int wrap;                 /* gift wrapping's course: DD_WRAP_*        */
     int wrap_guess;           /* its last guess's candidates: DD_GUESS_*  */
     uint32_t wrap_narrow_refuted; /* narrow guesses refuted before it     */
-    int wrap_integer;         /* the wrap's lifts were integers: each of
-                                 its tests exact in doubles (wrap.c)      */
+    int wrap_integer;         /* 1: the wrap's lifts were integers, each
+                                 of its tests exact in doubles; 2: its
+                                 orientations and cofactors were, and the
+                                 in-sphere tests the filter left exact in
+                                 128-bit integers; 0: neither (wrap.c)    */
     int wrap_shift_guess;     /* its guess over every neighbour refuted,
                                  then made again on shifted lifts (nearly
                                  cospherical neighbours; wrap.c)          */

@@ -490,8 +490,9 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
  *    re-insertion; it must now guess again on the shifted lifts, prove
  *    that guess on some vertices, and decline none.
  *  - Integer lifts (wrap-integer/, see wrap_integer): `lifts` >= 0 asks
- *    every wrap to have taken integer lifts (1) or rounded ones (0), and
- *    none with integer lifts to leave a test to the exact predicates.    */
+ *    every wrap to have taken integer lifts (1) or rounded ones (0), or
+ *    (2) none rounded and some with integer cofactors only, and none with
+ *    integer lifts or cofactors to leave a test to the exact predicates. */
 static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_t n, const char *variant,
                         int parity, uint32_t hull_below, uint32_t deg_from, uint32_t k, int want, int lifts)
 {
@@ -502,7 +503,7 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
         return;
     }
     dd_cgal *g = dd_cgal_build(pts, n);
-    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0, shifted = 0;
+    long course[5] = {0}, bad = 0, done = 0, wrong_lifts = 0, expansions = 0, shifted = 0, cofactors = 0;
     for (uint32_t v = 0; v < n && done < k; v++) {
         if ((parity >= 0 && (int)(v % 2) != parity) || !dd_is_vertex(t, v)) continue;
         if (hull_below && (!dd_on_hull(t, v) || dd_degree(t, v) >= hull_below)) continue;
@@ -513,16 +514,19 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
         done++;
         shifted += ds_.wrap == DD_WRAP_PROVED && ds_.wrap_shift_guess;
         if (lifts < 0 || ds_.wrap == DD_WRAP_NONE) continue;   /* forced fill: no wrap */
-        wrong_lifts += ds_.wrap_integer != lifts;
+        wrong_lifts += lifts == 2 ? ds_.wrap_integer == 0 : ds_.wrap_integer != lifts;
+        cofactors += ds_.wrap_integer == 2;
         if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1 |
                (course[DD_WRAP_DECLINED] == 0) << 2 | (shifted > 0) << 3;
+    if (lifts == 2 && cofactors == 0) wrong_lifts++;
     tl_check(st, bad == 0 && done > 0 && (seen & want) == want && wrong_lifts == 0 && expansions == 0, tn,
              "%ld of %ld wrong (%s); proved %ld (%ld on shifted lifts), refuted %ld, scanned %ld, declined %ld; "
-             "%ld wraps with %s lifts, %ld tests left to the exact predicates with integer lifts", bad, done, why,
-             course[DD_WRAP_PROVED], shifted, course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED],
-             course[DD_WRAP_DECLINED], wrong_lifts, lifts ? "rounded" : "integer", expansions);
+             "%ld wraps without %s lifts, %ld tests left to the exact predicates with integer lifts", bad, done,
+             why, course[DD_WRAP_PROVED], shifted, course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED],
+             course[DD_WRAP_DECLINED], wrong_lifts,
+             lifts == 1 ? "integer" : lifts == 2 ? "integer or integer-cofactor" : "rounded", expansions);
     printf("# %s: proved %ld (%ld on shifted lifts), refuted %ld, scanned %ld, declined %ld\n", tn,
            course[DD_WRAP_PROVED], shifted, course[DD_WRAP_REFUTED], course[DD_WRAP_SCANNED],
            course[DD_WRAP_DECLINED]);
@@ -584,12 +588,17 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
 }
 
 /* Integer lifts (wrap.c, w_lift): when q and its neighbours have integer
- * coordinates and lie within W_INT_M = 256 of each other per coordinate,
+ * coordinates and lie within W_INT_M = 400 of each other per coordinate,
  * every test of the wrap is exact in doubles: none may be left to the
  * exact predicates, and a zero is decided by the perturbation alone.  A
  * k x k x k grid scaled by s has each vertex's neighbours exactly s away
- * in some coordinate and no further, so s = 256 is wrapped with integer
- * lifts and s = 257 with rounded ones; an offset of 2^50 keeps the lifts
+ * in some coordinate and no further, so s = 400 is wrapped with integer
+ * lifts, s = 401 and 2048 with integer cofactors (W_INT_K: orientations
+ * exact in doubles, the in-sphere tests the filter leaves summed exactly
+ * in 128 bits, none left to the exact predicates either) and s = 2049
+ * with rounded ones (the cosphere scaled by 20, radius 540: integer
+ * lifts where a vertex's neighbours are within 400, integer cofactors
+ * elsewhere); an offset of 2^50 keeps the lifts
  * integers.  Integer points of a sphere halved and moved by 1/4 stay
  * exactly cospherical with no integer coordinate: their wrap asks the
  * perturbation with rounded lifts (w_symbolic's filtered orientations).
@@ -935,9 +944,10 @@ int main(int argc, char **argv)
     }
     {
         const struct { const char *ds; uint32_t n; double scale, offset; int want; } ints[] = {
-            {"grid", 216, 1, 0, 1}, {"grid", 216, 256, 0, 1}, {"grid", 216, 257, 0, 0},
+            {"grid", 216, 1, 0, 1}, {"grid", 216, 400, 0, 1}, {"grid", 216, 401, 0, 2},
+            {"grid", 216, 2048, 0, 2}, {"grid", 216, 2049, 0, 0},
             {"grid", 216, 3, 1125899906842624.0 /* 2^50 */, 1}, {"cosphere", 300, 1, 0, 1},
-            {"layers", 128, 1, 0, 1}, {"cosphere", 300, 0.5, 0.25, 0}};
+            {"cosphere", 300, 20, 0, 2}, {"layers", 128, 1, 0, 1}, {"cosphere", 300, 0.5, 0.25, 0}};
         for (size_t i = 0; i < sizeof ints / sizeof *ints; i++) {
             uint32_t np;
             double *p = gen(ints[i].ds, ints[i].n, &np);
