@@ -904,18 +904,24 @@ __attribute__((target("avx2"))) static uint32_t w_next_avx2(double *const *L, ui
  * passes were 16% of a deletion, callgrind, 38 instructions a point),
  * and the guess's exact pass over the unsure points (moment n = 1024,
  * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
-static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
+static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from,
+                                 uint32_t end, int unsure)
 {
 #ifdef W_AVX2
-    if (w->avx2) return w_next_avx2(w->lift, w->n, a, N, w->oerr, from, unsure);
+    if (w->avx2) return w_next_avx2(w->lift, end, a, N, w->oerr, from, unsure);   /* lanes past end: end */
 #endif
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    for (uint32_t k = from; k < w->n; k++) {
+    for (uint32_t k = from; k < end; k++) {
         double P[4], o = w_row_o(L, k, A, N, P);
         if (unsure ? !(o > w->oerr) && !(o < -w->oerr) : !(o < -w->oerr)) return k;
     }
-    return w->n;
+    return end;
+}
+
+static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
+{
+    return w_next_to(w, a, N, from, w->n, unsure);
 }
 
 /* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
@@ -1049,6 +1055,15 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
     return unsure == 3;
 }
 
+/* Whether the points before `end`, but x, y, z, are surely behind the
+ * plane of normal N through y (w_all_behind's test).                    */
+static int w_behind_to(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end)
+{
+    for (uint32_t k = 0; (k = w_next_to(w, y, N, k, end, 0)) < end; k++)
+        if (k != x && k != y && k != z) return 0;
+    return 1;
+}
+
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
  * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
  * facet (b, a, p) has no point beyond it and, among the points of its
@@ -1082,10 +1097,26 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     uint32_t i = 0;
     for (; i < w->n && best == W_NONE; i++)
         if (i != a && i != b && dd_orient_coplanar(pr, pt[a], pt[b], pt[i]) != 0) w_normal(w, b, a, best = i, N);
-    for (; (i = w_next(w, b, N, i, 0)) < w->n; i++)     /* the others are behind: not further round */
-        if (i != a && i != b && i != best && w_orient(w, pr, b, a, best, N, i) > 0) w_normal(w, b, a, best = i, N);
+    /* from `last` on, each point was met with the plane as it is now:
+     * surely behind it (w_next passed it), or not (`met`)                */
+    uint32_t last = i;
+    int met = 0;
+    for (; (i = w_next(w, b, N, i, 0)) < w->n; i++) {   /* the others are behind: not further round */
+        if (i == a || i == b || i == best) continue;
+        if (w_orient(w, pr, b, a, best, N, i) > 0) {
+            w_normal(w, b, a, best = i, N);
+            last = i + 1;
+            met = 0;
+        } else {
+            met = 1;
+        }
+    }
     if (best == W_NONE) return W_NONE;
-    if (w_all_behind(w, b, N)) return best;     /* the check, on the points not surely behind */
+    /* The check (w_all_behind: every point but a, b, best surely behind),
+     * on the points before `last` only when every one after it was
+     * passed surely behind by the same test: on the helix (every point on
+     * the hull) the check was half of these passes.                    */
+    if (met ? w_all_behind(w, b, N) : w_behind_to(w, a, b, best, N, last)) return best;
     int flat = 0;
     double *mark = w->o;
     for (uint32_t k = 0, again = 1; k < w->n; k++) {
