@@ -368,7 +368,7 @@ static void w_lift(struct dd_wrap *w, const double *q)
         for (int i = 0; i < 4; i++) L[i][k] = NAN;
     w->exact = integral && m <= W_INT_M;
     w->oexact = integral && m <= W_INT_O;
-    w->kexact = integral && m <= W_INT_K;
+    w->kexact = integral && (m <= W_INT_M || m <= W_INT_K);   /* integer lifts: too */
     w->ierr = w->exact ? 0 : dd_lift_err(m);
     int ok = w->ierr != 1.0 / 0.0;
     w->oerr = w->oexact ? 0 : ok ? 1e-13 * m * m * m : 1.0 / 0.0;
