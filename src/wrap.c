@@ -884,9 +884,9 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
  * points, nearly in a facet's plane, are the apex about never on generic
  * points, so w_run neither decides them exactly nor takes the pass as
  * proof that a hull facet has every point behind it (w_all_behind then
- * tests it).  Where they matter (nearly degenerate cavities) a lean
- * guess is refuted, and the full one is made (dd_wrap_fill: on shifted
- * lifts first where those apply).  Callgrind, a deletion: uniform degree
+ * tests it: wrap_guess's *unsure is -1).  Where they matter (nearly
+ * degenerate cavities) a lean guess is refuted, and the full one is made
+ * (dd_wrap_fill: on shifted lifts first where those apply).  Callgrind, a deletion: uniform degree
  * 48-63 -1.9%, bunny 48-95 -2.6%, sphere unchanged; the perturbed grid of
  * the tests: 4 of 300 guesses proved only on the shifted lifts after a
  * refuted lean one.  Dropping the ties' test too saved 1.7% more there
@@ -895,7 +895,7 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
 __attribute__((target("avx2"))) static uint32_t w_guess_lean_avx2(double *const *L, uint32_t n, uint32_t a,
                                                                   const double N[4], const double T[4], double oerr)
 {
-    int unsure;
+    int unsure;                                      /* not counted */
     return w_guess_body(L, n, a, N, T, oerr, &unsure, 1);
 }
 
@@ -983,9 +983,17 @@ static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const 
     return tie ? W_TIE : best;
 }
 
+/* The wide guess; *unsure: 1 when points other than a, b, c had unsure
+ * orientations, 0 when none had, -1 not counted (the lean guess, on
+ * points not of exact orientation from W_LEAN_FROM neighbours on and
+ * not in the narrow guesses' course, see w_guess_lean_avx2).           */
 static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
 {
 #ifdef W_AVX2
+    if (w->lean && !w->narrow) {
+        *unsure = -1;
+        return w_guess_lean_avx2(w->lift, w->n, a, N, T, w->oerr);
+    }
     if (w->avx2) return w_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
 #endif
     uint32_t uns;
@@ -1078,19 +1086,11 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
     return best;
 }
 
-/* Whether every point but a, b, c is surely behind facet (a, b, c) of
- * normal N (pencil of w_pencil; o evaluated as in wrap_scan, whose test
- * this is): then abc is a facet of the hull of the neighbours.          */
-static int w_all_behind(const struct dd_wrap *w, uint32_t a, const double N[4])
-{
-    uint32_t unsure = 0;                             /* a, b, c always are */
-    for (uint32_t k = 0; (k = w_next(w, a, N, k, 0)) < w->n && unsure <= 3; k++) unsure++;
-    return unsure == 3;
-}
-
 /* Whether the points before `end`, but x, y, z, are surely behind the
- * plane of normal N through y (w_all_behind's test).                    */
-static int w_behind_to(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end)
+ * plane of normal N through y (rows from y; o evaluated as in wrap_scan,
+ * whose test this is).  With end = n and the corners of facet (x, y, z):
+ * then the facet is a facet of the hull of the neighbours.              */
+static int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end)
 {
     for (uint32_t k = 0; (k = w_next_to(w, y, N, k, end, 0)) < end; k++)
         if (k != x && k != y && k != z) return 0;
@@ -1149,7 +1149,7 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
      * on the points before `last` only when every one after it was
      * passed surely behind by the same test: on the helix (every point on
      * the hull) the check was half of these passes.                    */
-    if (met ? w_all_behind(w, b, N) : w_behind_to(w, a, b, best, N, last)) return best;
+    if (w_all_behind(w, a, b, best, N, met ? w->n : last)) return best;
     int flat = 0;
     double *mark = w->o;
     for (uint32_t k = 0, again = 1; k < w->n; k++) {
@@ -1464,7 +1464,6 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
     *outcome = W_DONE;
 #define W_WRONG(why) do { if (guess) { *outcome = W_WRONG_GUESS; return DD_OK; } return w_broken(d, why); } while (0)
     uint32_t ns = 0, nlink = 0;
-    const int lean = guess && w->lean && !w->narrow;
     double mb[6] = {0}, N[4], T[4], K[4] = {0};     /* guess: the new cell's pencil */
     w->stack[ns++] = start;
     size_t limit = 8 * (size_t)n * n + 64;          /* |fill| is O(n^2) */
@@ -1487,25 +1486,20 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             int unsure;
             w_pencil(w, a, b, e, mb, N, T);
             p = w->narrow ? w_guess_narrow(w, pr, a, b, e, mb, N, T) : W_NONE;
-#ifdef W_AVX2
-            if (p == W_NONE && lean) {
-                p = w_guess_lean_avx2(w->lift, n, a, N, T, w->oerr);
-                if (p == W_NONE && d->on_hull && w_all_behind(w, a, N)) p = inf;
-            }
-#endif
-            if (p == W_NONE && !lean) {
+            if (p == W_NONE) {
                 p = wrap_guess(w, a, N, T, &unsure);
                 /* points of unsure orientation: decided exactly, each
                  * beyond compared with the guess's choice               */
-                if (unsure && p != W_TIE) p = wrap_scan_exact(w, pr, a, b, e, mb, p, 1, NULL, n);
+                if (unsure > 0 && p != W_TIE) p = wrap_scan_exact(w, pr, a, b, e, mb, p, 1, NULL, n);
                 /* None beyond: the exact scan says so of the unsure
                  * points; without any, the guess's pass has shown every
                  * point but a, b, c surely behind (o < -oerr, as
                  * w_all_behind has it: the same o, bit for bit), which
                  * makes abc a hull facet.  Testing that again took 8% of
                  * a deletion on the helix (n = 1000, degree 32-47: 79
-                 * passes a deletion) and 2.4% at uniform degree 48-63.  */
-                if (p == W_NONE && d->on_hull) p = inf;
+                 * passes a deletion) and 2.4% at uniform degree 48-63;
+                 * the lean guess, not counting, has it tested.          */
+                if (p == W_NONE && d->on_hull && (unsure >= 0 || w_all_behind(w, b, a, e, N, n))) p = inf;
             }
         } else {
             p = wrap_scan(w, pr, a, b, e);
@@ -1734,21 +1728,18 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
             s = w_run(d, w, 1, start, &outcome);
             if (s != DD_OK || outcome != W_WRONG_GUESS) break;
             refuted += d->fill.n;
-            if (w->narrow == DD_GUESS_WIDE && w->lean && (w->shifted || n < DD_SHIFT_FROM)) {
-                w->lean = 0;                         /* the full guess next */
-            } else if (w->narrow == DD_GUESS_WIDE) {
+            if (w->narrow == DD_GUESS_WIDE) {
                 /* Nearly cospherical neighbours (points sampled on a
                  * sphere): their quotients t/o differ by less than the
                  * rounding of the plain lifts, and a guess among them is
                  * refuted (sphere, degree [48,96): every deletion, then
                  * declined to GRR, 4.8x a re-insertion).  Guessed once
                  * more on the shifted lifts, where t measures the
-                 * distance from the sphere.                            */
-                if (w->shifted || n < DD_SHIFT_FROM) break;
-                const int tighter = w_shift(w);
-                if (!tighter && !w->lean) break;
-                d->wrap_shift_guess = tighter;
-                w->lean = 0;                         /* the full guess there */
+                 * distance from the sphere.  A lean guess refuted is
+                 * made again in full: there, or on the same lifts.      */
+                if (!w->shifted && n >= DD_SHIFT_FROM && w_shift(w)) d->wrap_shift_guess = 1;
+                else if (!w->lean) break;
+                w->lean = 0;
             } else {
                 d->wrap_narrow_refuted++;
                 w->narrow = w->narrow == DD_GUESS_SHORT ? DD_GUESS_TWO_STEP : DD_GUESS_WIDE;
