@@ -480,6 +480,8 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->wrap_narrow_refuted = 0;
     d->wrap_integer = 0;
     d->wrap_shift_guess = 0;
+    d->wrap_single = d->wrap_single_back = 0;
+    d->wrap_single_refuted = 0;
     d->wrap_expansions = 0;
     memset(d->link_deletions, 0, sizeof d->link_deletions);
     d->qdt_created = 0;
@@ -722,6 +724,9 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
     st->wrap_narrow_refuted = d->wrap_narrow_refuted;
     st->wrap_integer = d->wrap_integer;
     st->wrap_shift_guess = d->wrap_shift_guess;
+    st->wrap_single = d->wrap_single;
+    st->wrap_single_back = d->wrap_single_back;
+    st->wrap_single_refuted = d->wrap_single_refuted;
     st->wrap_expansions = d->wrap_expansions;
     memcpy(st->link_deletions, d->link_deletions, sizeof st->link_deletions);
     st->link_us = 1e6 * d->phase[DD_PH_LINK];

@@ -93,6 +93,11 @@ typedef struct dd_del {
     int wrap_integer;             /* dd_wrap_fill: integer lifts (1), or
                                      cofactors (2), else 0 (dtdel.h)      */
     int wrap_shift_guess;         /* dd_wrap_fill: guessed again, shifted   */
+    uint32_t wrap_single, wrap_single_back;   /* dd_wrap_fill: guesses
+                                     answered in single precision, and made
+                                     in doubles instead                    */
+    int wrap_single_refuted;      /* dd_wrap_fill: a guess with some
+                                     single-precision answers refuted      */
     uint32_t wrap_expansions;     /* dd_wrap_fill: tests left to the exact
                                      predicates                            */
     uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* by deleted degree     */

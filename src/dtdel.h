@@ -160,6 +160,11 @@ typedef struct dd_delete_stats {
     int wrap_shift_guess;     /* its guess over every neighbour refuted,
                                  then made again on shifted lifts (nearly
                                  cospherical neighbours; wrap.c)          */
+    uint32_t wrap_single;     /* guesses answered in single precision
+                                 (wrap.c, w_guess_f32_avx2)               */
+    uint32_t wrap_single_back; /* ... and made in doubles instead          */
+    int wrap_single_refuted;  /* a guess with single-precision answers was
+                                 refuted, then made again in doubles      */
     uint32_t wrap_expansions; /* the wrap's tests left to the exact
                                  predicates' expansions                   */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
