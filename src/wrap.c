@@ -108,6 +108,7 @@ struct dd_wrap {
     double f32n[4], f32t[4];      /* the scales of N and T to those units */
     uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
                                      and abstained (made in doubles)      */
+    int f32_ready;                /* flift made for this deletion         */
 #ifdef DD_TEST_BUILD
     int f32_spoil;                /* answer a wrong point (tests)         */
 #endif
@@ -551,11 +552,13 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
 static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
 {
     double *const *L = w->lift;
-    const double B[4] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a], 0};
-    const double C[4] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a], 0};
-    double m[6];
-    w_minors(m, B, C);
-    w_normal_of(m, N);
+    const double B[3] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a]};
+    const double C[3] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a]};
+    /* w_minors' m[3], m[1], m[0] (w_normal_of), alone: the others unused */
+    N[0] = B[1] * C[2] - B[2] * C[1];
+    N[1] = -(B[0] * C[2] - B[2] * C[0]);
+    N[2] = B[0] * C[1] - B[1] * C[0];
+    N[3] = 0;
 }
 
 /* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
@@ -1156,6 +1159,10 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
     if (w->lean && !w->narrow) {
         *unsure = -1;
         if (w->f32) {
+            if (!w->f32_ready) {                     /* not where narrow guesses hold */
+                w_lift_f32(w);
+                w->f32_ready = 1;
+            }
             const uint32_t p = w_guess_f32(w, a, N, T);
             if (p != W_NONE) {
                 w->f32_kept++;
@@ -1852,7 +1859,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     w->f32_spoil = t->v2in[d->q] % 8 == 4;
 #endif
     w->f32_kept = w->f32_back = 0;
-    if (w->f32) w_lift_f32(w);
+    w->f32_ready = 0;
     /* The sanitizer build also narrows both narrow guesses to the
      * shortest lists of a facet's corners, with no second step, for
      * vertices of index 3 mod 4: there they are refuted much more often,
