@@ -622,7 +622,7 @@ static void w_lex_ranks(struct dd_wrap *w)
  * doubles, else filtered): the orientations and the order of
  * dd_insphere_symbolic, whose five-point sort and exact calls were most
  * of a cospherical deletion.                                             */
-static int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
+static int w_symbolic_from(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y, int from)
 {
     if (!w->lex_ok) w_lex_ranks(w);
     const uint32_t *r = w->lexr, rk[5] = {r[lv[0]], r[lv[1]], r[lv[2]], r[lv[3]], r[y]};
@@ -632,7 +632,7 @@ static int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint
     top[1] = top[0] == 0 ? 1 : 0;
     for (int i = 0; i < 5; i++)
         if (i != top[0] && rk[i] > rk[top[1]]) top[1] = i;
-    for (int step = 0; step < 2; step++) {
+    for (int step = from; step < 2; step++) {
         if (top[step] == 4) return -1;               /* y itself */
         uint32_t v[4] = {lv[0], lv[1], lv[2], lv[3]};
         v[top[step]] = y;
@@ -642,6 +642,11 @@ static int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint
         if (o != 0) return o;
     }
     return -1;
+}
+
+static inline int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
+{
+    return w_symbolic_from(w, pr, lv, y, 0);
 }
 
 /* The sign of K . P, exactly, for integer entries (w->kexact: |K[i]| <=
@@ -774,7 +779,9 @@ static inline int w_orient_counted(struct dd_wrap *w, dd_pred *pr, const double 
  *    is orient3d(c, b, x, y) (in general orient3d(u0, u1, x, y) with u0,
  *    u1 the other corners, in the order below): one evaluation against
  *    the normal of the plane of u0, u1, x, kept until x changes; 0 (five
- *    points on one circle) goes to w_symbolic, for its second step.
+ *    points on one circle) goes to w_symbolic's second step (the first
+ *    is this orientation: cosphere degree 64-95, the vertices with many
+ *    circles took 2.4x a re-insertion, two fifths in w_symbolic).
  * So a first pass takes the points ranked below the top corner, and only
  * if none is beyond does a second take the least ranked of the others.
  * Each answer is w_symbolic's (the same orientations, exact or filtered
@@ -803,7 +810,7 @@ static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
         if (o <= 0) continue;
         if (lv[3] != W_NONE) {
             int s = w_orient(w, pr, u0, u1, lv[3], Nx, k);
-            if (s == 0) s = w_symbolic(w, pr, lv, k);
+            if (s == 0) s = w_symbolic_from(w, pr, lv, k, 1);   /* its first step: this 0 */
             if (s <= 0) continue;
         }
         lv[3] = k;
@@ -1906,6 +1913,16 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     uint32_t start;
     int hub = 0;                                     /* see w_open_link */
     s = w_open_link(d, w, &start, guess && n >= W_NARROW_FROM ? &hub : NULL);
+    /* Integer neighbours all on one sphere (the cosphere): every guess
+     * among them ties (W_TIE) and is refuted, narrow ones after building
+     * cells, and the scans then wrap in the perturbation's mode.  With
+     * integer cofactors (w->kexact) w_cospherical is exact in doubles and
+     * 128-bit integers, and stops at the first point off the sphere, so
+     * it is asked first there and the scans wrap at once: cosphere degree
+     * 64-95, 4 deletions, where 2 narrow and 1 wide guess were refuted
+     * before the scans (callgrind).  On rounded lifts it would take the
+     * exact expansions on nearly cospherical points (the sphere).        */
+    if (s == DD_OK && guess && w->kexact && (w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n))) guess = 0;
     size_t refuted = 0;                              /* cells of a refuted guess */
     d->wrap_how = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
     if (s == DD_OK && guess) {
@@ -1950,7 +1967,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * unless they are cospherical.  The link triangles are still the
      * first records (w_open_link), for w_cospherical.                   */
     if (s == DD_OK && outcome != W_DECLINED) {
-        w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
+        if (!w->cosph) w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
         if (guess && n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
         else if (guess) s = w_open_link(d, w, &start, NULL);
     }
