@@ -893,8 +893,9 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
  * (grid 20^3: 198 of 300 guesses refuted), so the scans wrap at once
  * (scanning only the tied facets in the guessed wrap, which then proves
  * every cell too, measured 6-10% slower on the grid, and 4x on the
- * cosphere, where the scans' perturbation-only mode is found only after
- * a refutation: w_cospherical).  *unsure: whether points other than a,
+ * cosphere, where the scans' perturbation-only mode was then found only
+ * after a refutation: w_cospherical, now asked first with integer
+ * cofactors, dd_wrap_fill).  *unsure: whether points other than a,
  * b, c had unsure orientations, |o| <= oerr (a, b, c themselves always
  * do: o(a) is exactly 0, o(b), o(c) within the bound).  w_run then has
  * wrap_scan_exact decide them exactly and compare those beyond with the

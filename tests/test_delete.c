@@ -542,6 +542,25 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
     wrap_course(st, tn, pts, n, "gift-wrap", parity, 0, 0, k, want, -1);
 }
 
+/* Test name kind/name/variant in tn, our DT of pts in *t and CGAL's
+ * (returned); NULL, the failure said, when ours cannot be built.       */
+static dd_cgal *wrap_setup(tl_state *st, char *tn, size_t ntn, const char *kind, const char *name,
+                           const char *variant, const double *pts, uint32_t n, dd_tri **t)
+{
+    char msg[256];
+    snprintf(tn, ntn, "%s/%s/%s", kind, name, variant);
+    if (dd_create(t, pts, n, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, tn, "dd_create: %s", msg);
+        return NULL;
+    }
+    dd_cgal *g = dd_cgal_build(pts, n);
+    if (!g) {
+        tl_check(st, 0, tn, "CGAL's triangulation could not be built");
+        dd_free(*t);
+    }
+    return g;
+}
+
 /* The narrow guesses (wrap.c, w_guess_narrow), on a point set whose
  * links have hubs: deletes vertices lo..hi-1 with `variant`, each result
  * CGAL's (wrap_one), none declined, and counts the kept guesses by where
@@ -552,14 +571,10 @@ static void wrap_guess_course(tl_state *st, const char *name, const double *pts,
 static void wrap_narrow_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
                                uint32_t lo, uint32_t hi, int want)
 {
-    char tn[128], msg[256], why[200] = "";
-    snprintf(tn, sizeof tn, "wrap-narrow/%s/%s", name, variant);
+    char tn[128], why[200] = "";
     dd_tri *t;
-    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
-        tl_check(st, 0, tn, "dd_create: %s", msg);
-        return;
-    }
-    dd_cgal *g = dd_cgal_build(pts, n);
+    dd_cgal *g = wrap_setup(st, tn, sizeof tn, "wrap-narrow", name, variant, pts, n, &t);
+    if (!g) return;
     long course[5] = {0}, bad = 0, done = 0, kept[3] = {0, 0, 0}, after[3] = {0, 0, 0};
     for (uint32_t v = lo; v < hi && v < n; v++) {
         dd_delete_stats ds_;
@@ -589,14 +604,10 @@ static void wrap_narrow_course(tl_state *st, const char *name, const double *pts
  * must have had such a guess refuted and still end as CGAL's.          */
 static void wrap_single_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
 {
-    char tn[128], msg[256], why[200] = "";
-    snprintf(tn, sizeof tn, "wrap-single/%s/%s", name, variant);
+    char tn[128], why[200] = "";
     dd_tri *t;
-    if (dd_create(&t, pts, n, msg, sizeof msg) != DD_OK) {
-        tl_check(st, 0, tn, "dd_create: %s", msg);
-        return;
-    }
-    dd_cgal *g = dd_cgal_build(pts, n);
+    dd_cgal *g = wrap_setup(st, tn, sizeof tn, "wrap-single", name, variant, pts, n, &t);
+    if (!g) return;
     long course[5] = {0}, bad = 0, done = 0, kept = 0, answered = 0, spoiled = 0, recovered = 0;
     for (uint32_t v = 0; v < n; v += 4) {
         if (!dd_is_vertex(t, v) || dd_degree(t, v) < 24) continue;
