@@ -73,6 +73,10 @@
 /* The lean wide guess from this many neighbours on (w_guess_lean_avx2). */
 #define W_LEAN_FROM 24
 
+/* wrap_guess's *unsure when it did not count: the lean guess, and the
+ * single-precision one (whose point is not yet known beyond the facet). */
+enum { W_UNCOUNTED = -1, W_SINGLE = -2 };
+
 /* The single-precision guess (w_guess_f32_avx2) abstains when a point
  * other than the facet's corners lies within W_F32_BAND max|N_i| of its
  * plane (o in the float lifts' units, w_lift_f32): there the rounding of
@@ -105,7 +109,8 @@ struct dd_wrap {
                                      precision first (w_guess_f32)        */
     float *flift[4];              /* the lifts in units of m (m^2 for the
                                      lift), rounded to floats             */
-    double f32n[4], f32t[4];      /* the scales of N and T to those units */
+    double f32_sn, f32_st, f32_st3;   /* the scales of N, of T (xyz) and
+                                     of T (lift) to those units           */
     uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
                                      and abstained (made in doubles)      */
     int f32_ready;                /* flift made for this deletion         */
@@ -410,12 +415,9 @@ static void w_lift(struct dd_wrap *w, const double *q)
 static void w_lift_f32(struct dd_wrap *w)
 {
     const double s = 1.0 / w->m, s2 = s * s;
-    for (int i = 0; i < 3; i++) {
-        w->f32n[i] = s2;                             /* N: at most 8m^2    */
-        w->f32t[i] = s2 * s2 * s;                    /* T, xyz: O(m^5)     */
-    }
-    w->f32n[3] = 0;                                  /* N[3] is 0          */
-    w->f32t[3] = s2 * s2;                            /* T, lift: O(m^4)    */
+    w->f32_sn = s2;                                  /* N: at most 8m^2    */
+    w->f32_st = s2 * s2 * s;                         /* T, xyz: O(m^5)     */
+    w->f32_st3 = s2 * s2;                            /* T, lift: O(m^4)    */
     for (int i = 0; i < 4; i++) {
         const double *L = w->lift[i], f = i < 3 ? s : s2;
         float *F = w->flift[i];
@@ -972,7 +974,7 @@ __attribute__((target("avx2"))) static uint32_t w_guess_avx2(double *const *L, u
  * points, nearly in a facet's plane, are the apex about never on generic
  * points, so w_run neither decides them exactly nor takes the pass as
  * proof that a hull facet has every point behind it (w_all_behind then
- * tests it: wrap_guess's *unsure is -1).  Where they matter (nearly
+ * tests it: wrap_guess's *unsure is W_UNCOUNTED).  Where they matter (nearly
  * degenerate cavities) a lean guess is refuted, and the full one is made
  * (dd_wrap_fill: on shifted lifts first where those apply).  Callgrind, a deletion: uniform degree
  * 48-63 -1.9%, bunny 48-95 -2.6%, sphere unchanged; the perturbed grid of
@@ -1142,7 +1144,7 @@ static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const 
 __attribute__((target("avx2"))) static uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4],
                                                              const double T[4])
 {
-    const double sn = w->f32n[0], st = w->f32t[0], st3 = w->f32t[3];
+    const double sn = w->f32_sn, st = w->f32_st, st3 = w->f32_st3;
     const float nf[3] = {(float)(N[0] * sn), (float)(N[1] * sn), (float)(N[2] * sn)};
     const float tf[4] = {(float)(T[0] * st), (float)(T[1] * st), (float)(T[2] * st), (float)(T[3] * st3)};
     float mn = fabsf(nf[0]) > fabsf(nf[1]) ? fabsf(nf[0]) : fabsf(nf[1]);
@@ -1156,16 +1158,16 @@ __attribute__((target("avx2"))) static uint32_t w_guess_f32(struct dd_wrap *w, u
 #endif
 
 /* The wide guess; *unsure: 1 when points other than a, b, c had unsure
- * orientations, 0 when none had, -1 not counted (the lean guess, on
- * points not of exact orientation from W_LEAN_FROM neighbours on and
- * not in the narrow guesses' course, see w_guess_lean_avx2), -2 not
- * counted and the point chosen in single precision (w_guess_f32), not
- * yet known to be beyond the facet.                                    */
+ * orientations, 0 when none had, W_UNCOUNTED (the lean guess, on points
+ * not of exact orientation from W_LEAN_FROM neighbours on and not in the
+ * narrow guesses' course, see w_guess_lean_avx2), W_SINGLE (not counted
+ * either, the point chosen in single precision, w_guess_f32, not yet
+ * known to be beyond the facet).                                       */
 static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
 {
 #ifdef W_AVX2
     if (w->lean && !w->narrow) {
-        *unsure = -1;
+        *unsure = W_UNCOUNTED;
         if (w->f32) {
             if (!w->f32_ready) {                     /* not where narrow guesses hold */
                 w_lift_f32(w);
@@ -1174,7 +1176,7 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
             const uint32_t p = w_guess_f32(w, a, N, T);
             if (p != W_NONE) {
                 w->f32_kept++;
-                *unsure = -2;
+                *unsure = W_SINGLE;
                 return p;
             }
             w->f32_back++;
@@ -1676,7 +1678,7 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             p = w->narrow ? w_guess_narrow(w, pr, a, b, e, mb, N, T) : W_NONE;
             if (p == W_NONE) {
                 p = wrap_guess(w, a, N, T, &unsure);
-                single = unsure == -2;
+                single = unsure == W_SINGLE;
                 /* points of unsure orientation: decided exactly, each
                  * beyond compared with the guess's choice               */
                 if (unsure > 0 && p != W_TIE) p = wrap_scan_exact(w, pr, a, b, e, mb, p, 1, NULL, n);
@@ -1838,10 +1840,12 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
     /* The sanitizer build of the tests takes the plain C code (scans,
-     * sort) for vertices of odd index, so that both are tested with the
-     * same inputs.                                                       */
+     * sort) for input points of odd index, so that both are tested with
+     * the same inputs.  Its choices below go by the input index too, which
+     * the tests pick vertices by.                                         */
 #ifdef DD_TEST_BUILD
-    w->avx2 = w->has_avx2 && d->q % 2 == 0;
+    const uint32_t tix = t->v2in[d->q];
+    w->avx2 = w->has_avx2 && tix % 2 == 0;
 #else
     w->avx2 = w->has_avx2;
 #endif
@@ -1863,17 +1867,17 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * and spoils some of its answers for 4 mod 8 (w_guess_f32).        */
     w->f32 = w->lean && w->m >= 1e-50 && w->m <= 1e50;
 #ifdef DD_TEST_BUILD
-    w->f32 = w->f32 && t->v2in[d->q] % 4 == 0;
-    w->f32_spoil = t->v2in[d->q] % 8 == 4;
+    w->f32 = w->f32 && tix % 4 == 0;
+    w->f32_spoil = tix % 8 == 4;
 #endif
     w->f32_kept = w->f32_back = 0;
     w->f32_ready = 0;
     /* The sanitizer build also narrows both narrow guesses to the
      * shortest lists of a facet's corners, with no second step, for
-     * vertices of index 3 mod 4: there they are refuted much more often,
+     * input points of index 3 mod 4: there they are refuted much more often,
      * and the wide guess after them is tested too (tests: wrap-narrow). */
 #ifdef DD_TEST_BUILD
-    w->narrower = d->q % 4 == 3;
+    w->narrower = tix % 4 == 3;
 #else
     w->narrower = 0;
 #endif
@@ -1968,7 +1972,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * unless they are cospherical.  The link triangles are still the
      * first records (w_open_link), for w_cospherical.                   */
     if (s == DD_OK && outcome != W_DECLINED) {
-        if (!w->cosph) w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);
+        if (!w->kexact) w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);   /* else asked above */
         if (guess && n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
         else if (guess) s = w_open_link(d, w, &start, NULL);
     }
