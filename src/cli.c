@@ -345,7 +345,7 @@ static const command commands[] = {
      "by the random draw get more, drawn among their vertices, up to the\n"
      "case's minimum times F; --bucket-min M sets that minimum (0: none).\n"
      "--reps R (1-5, default 5): repetitions per timing, the median kept,\n"
-     "after one warm-up run (dropped; a row of 2 ms or more keeps its one\n"
+     "after one warm-up run (dropped; a row of 20 ms or more keeps its one\n"
      "run); --reps 1 times only first runs (cold branch predictors and\n"
      "caches), with no warm-up.\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
