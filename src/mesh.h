@@ -108,12 +108,19 @@ dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint
 /* The value stored under the triple {a, b, c}, or DD_NONE. */
 uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c);
 
+/* a <= b <= c, the same three values: least, greatest and, from the
+ * exclusive or of all five, the middle.  No branch on the data's order
+ * (compare and swap branches, whose outcome is that order, cost the
+ * wrap's facet keys past 63 neighbours 3-6% of a deletion: moment
+ * n = 256, helix n = 4000 and 16 000, alternated in one process).      */
 static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
 {
-    uint32_t s;
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
-    if (*b > *c) { s = *b; *b = *c; *c = s; }
-    if (*a > *b) { s = *a; *a = *b; *b = s; }
+    const uint32_t x = *a, y = *b, z = *c;
+    const uint32_t lo = x < y ? x : y, hi = x < y ? y : x;
+    const uint32_t l = lo < z ? lo : z, h = hi > z ? hi : z;
+    *a = l;
+    *b = x ^ y ^ z ^ l ^ h;
+    *c = h;
 }
 
 static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)

@@ -214,8 +214,8 @@ static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
 
 /* The facet table.  A triangle's key is the set of its local numbers, a
  * bit each, when they fit in 64 bits (n < 64, the infinite vertex n
- * included), else w_tri_key: no sorting of the corners (three compare
- * and swaps whose outcome is the data's) where most wraps are, and one
+ * included), else w_tri_key: no sorting of the corners (dd_sort3u, no
+ * branches but a dozen operations) where most wraps are, and one
  * 64-bit compare a probe.  Open addressing, at most half full; every
  * record has its entry, so the table grows with the records and takes
  * them again (w_ftab_grow).  Against the vertex-triple hash of mesh.h
