@@ -206,6 +206,9 @@ int cmd_delete(int argc, char **argv)
                 if (st.wrap_single || st.wrap_single_back)
                     fprintf(stderr, "\n  %u guesses in single precision, %u made in doubles instead%s", st.wrap_single,
                             st.wrap_single_back, st.wrap_single_refuted ? "; a single-precision guess refuted" : "");
+                if (st.wrap_hull_single || st.wrap_hull_back)
+                    fprintf(stderr, "\n  %u hull facets found in single precision, %u in doubles instead",
+                            st.wrap_hull_single, st.wrap_hull_back);
                 fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",
                         (unsigned long long)cn.insphere_calls, (unsigned long long)cn.insphere_exact,
                         (unsigned long long)cn.orient_calls, (unsigned long long)cn.orient_exact,

@@ -482,6 +482,7 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->wrap_shift_guess = 0;
     d->wrap_single = d->wrap_single_back = 0;
     d->wrap_single_refuted = 0;
+    d->wrap_hull_single = d->wrap_hull_back = 0;
     d->wrap_expansions = 0;
     memset(d->link_deletions, 0, sizeof d->link_deletions);
     d->qdt_created = 0;
@@ -727,6 +728,8 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
     st->wrap_single = d->wrap_single;
     st->wrap_single_back = d->wrap_single_back;
     st->wrap_single_refuted = d->wrap_single_refuted;
+    st->wrap_hull_single = d->wrap_hull_single;
+    st->wrap_hull_back = d->wrap_hull_back;
     st->wrap_expansions = d->wrap_expansions;
     memcpy(st->link_deletions, d->link_deletions, sizeof st->link_deletions);
     st->link_us = 1e6 * d->phase[DD_PH_LINK];

@@ -98,6 +98,9 @@ typedef struct dd_del {
                                      in doubles instead                    */
     int wrap_single_refuted;      /* dd_wrap_fill: a guess with some
                                      single-precision answers refuted      */
+    uint32_t wrap_hull_single, wrap_hull_back;   /* dd_wrap_fill: hull
+                                     steps found in single precision and
+                                     proved, and made in doubles instead   */
     uint32_t wrap_expansions;     /* dd_wrap_fill: tests left to the exact
                                      predicates                            */
     uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* by deleted degree     */

@@ -165,6 +165,10 @@ typedef struct dd_delete_stats {
     uint32_t wrap_single_back; /* ... and made in doubles instead          */
     int wrap_single_refuted;  /* a guess with single-precision answers was
                                  refuted, then made again in doubles      */
+    uint32_t wrap_hull_single; /* hull facets (the wrap's steps round a
+                                 hull edge) found in single precision and
+                                 proved (wrap.c, w_inf_f32)               */
+    uint32_t wrap_hull_back;  /* ... and found in doubles instead          */
     uint32_t wrap_expansions; /* the wrap's tests left to the exact
                                  predicates' expansions                   */
     uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
