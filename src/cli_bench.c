@@ -6,11 +6,11 @@
  * for every row, and sparse degree buckets topped up (bcase, --bucket-min
  * M: at least M a bucket, 0: none); for each vertex and row the deletion
  * alone is timed with a monotonic clock (median of up to 5 repetitions,
- * or --reps R, while they take under REP_BUDGET_MS together), its result
- * is compared with CGAL's, and the vertex is re-inserted untimed so the
- * next deletion starts from DT(S) again.  With more than one repetition, one more runs first as a
- * warm-up and is dropped when another follows (so a row of 20 ms or more
- * keeps its single run): rows run one after another on the same vertex,
+ * or --reps R, while they take under 20 ms together: rep_budget_s), its
+ * result is compared with CGAL's, and the vertex is re-inserted untimed
+ * so the next deletion starts from DT(S) again.  With more than one
+ * repetition, one more runs first as a warm-up and is dropped when
+ * another follows (so a row of 20 ms or more keeps its single run): rows run one after another on the same vertex,
  * and the first runs of a row pay for the caches and branch predictors
  * of the row before.  Without it, auto, the first engine row after
  * CGAL's, measured up to 1.5x gift-wrap, the same code run later (moment
@@ -72,8 +72,7 @@
  * the re-insertions in one run, 1.4-1.5 in a harness timing 12 runs.
  * 20 ms gives them their five; CGAL's rows and those of the slow
  * variants, a run of 20 ms or more, keep their one.                   */
-enum { REP_BUDGET_MS = 20 };
-#define REP_BUDGET_S (REP_BUDGET_MS * 1e-3)
+static const double rep_budget_s = 20e-3;
 
 typedef struct bcase { const char *dataset; uint32_t n, deletions, bucket_min; } bcase;
 
@@ -233,7 +232,7 @@ static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, 
     double us[6], ds[6], spent = 0;
     int reps = 0;
     *match = *del_match = 0;
-    while (reps < runs_for(max_reps) && (reps == 0 || spent < REP_BUDGET_S)) {
+    while (reps < runs_for(max_reps) && (reps == 0 || spent < rep_budget_s)) {
         double t0 = now_seconds();
         if (dd_delete(t, v, NULL) != DD_OK) return -1;
         double t1 = now_seconds();
@@ -375,7 +374,7 @@ int cmd_bench(int argc, char **argv)
                 int hashed = 0;
                 dd_delete_stats st;
                 memset(&st, 0, sizeof st);
-                while (reps < runs_for(max_reps) && (reps == 0 || spent < REP_BUDGET_S) && !bad) {
+                while (reps < runs_for(max_reps) && (reps == 0 || spent < rep_budget_s) && !bad) {
                     double t0 = now_seconds();
                     bad = row_delete(r, t, g, v, seed + it + (uint64_t)reps);
                     double t1 = now_seconds();

@@ -107,8 +107,11 @@ struct dd_wrap {
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
     int has_fma;                  /* the CPU has FMA (w_guess_f32_avx2)     */
     int lean;                     /* the wide guess is the lean one       */
-    int f32;                      /* the lean guess is made in single
-                                     precision first (w_guess_f32)        */
+    int flift_ok;                 /* the float lifts may be used
+                                     (w_flift): the lean guess and the hull
+                                     step are made in single precision first */
+    int f32;                      /* the lean guess is (w_guess_f32): off
+                                     after a refuted guess                */
     float *flift[4];              /* the lifts in units of m (m^2 for the
                                      lift), rounded to floats             */
     double f32_sn, f32_st, f32_st3;   /* the scales of N, of T (xyz) and
@@ -117,7 +120,7 @@ struct dd_wrap {
                                      and abstained (made in doubles)      */
     uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
                                      made in doubles (wrap_scan_inf)      */
-    int f32_ready;                /* flift made for this deletion         */
+    int f32_ready;                /* flift made for this deletion (w_flift) */
 #ifdef DD_TEST_BUILD
     int f32_spoil;                /* answer a wrong point (tests)         */
 #endif
@@ -431,6 +434,17 @@ static void w_lift_f32(struct dd_wrap *w)
     }
 }
 
+/* The float lifts, made at their first use in a deletion: links where
+ * the narrow guesses hold and no hull step is taken never pay for them. */
+static inline float *const *w_flift(struct dd_wrap *w)
+{
+    if (!w->f32_ready) {
+        w_lift_f32(w);
+        w->f32_ready = 1;
+    }
+    return w->flift;
+}
+
 /* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
  * wrap_scan have the same entries and at most as many roundings), for
  * nearly cospherical cavities where the plain filter abstains.  Tried
@@ -503,10 +517,12 @@ static inline void w_minors(double m[6], const double B[4], const double C[4])
     /* two at a time, as w_cofactors: the same products and differences */
     const __m128d b01 = _mm_loadu_pd(B), b23 = _mm_loadu_pd(B + 2), c01 = _mm_loadu_pd(C), c23 = _mm_loadu_pd(C + 2);
     const __m128d b12 = _mm_shuffle_pd(b01, b23, 1), c12 = _mm_shuffle_pd(c01, c23, 1);
-    _mm_storeu_pd(m, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(b01, b01), c12), _mm_mul_pd(b12, _mm_unpacklo_pd(c01, c01))));
+    _mm_storeu_pd(m, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(b01, b01), c12),
+                                _mm_mul_pd(b12, _mm_unpacklo_pd(c01, c01))));
     _mm_storeu_pd(m + 2, _mm_sub_pd(_mm_mul_pd(b01, _mm_shuffle_pd(c23, c23, 1)),
                                     _mm_mul_pd(_mm_shuffle_pd(b23, b23, 1), c01)));
-    _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)), _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
+    _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)),
+                                    _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
 #else
     m[0] = B[0] * C[1] - B[1] * C[0];
     m[1] = B[0] * C[2] - B[2] * C[0];
@@ -993,6 +1009,15 @@ __attribute__((target("avx2"))) static uint32_t w_guess_lean_avx2(double *const 
     return w_guess_body(L, n, a, N, T, oerr, &unsure, 1);
 }
 
+/* The sum of x's eight lanes. */
+__attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
+{
+    __m128i s = _mm_add_epi32(_mm256_castsi256_si128(x), _mm256_extracti128_si256(x, 1));
+    s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0x4E));
+    s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0xB1));
+    return (uint32_t)_mm_cvtsi128_si32(s);
+}
+
 /* The single-precision guess (w->f32): the lean guess (the point beyond
  * the facet of least t/o) over the float lifts (w_lift_f32), eight
  * points a vector where the double one takes four.  o and t are the
@@ -1013,11 +1038,12 @@ __attribute__((target("avx2"))) static uint32_t w_guess_lean_avx2(double *const 
  * meeting as a triangulation) refutes a wrong one, which is then made
  * again in doubles in full (dd_wrap_fill).  Nothing else rests on the
  * floats.  Their errors (about 1e-7 of the terms) reorder two points
- * whose quotients differ by less: on the bench's points that refuted no
- * guess at uniform and bunny degree 24-95, and 11 more of 300 wraps of
- * the sphere (whose lean guesses are refuted anyway, 278 of 300).
- * Callgrind, uniform degree 48-63: the guess's loop 5.07M -> 2.59M
- * instructions for 140 deletions (abstained: 3% of the guesses).       */
+ * whose quotients differ by less: over the 1 998 vertices of degree 24
+ * or more of the uniform set (n = 10^5) that refuted no guess, over the
+ * bunny's 1 901 one, and 11 more of 300 wraps of the sphere (whose lean
+ * guesses are refuted anyway, 278 of 300); 53 of the uniform set's
+ * 84 000 guesses abstained.  Callgrind, uniform degree 48-63: the
+ * guess's loop 5.07M -> 2.59M instructions for 140 deletions.         */
 __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_guess_f32_avx2(float *const *F, uint32_t n,
                                                                                     uint32_t a, const float nf[3],
                                                                                     const float tf[4], float band)
@@ -1052,12 +1078,9 @@ __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_gues
     lo = _mm256_min_ps(lo, _mm256_permute_ps(lo, 0x4e));
     lo = _mm256_min_ps(lo, _mm256_permute_ps(lo, 0xb1));
     const unsigned lane = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(br, lo, _CMP_EQ_OQ));
-    __m128i u = _mm_add_epi32(_mm256_castsi256_si128(uns), _mm256_extracti128_si256(uns, 1));
-    u = _mm_add_epi32(u, _mm_shuffle_epi32(u, 0x4e));
-    u = _mm_add_epi32(u, _mm_shuffle_epi32(u, 0xb1));
     /* a, b, c only near the plane; a point beyond (else all behind); one
      * least lane                                                         */
-    if (_mm_cvtsi128_si32(u) != 3) return W_NONE;
+    if (w_hsum_epi32(uns) != 3) return W_NONE;
     if (!(_mm256_cvtss_f32(lo) < 1.0f / 0.0f)) return W_BEHIND;
     if (lane & (lane - 1)) return W_NONE;
     const __m256 li = _mm256_permutevar8x32_ps(bi, _mm256_set1_epi32((int)__builtin_ctz(lane)));
@@ -1156,12 +1179,13 @@ static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const 
 __attribute__((target("avx2,fma"))) static uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4],
                                                              const double T[4])
 {
+    float *const *F = w_flift(w);                    /* and the scales */
     const double sn = w->f32_sn, st = w->f32_st, st3 = w->f32_st3;
     const float nf[3] = {(float)(N[0] * sn), (float)(N[1] * sn), (float)(N[2] * sn)};
     const float tf[4] = {(float)(T[0] * st), (float)(T[1] * st), (float)(T[2] * st), (float)(T[3] * st3)};
     float mn = fabsf(nf[0]) > fabsf(nf[1]) ? fabsf(nf[0]) : fabsf(nf[1]);
     mn = fabsf(nf[2]) > mn ? fabsf(nf[2]) : mn;
-    const uint32_t p = w_guess_f32_avx2(w->flift, w->n, a, nf, tf, W_F32_BAND * mn);
+    const uint32_t p = w_guess_f32_avx2(F, w->n, a, nf, tf, W_F32_BAND * mn);
 #ifdef DD_TEST_BUILD
     if (p < w->n && w->f32_spoil && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
 #endif
@@ -1181,10 +1205,6 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
     if (w->lean && !w->narrow) {
         *unsure = W_UNCOUNTED;
         if (w->f32) {
-            if (!w->f32_ready) {                     /* not where narrow guesses hold */
-                w_lift_f32(w);
-                w->f32_ready = 1;
-            }
             const uint32_t p = w_guess_f32(w, a, N, T);
             if (p == W_BEHIND) {                     /* w_run asks w_all_behind */
                 w->f32_kept++;
@@ -1318,9 +1338,8 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_
  * helix and uniform hull vertices, a deletion there takes 10% fewer
  * instructions and 7.5% less time (alternated in one process; uniform
  * degree 48-63, hull corners of the cube: 1.6% and 2%).                 */
-__attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(const struct dd_wrap *w, uint32_t a, uint32_t b)
+__attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b)
 {
-    float *const *F = w->flift;
     const float B[3] = {F[0][a] - F[0][b], F[1][a] - F[1][b], F[2][a] - F[2][b]};
     const float ax0 = fabsf(B[0]), ax1 = fabsf(B[1]), ax2 = fabsf(B[2]);
     float E1[3];                                     /* B x the axis B is least along */
@@ -1335,7 +1354,7 @@ __attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(const struct dd_wr
                  zero = _mm256_setzero_ps();
     __m256 bu = zero, bw = zero, bi = zero, has = zero;
     __m256 kv = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
-    for (uint32_t k = 0; k < w->n; k += 8) {
+    for (uint32_t k = 0; k < n; k += 8) {
         const __m256 v0 = _mm256_sub_ps(_mm256_loadu_ps(F[0] + k), b0),
                      v1 = _mm256_sub_ps(_mm256_loadu_ps(F[1] + k), b1),
                      v2 = _mm256_sub_ps(_mm256_loadu_ps(F[2] + k), b2);
@@ -1400,12 +1419,8 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     uint32_t best = W_NONE, z = W_NONE;
     double N[4];
 #ifdef W_AVX2
-    if (w->f32) {                                    /* step 1 guessed (w_inf_f32) */
-        if (!w->f32_ready) {
-            w_lift_f32(w);
-            w->f32_ready = 1;
-        }
-        uint32_t p = w_inf_f32(w, a, b);
+    if (w->flift_ok) {                               /* step 1 guessed (w_inf_f32) */
+        uint32_t p = w_inf_f32(w_flift(w), w->n, a, b);
 #ifdef DD_TEST_BUILD
         /* a wrong point (tests: wrap-single): refused                   */
         if (p < w->n && w->f32_spoil) p = (p + 1) % w->n;
@@ -1476,15 +1491,6 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
 }
 
 #ifdef W_AVX2
-/* The sum of x's eight lanes. */
-__attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
-{
-    __m128i s = _mm_add_epi32(_mm256_castsi256_si128(x), _mm256_extracti128_si256(x, 1));
-    s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0x4E));
-    s = _mm_add_epi32(s, _mm_shuffle_epi32(s, 0xB1));
-    return (uint32_t)_mm_cvtsi128_si32(s);
-}
-
 /* Rank sort of distinct ids: each goes to the place given by the number
  * of ids below it, counted eight at a time (the ids biased by 2^31 for
  * the signed compare; the padding, UINT32_MAX, is below none).  O(n^2)
@@ -1964,14 +1970,18 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     d->wrap_integer = w->exact ? 1 : w->kexact ? 2 : 0;
     w->cosph = 0;                                    /* w_cospherical may set it */
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
-    /* The lean guess in single precision first (w_guess_f32_avx2).  The
-     * sanitizer build makes it only for input points of index 0 mod 4,
-     * and spoils some of its answers for 4 mod 8 (w_guess_f32).        */
-    w->f32 = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
+    /* The lean guess and the hull step in single precision first
+     * (w_guess_f32_avx2, w_inf_f32).  The sanitizer build makes them only
+     * for input points of index 0 mod 4, and spoils some of their answers
+     * for 4 mod 8 (w_guess_f32, wrap_scan_inf).  A refuted guess is made
+     * again in doubles; the hull steps, each proved in doubles (and on
+     * the x, y, z the shifted lifts keep), stay in floats.              */
+    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
 #ifdef DD_TEST_BUILD
-    w->f32 = w->f32 && tix % 4 == 0;
+    w->flift_ok = w->flift_ok && tix % 4 == 0;
     w->f32_spoil = tix % 8 == 4;
 #endif
+    w->f32 = w->flift_ok;
     w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;
     w->f32_ready = 0;
     /* The sanitizer build also narrows both narrow guesses to the

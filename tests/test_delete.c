@@ -601,9 +601,12 @@ static void wrap_narrow_course(tl_state *st, const char *name, const double *pts
  * each hull step of those of index 4 mod 8.  Every vertex of index 0
  * mod 4 and degree 24 or more is deleted with `variant` against CGAL
  * (wrap_one); some of index 0 mod 8 must have kept single-precision
- * answers in a proved guess, and hull steps; and (sanitizer build) some
- * of index 4 mod 8 must have had such a guess refuted, and hull steps
- * made in doubles instead, and still end as CGAL's.                    */
+ * answers in a proved guess, and hull steps, with at most one in ten
+ * of those refuted (the floats' rounding rarely misleads them; scales
+ * left from the deletion before refuted four of nine bunny deletions of
+ * degree 48-95); and (sanitizer build) some of index 4 mod 8 must have
+ * had such a guess refuted, and hull steps made in doubles instead, and
+ * still end as CGAL's.                                                 */
 static void wrap_single_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
 {
     char tn[128], why[200] = "";
@@ -611,7 +614,7 @@ static void wrap_single_course(tl_state *st, const char *name, const double *pts
     dd_cgal *g = wrap_setup(st, tn, sizeof tn, "wrap-single", name, variant, pts, n, &t);
     if (!g) return;
     long course[5] = {0}, bad = 0, done = 0, kept = 0, answered = 0, spoiled = 0, recovered = 0;
-    long hull_kept = 0, hull_back = 0;
+    long hull_kept = 0, hull_back = 0, unspoiled_refuted = 0;
     for (uint32_t v = 0; v < n; v += 4) {
         if (!dd_is_vertex(t, v) || dd_degree(t, v) < 24) continue;
         dd_delete_stats ds_;
@@ -621,6 +624,7 @@ static void wrap_single_course(tl_state *st, const char *name, const double *pts
         answered += ds_.wrap_single;
         if (v % 8 == 0) {
             kept += ds_.wrap == DD_WRAP_PROVED && ds_.wrap_single > 0 && !ds_.wrap_single_refuted;
+            unspoiled_refuted += ds_.wrap_single_refuted;
             hull_kept += ds_.wrap_hull_single;
         } else {
             spoiled += ds_.wrap_single_refuted, recovered += ds_.wrap_single_refuted && ds_.wrap == DD_WRAP_PROVED;
@@ -632,11 +636,12 @@ static void wrap_single_course(tl_state *st, const char *name, const double *pts
 #else
     const int want_recovered = 0;                  /* nothing spoiled there */
 #endif
-    tl_check(st, bad == 0 && done > 0 && kept > 0 && recovered >= want_recovered && hull_kept > 0 &&
-                     hull_back >= want_recovered, tn,
-             "%ld of %ld wrong (%s); %ld proved with single-precision answers (%ld in all), %ld refuted with a "
-             "wrong one (%ld proved again); hull steps %ld in single precision, %ld in doubles after a wrong one",
-             bad, done, why, kept, answered, spoiled, recovered, hull_kept, hull_back);
+    tl_check(st, bad == 0 && done > 0 && kept > 0 && 10 * unspoiled_refuted <= kept && recovered >= want_recovered &&
+                     hull_kept > 0 && hull_back >= want_recovered, tn,
+             "%ld of %ld wrong (%s); %ld proved with single-precision answers (%ld in all; %ld refuted unspoiled), "
+             "%ld refuted with a wrong one (%ld proved again); hull steps %ld in single precision, %ld in doubles "
+             "after a wrong one", bad, done, why, kept, answered, unspoiled_refuted, spoiled, recovered, hull_kept,
+             hull_back);
     printf("# %s: %ld deletions, %ld proved with single-precision answers (%ld), %ld refuted with a wrong one "
            "(%ld proved again); hull steps %ld, %ld in doubles after a wrong one\n", tn, done, kept, answered,
            spoiled, recovered, hull_kept, hull_back);
