@@ -486,14 +486,15 @@ static int w_shift(struct dd_wrap *w)
  *     w(X, P) |n|^2 = o(X) t(P) - t(X) o(P),
  * and for x, p on the positive side, p is inside the sphere of a, b, c, x
  * iff t(p)/o(p) < t(x)/o(x): the fill cell's point minimises t/o.      */
-static inline void w_cofactors(double K[4], const double X[4], const double m[6])
+#ifdef __SSE2__
+/* w_cofactors of X = (x01, x23), in registers: the same products, sums
+ * and signs (bit for bit) two at a time.  w_run makes K and T for each
+ * cell, scalar these took 5% of a deletion at uniform degree 48-63
+ * (callgrind).                                                         */
+static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const double m[6])
 {
     enum { M01, M02, M03, M12, M13, M23 };
-#ifdef __SSE2__
-    /* Two at a time, the same products, sums and signs (bit for bit):
-     * w_run makes K and T for each cell, scalar these took 5% of a
-     * deletion at uniform degree 48-63 (callgrind).                     */
-    const __m128d x01 = _mm_loadu_pd(X), x23 = _mm_loadu_pd(X + 2), neg0 = _mm_set_pd(0.0, -0.0);
+    const __m128d neg0 = _mm_set_pd(0.0, -0.0);
     __m128d a = _mm_mul_pd(_mm_shuffle_pd(x01, x01, 1), _mm_set1_pd(m[M23]));
     __m128d b = _mm_mul_pd(_mm_unpacklo_pd(x23, x23), _mm_setr_pd(m[M13], m[M03]));
     __m128d c = _mm_mul_pd(_mm_unpackhi_pd(x23, x23), _mm_setr_pd(m[M12], m[M02]));
@@ -502,7 +503,15 @@ static inline void w_cofactors(double K[4], const double X[4], const double m[6]
     b = _mm_mul_pd(_mm_unpackhi_pd(x01, x01), _mm_setr_pd(m[M03], m[M02]));
     c = _mm_mul_pd(_mm_shuffle_pd(x23, x23, 1), _mm_set1_pd(m[M01]));
     _mm_storeu_pd(K + 2, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
+}
+#endif
+
+static inline void w_cofactors(double K[4], const double X[4], const double m[6])
+{
+#ifdef __SSE2__
+    w_cofactors_v(K, _mm_loadu_pd(X), _mm_loadu_pd(X + 2), m);
 #else
+    enum { M01, M02, M03, M12, M13, M23 };
     K[0] = -(X[1] * m[M23] - X[2] * m[M13] + X[3] * m[M12]);
     K[1] = X[0] * m[M23] - X[2] * m[M03] + X[3] * m[M02];
     K[2] = -(X[0] * m[M13] - X[1] * m[M03] + X[3] * m[M01]);
@@ -565,8 +574,23 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
     double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
     w_minors(m, B, C);
+#ifdef __SSE2__
+    /* N in registers: written in scalars (w_normal_of) and read back in
+     * pairs by w_cofactors, a read the store buffer cannot forward from
+     * two writes, which waited for them to commit.  In the bench
+     * (scripts/abbench.sh, uniform, degree >= 32, 2 x 12 runs) deletion /
+     * re-insertion fell by 0.04-0.06, ~3%; the rows B, C and the new
+     * cell's X made in registers as well took it back up by 0.026.      */
+    const __m128d m01 = _mm_loadu_pd(m), m23 = _mm_loadu_pd(m + 2);
+    const __m128d n01 = _mm_xor_pd(_mm_shuffle_pd(m23, m01, 3), _mm_set_pd(-0.0, 0.0));   /* (m3, -m1) */
+    const __m128d n23 = _mm_unpacklo_pd(m01, _mm_setzero_pd());                             /* (m0, 0)   */
+    _mm_storeu_pd(N, n01);
+    _mm_storeu_pd(N + 2, n23);
+    w_cofactors_v(T, n01, n23, m);
+#else
     w_normal_of(m, N);
     w_cofactors(T, N, m);
+#endif
 }
 
 /* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
@@ -1043,35 +1067,45 @@ __attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
  * bunny's 1 901 one, and 11 more of 300 wraps of the sphere (whose lean
  * guesses are refuted anyway, 278 of 300); 53 of the uniform set's
  * 84 000 guesses abstained.  Callgrind, uniform degree 48-63: the
- * guess's loop 5.07M -> 2.59M instructions for 140 deletions.         */
+ * guess's loop 5.07M -> 2.59M instructions for 140 deletions.  The
+ * points not beyond get a NaN quotient from an all-ones o (no blend), the
+ * band's count is made in integers, and the lane's number is read from
+ * memory: 10% less time a guess alone (same answers on 4096 facets), and
+ * with w_inf_f32's change 2-3% of the bench's deletion / re-insertion.  */
 __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_guess_f32_avx2(float *const *F, uint32_t n,
                                                                                     uint32_t a, const float nf[3],
                                                                                     const float tf[4], float band)
 {
     const __m256 n0 = _mm256_set1_ps(nf[0]), n1 = _mm256_set1_ps(nf[1]), n2 = _mm256_set1_ps(nf[2]);
     const __m256 t0 = _mm256_set1_ps(tf[0]), t1 = _mm256_set1_ps(tf[1]), t2 = _mm256_set1_ps(tf[2]),
-                 t3 = _mm256_set1_ps(tf[3]), er = _mm256_set1_ps(band), eight = _mm256_set1_ps(8),
-                 inf = _mm256_set1_ps(1.0f / 0.0f), sign = _mm256_set1_ps(-0.0f), nan = _mm256_set1_ps(NAN);
+                 t3 = _mm256_set1_ps(tf[3]), er = _mm256_set1_ps(band);
+    /* |o| > band compared as integers (non-negative floats order as
+     * their bits; the NaN padding's are above any band's), off the
+     * floating-point compare's ports                                     */
+    const __m256i erb = _mm256_castps_si256(er), abs = _mm256_set1_epi32(0x7fffffff), eight = _mm256_set1_epi32(8);
     /* a's dot products, taken from each lane's                        */
     const __m256 A0 = _mm256_set1_ps(F[0][a]), A1 = _mm256_set1_ps(F[1][a]), A2 = _mm256_set1_ps(F[2][a]),
                  A3 = _mm256_set1_ps(F[3][a]);
     const __m256 an = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(A0, n0), _mm256_mul_ps(A1, n1)), _mm256_mul_ps(A2, n2));
     const __m256 at = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(A0, t0), _mm256_mul_ps(A1, t1)),
                                     _mm256_add_ps(_mm256_mul_ps(A2, t2), _mm256_mul_ps(A3, t3)));
-    __m256 br = inf, bi = _mm256_setzero_ps();
-    __m256i uns = _mm256_setzero_si256();
-    __m256 kv = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
-    for (uint32_t k = 0; k < n; k += 8) {
+    __m256 br = _mm256_set1_ps(INFINITY);        /* 1.0f / 0.0f was a division at run time */
+    __m256i bi = _mm256_setzero_si256(), out = _mm256_setzero_si256(), kv = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    uint32_t k = 0;
+    for (; k < n; k += 8) {
         const __m256 P0 = _mm256_loadu_ps(F[0] + k), P1 = _mm256_loadu_ps(F[1] + k), P2 = _mm256_loadu_ps(F[2] + k),
                      P3 = _mm256_loadu_ps(F[3] + k);
         __m256 ok = _mm256_fmadd_ps(P2, n2, _mm256_fmadd_ps(P1, n1, _mm256_fmsub_ps(P0, n0, an)));
         __m256 tk = _mm256_fmadd_ps(P3, t3,
                                     _mm256_fmadd_ps(P2, t2, _mm256_fmadd_ps(P1, t1, _mm256_fmsub_ps(P0, t0, at))));
-        uns = _mm256_sub_epi32(uns, _mm256_castps_si256(_mm256_cmp_ps(_mm256_andnot_ps(sign, ok), er, _CMP_LE_OQ)));
-        __m256 r = _mm256_blendv_ps(nan, _mm256_div_ps(tk, ok), _mm256_cmp_ps(ok, er, _CMP_GT_OQ));
-        bi = _mm256_blendv_ps(bi, kv, _mm256_cmp_ps(r, br, _CMP_LT_OQ));
+        out = _mm256_sub_epi32(out, _mm256_cmpgt_epi32(_mm256_and_si256(_mm256_castps_si256(ok), abs), erb));
+        /* a point not beyond: o all ones, a NaN, and so its quotient,
+         * which neither compares below br nor is taken by the min       */
+        __m256 r = _mm256_div_ps(tk, _mm256_or_ps(ok, _mm256_cmp_ps(ok, er, _CMP_NGT_UQ)));
+        bi = _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(bi), _mm256_castsi256_ps(kv),
+                                                  _mm256_cmp_ps(r, br, _CMP_LT_OQ)));
         br = _mm256_min_ps(r, br);
-        kv = _mm256_add_ps(kv, eight);
+        kv = _mm256_add_epi32(kv, eight);
     }
     /* the least lane, and the count */
     __m256 lo = _mm256_min_ps(br, _mm256_permute2f128_ps(br, br, 1));
@@ -1080,11 +1114,12 @@ __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_gues
     const unsigned lane = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(br, lo, _CMP_EQ_OQ));
     /* a, b, c only near the plane; a point beyond (else all behind); one
      * least lane                                                         */
-    if (w_hsum_epi32(uns) != 3) return W_NONE;
-    if (!(_mm256_cvtss_f32(lo) < 1.0f / 0.0f)) return W_BEHIND;
+    if (k - w_hsum_epi32(out) != 3) return W_NONE;
+    if (!(_mm256_cvtss_f32(lo) < INFINITY)) return W_BEHIND;
     if (lane & (lane - 1)) return W_NONE;
-    const __m256 li = _mm256_permutevar8x32_ps(bi, _mm256_set1_epi32((int)__builtin_ctz(lane)));
-    return (uint32_t)_mm256_cvtss_f32(li);
+    uint32_t ix[8];
+    _mm256_storeu_si256((__m256i *)ix, bi);
+    return ix[__builtin_ctz(lane)];
 }
 
 /* w_next with AVX2: four points at a time, o as w_row_o has it (the
@@ -1328,16 +1363,47 @@ static int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_
  * (each point's offset from b projected on E1, E2, perpendicular to
  * B = a - b with E1 x E2 a positive multiple of B), the plane of b, a, p
  * has x beyond it iff x is counter-clockwise of p, and the facet's point
- * is the furthest counter-clockwise.  Each lane keeps its furthest, then
- * the lanes are compared.  Only a guess: wrap_scan_inf takes it when
- * every other point is surely behind its plane in doubles (w_all_behind),
- * else makes the step in doubles.  The step in doubles restarted its pass
- * at each point beyond (7.6 passes a step on the helix, n = 1000, degree
+ * is the furthest counter-clockwise.  Each lane keeps its furthest, in
+ * two sets that take the vectors in turn (w_ccw_take), then the sets and
+ * the lanes are compared, vectors again.  Only a guess: wrap_scan_inf
+ * takes it when every other point is surely behind its plane in doubles
+ * (w_all_behind), else makes the step in doubles.  The step in doubles
+ * restarted its pass at each point beyond (7.6 passes a step on the helix, n = 1000, degree
  * 32-47, whose vertices are all on the hull: a third of a deletion's
  * instructions); with this guess, proved at every step on the bench's
  * helix and uniform hull vertices, a deletion there takes 10% fewer
  * instructions and 7.5% less time (alternated in one process; uniform
- * degree 48-63, hull corners of the cube: 1.6% and 2%).                 */
+ * degree 48-63, hull corners of the cube: 1.6% and 2%).  One set of
+ * lanes chained each vector's compare to the one before (a dozen cycles
+ * a vector), and the lanes were then compared in scalars, with branches:
+ * the two sets and the vector compare of lanes take a third less time
+ * (150 -> 100 TSC ticks a step at 46 points alone, the same points
+ * chosen on 4096 random steps; a tie between lanes may now go the other
+ * way, and the check decides as before).  Deleting and re-inserting the
+ * same vertex again and again showed no change: there the predictor
+ * learns the lanes' branches.  In the bench, with the same session's
+ * changes to w_guess_f32_avx2, deletion / re-insertion at uniform degree
+ * >= 32 fell by 0.04-0.05 (scripts/abbench.sh, 12 and 16 runs).       */
+__attribute__((target("avx2,fma"))) static inline void w_ccw_take(__m256 u, __m256 wv, __m256 kv, __m256 pt, __m256 *bu,
+                                                              __m256 *bw, __m256 *bi, __m256 *has)
+{
+    /* each lane: the point (u, wv) of number kv, if pt, replaces the
+     * lane's (*bu, *bw) when counter-clockwise of it or the first      */
+    const __m256 ccw = _mm256_cmp_ps(_mm256_fmsub_ps(*bu, wv, _mm256_mul_ps(*bw, u)), _mm256_setzero_ps(), _CMP_GT_OQ);
+    const __m256 take = _mm256_and_ps(pt, _mm256_blendv_ps(pt, ccw, *has));
+    *bu = _mm256_blendv_ps(*bu, u, take);
+    *bw = _mm256_blendv_ps(*bw, wv, take);
+    *bi = _mm256_blendv_ps(*bi, kv, take);
+    *has = _mm256_or_ps(*has, take);
+}
+
+/* Each lane of (u, w, i, h) against the one PERM brings to it.          */
+#define W_CCW_FOLD(u, w, i, h, PERM)                                                                  \
+    w_ccw_take(PERM(u), PERM(w), PERM(i), PERM(h), &(u), &(w), &(i), &(h))
+#define W_SWAP128(x) _mm256_permute2f128_ps(x, x, 1)
+#define W_SWAP64(x) _mm256_permute_ps(x, 0x4e)
+#define W_SWAP32(x) _mm256_permute_ps(x, 0xb1)
+
 __attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b)
 {
     const float B[3] = {F[0][a] - F[0][b], F[1][a] - F[1][b], F[2][a] - F[2][b]};
@@ -1350,41 +1416,34 @@ __attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(float *const *F, u
     const __m256 b0 = _mm256_set1_ps(F[0][b]), b1 = _mm256_set1_ps(F[1][b]), b2 = _mm256_set1_ps(F[2][b]);
     const __m256 e10 = _mm256_set1_ps(E1[0]), e11 = _mm256_set1_ps(E1[1]), e12 = _mm256_set1_ps(E1[2]);
     const __m256 e20 = _mm256_set1_ps(E2[0]), e21 = _mm256_set1_ps(E2[1]), e22 = _mm256_set1_ps(E2[2]);
-    const __m256 fa = _mm256_set1_ps((float)a), fb = _mm256_set1_ps((float)b), eight = _mm256_set1_ps(8),
-                 zero = _mm256_setzero_ps();
-    __m256 bu = zero, bw = zero, bi = zero, has = zero;
+    const __m256 fa = _mm256_set1_ps((float)a), fb = _mm256_set1_ps((float)b), eight = _mm256_set1_ps(8);
+    __m256 bu[2], bw[2], bi[2], has[2];
+    for (int c = 0; c < 2; c++) bu[c] = bw[c] = bi[c] = has[c] = _mm256_setzero_ps();
     __m256 kv = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
-    for (uint32_t k = 0; k < n; k += 8) {
+    for (uint32_t k = 0, c = 0; k < n; k += 8, c ^= 1) {
         const __m256 v0 = _mm256_sub_ps(_mm256_loadu_ps(F[0] + k), b0),
                      v1 = _mm256_sub_ps(_mm256_loadu_ps(F[1] + k), b1),
                      v2 = _mm256_sub_ps(_mm256_loadu_ps(F[2] + k), b2);
         const __m256 u = _mm256_fmadd_ps(v2, e12, _mm256_fmadd_ps(v1, e11, _mm256_mul_ps(v0, e10)));
         const __m256 wv = _mm256_fmadd_ps(v2, e22, _mm256_fmadd_ps(v1, e21, _mm256_mul_ps(v0, e20)));
-        /* a point (not a, b, nor the NaN padding) ... */
+        /* a point: not a, b, nor the NaN padding                        */
         const __m256 notab = _mm256_and_ps(_mm256_cmp_ps(kv, fa, _CMP_NEQ_OQ), _mm256_cmp_ps(kv, fb, _CMP_NEQ_OQ));
         const __m256 pt = _mm256_and_ps(notab, _mm256_cmp_ps(u, u, _CMP_ORD_Q));
-        /* ... counter-clockwise of the lane's best, or its first        */
-        const __m256 ccw = _mm256_cmp_ps(_mm256_fmsub_ps(bu, wv, _mm256_mul_ps(bw, u)), zero, _CMP_GT_OQ);
-        const __m256 take = _mm256_and_ps(pt, _mm256_blendv_ps(pt, ccw, has));
-        bu = _mm256_blendv_ps(bu, u, take);
-        bw = _mm256_blendv_ps(bw, wv, take);
-        bi = _mm256_blendv_ps(bi, kv, take);
-        has = _mm256_or_ps(has, take);
+        if (c) w_ccw_take(u, wv, kv, pt, &bu[1], &bw[1], &bi[1], &has[1]);
+        else w_ccw_take(u, wv, kv, pt, &bu[0], &bw[0], &bi[0], &has[0]);
         kv = _mm256_add_ps(kv, eight);
     }
-    float U[8], V[8], I[8], H[8];
-    _mm256_storeu_ps(U, bu);
-    _mm256_storeu_ps(V, bw);
-    _mm256_storeu_ps(I, bi);
-    _mm256_storeu_ps(H, has);
-    int best = -1;
-    for (int l = 0; l < 8; l++) {
-        uint32_t h;
-        memcpy(&h, &H[l], sizeof h);
-        if (h && (best < 0 || U[best] * V[l] - V[best] * U[l] > 0)) best = l;
-    }
-    return best < 0 ? W_NONE : (uint32_t)I[best];
+    w_ccw_take(bu[1], bw[1], bi[1], has[1], &bu[0], &bw[0], &bi[0], &has[0]);
+    __m256 u = bu[0], v = bw[0], ix = bi[0], h = has[0];
+    W_CCW_FOLD(u, v, ix, h, W_SWAP128);
+    W_CCW_FOLD(u, v, ix, h, W_SWAP64);
+    W_CCW_FOLD(u, v, ix, h, W_SWAP32);
+    return _mm256_movemask_ps(h) & 1 ? (uint32_t)_mm256_cvtss_f32(ix) : W_NONE;
 }
+#undef W_CCW_FOLD
+#undef W_SWAP128
+#undef W_SWAP64
+#undef W_SWAP32
 #endif
 
 /* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
