@@ -10,9 +10,9 @@
  * result is compared with CGAL's, and the vertex is re-inserted untimed
  * so the next deletion starts from DT(S) again.  With more than one
  * repetition, one more runs first as a warm-up and is dropped when
- * another follows (so a row of 20 ms or more keeps its single run): rows run one after another on the same vertex,
- * and the first runs of a row pay for the caches and branch predictors
- * of the row before.  Without it, auto, the first engine row after
+ * another follows (so a row of 20 ms or more keeps its single run):
+ * rows run one after another on the same vertex, and the first runs of
+ * a row pay for the caches and branch predictors of the row before.  Without it, auto, the first engine row after
  * CGAL's, measured up to 1.5x gift-wrap, the same code run later (moment
  * n = 1024: 2.52 against 1.80 times a re-insertion; cosphere degree
  * [64,96): 3.02 against 1.94), and re-running CGAL's two rows before

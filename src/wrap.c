@@ -1122,6 +1122,17 @@ __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_gues
     return ix[__builtin_ctz(lane)];
 }
 
+/* o of points k .. k + 3 (w_row_o's operations, bit for bit), the rows
+ * taken from (ax, ay, az) and N = (n0, n1, n2): the passes of w_next_avx2
+ * and w_all_behind_avx2.                                                */
+__attribute__((target("avx2"))) static inline __m256d w_o4_avx2(double *const *L, uint32_t k, __m256d ax, __m256d ay,
+                                                                __m256d az, __m256d n0, __m256d n1, __m256d n2)
+{
+    const __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay),
+                  P2 = _mm256_sub_pd(_mm256_loadu_pd(L[2] + k), az);
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
+}
+
 /* w_next with AVX2: four points at a time, o as w_row_o has it (the
  * same operations, bit for bit); a lane of the NaN padding past n is
  * never unsure, never behind, and is returned as n.                     */
@@ -1135,9 +1146,7 @@ __attribute__((target("avx2"))) static uint32_t w_next_avx2(double *const *L, ui
     uint32_t k = from & ~3u;
     unsigned before = (1u << (from - k)) - 1;        /* lanes before `from` */
     for (; k < n; k += 4) {
-        __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
-        __m256d P2 = _mm256_sub_pd(_mm256_loadu_pd(L[2] + k), az);
-        __m256d ok = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
+        const __m256d ok = w_o4_avx2(L, k, ax, ay, az, n0, n1, n2);
         __m256d hit = unsure ? _mm256_cmp_pd(_mm256_andnot_pd(sign, ok), er, _CMP_LE_OQ)
                              : _mm256_cmp_pd(ok, ner, _CMP_NLT_UQ);
         unsigned m = (unsigned)_mm256_movemask_pd(hit) & ~before;
@@ -1352,7 +1361,7 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
  * then the facet is a facet of the hull of the neighbours.              */
 #ifdef W_AVX2
 /* w_all_behind with AVX2: one pass, four points a vector, o as w_next_avx2
- * has it (the same operations, bit for bit), the lanes of x, y, z and
+ * has it (w_o4_avx2), the lanes of x, y, z and
  * from `end` on left out.  w_next_to from each point past a corner took
  * four passes with an exit a pass, most of a hull step's proof on the
  * helix (a knock-out of the proof: -5% a deletion there): in the bench,
@@ -1371,9 +1380,7 @@ __attribute__((target("avx2"))) static int w_all_behind_avx2(double *const *L, u
     __m256i kv = _mm256_setr_epi64x(0, 1, 2, 3);
     __m256d bad = _mm256_setzero_pd();
     for (uint32_t k = 0; k < end; k += 4) {
-        __m256d P0 = _mm256_sub_pd(_mm256_loadu_pd(L[0] + k), ax), P1 = _mm256_sub_pd(_mm256_loadu_pd(L[1] + k), ay);
-        __m256d P2 = _mm256_sub_pd(_mm256_loadu_pd(L[2] + k), az);
-        __m256d ok = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
+        const __m256d ok = w_o4_avx2(L, k, ax, ay, az, n0, n1, n2);
         /* a lane before end, not a corner, not surely behind            */
         const __m256i corner = _mm256_or_si256(_mm256_or_si256(_mm256_cmpeq_epi64(kv, vx), _mm256_cmpeq_epi64(kv, vy)),
                                                _mm256_cmpeq_epi64(kv, vz));
@@ -1467,6 +1474,8 @@ __attribute__((target("avx2,fma"))) static uint32_t w_inf_f32(float *const *F, u
         /* a point: not a, b, nor the NaN padding                        */
         const __m256 notab = _mm256_and_ps(_mm256_cmp_ps(kv, fa, _CMP_NEQ_OQ), _mm256_cmp_ps(kv, fb, _CMP_NEQ_OQ));
         const __m256 pt = _mm256_and_ps(notab, _mm256_cmp_ps(u, u, _CMP_ORD_Q));
+        /* set c, named: taken as &bu[c], the sets went through the stack
+         * (28 stack accesses in the function against 22)                 */
         if (c) w_ccw_take(u, wv, kv, pt, &bu[1], &bw[1], &bi[1], &has[1]);
         else w_ccw_take(u, wv, kv, pt, &bu[0], &bw[0], &bi[0], &has[0]);
         kv = _mm256_add_ps(kv, eight);
