@@ -133,7 +133,12 @@ struct dd_wrap {
     /* the facet table (w_fslot_of): triangle -> its facet record        */
     struct w_fslot *fs;
     uint32_t fs_alloc, fs_mask, fs_gen, fs_shift;
-    int fs_sets;                  /* keys are sets of local numbers       */
+    uint64_t *code;               /* code[k]: local number k's word (w_fkey),
+                                     made for k < ncode                   */
+    uint32_t ncode;
+    const uint64_t *kword;        /* the keys' words (w_fkey): w_bit_words,
+                                     or code from 64 neighbours on        */
+    uint32_t gf[3];               /* alpha^ncode, alpha^3ncode, alpha^5ncode */
     /* facet records */
     uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
     uint32_t *own;                /* fill facet 4k+j (facet j of the k-th
@@ -168,7 +173,7 @@ void dd_wrap_free(struct dd_wrap *w)
     free(w->o); free(w->tmp); free(w->lexr); free(w->loc);
     free(w->fs);
     free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack); free(w->lcell); free(w->keep);
-    free(w->adj); free(w->nadj); free(w->seen); free(w->cand);
+    free(w->adj); free(w->nadj); free(w->seen); free(w->cand); free(w->code);
     free(w);
 }
 
@@ -209,38 +214,97 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
 }
 
 /* A triangle's rank in a canonical order (its sorted local numbers, 21
- * bits each): picks the link triangle the wrap starts from, and keys the
- * facet table from 64 neighbours on.                                    */
+ * bits each): picks the link triangle the wrap starts from.            */
 static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
 {
     dd_sort3u(&a, &b, &c);
     return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
 }
 
-/* The facet table.  A triangle's key is the set of its local numbers, a
- * bit each, when they fit in 64 bits (n < 64, the infinite vertex n
- * included), else w_tri_key: no sorting of the corners (dd_sort3u, no
- * branches but a dozen operations) where most wraps are, and one
- * 64-bit compare a probe.  Open addressing, at most half full; every
- * record has its entry, so the table grows with the records and takes
- * them again (w_ftab_grow).  Against the vertex-triple hash of mesh.h
- * (with gid[n] and the inline w_reserve_recs): uniform degree 24-31,
- * 60.8k -> 57.0k instructions a deletion, deletion / re-insertion
- * 1.95 -> 1.85 (8 alternated runs of 100 vertices); helix n = 4 000,
- * degree 64-127, 230k -> 226k and 1.99 -> 1.89 (sorted keys there).
- * Keys that are symmetric functions of the corners (sum, sum of squares
- * and product, for n < 1024: no sort either) took 0.9% more
- * instructions than sorting on the helix; the same table probed with
- * one branch (& for &&), a quarter full, took more instructions and
- * ran no faster.                                                       */
+/* The facet table.  A triangle's key (w_fkey) is the exclusive or of
+ * its corners' words, kword[k], which tells sets of three local numbers
+ * apart: no sorting of the corners, and one 64-bit compare a probe.
+ *  - Below 64 neighbours (the infinite vertex n included), bit k.
+ *  - From 64 on, the code words of dd_wrap_code_words.  Before them the
+ *    key was the sorted corners (w_tri_key), whose sorting (dd_sort3u,
+ *    no branches but a dozen operations) was 5.8% of the instructions
+ *    of a deletion at bunny degree 72 (callgrind); with the code words,
+ *    190k -> 182k instructions a deletion there, 17.55M -> 17.58M for
+ *    100 deletions of a uniform vertex of degree 57 (the bits alike,
+ *    read from w_bit_words).  In time, bunny degree 72 (one vertex),
+ *    three runs of scripts/abbench.sh, 16, 30 and 40 runs a binary:
+ *    +0.049 +- 0.040, +0.043 +- 0.035, -0.015 +- 0.034, no difference
+ *    the bench can tell.
+ * Beyond DD_WRAP_CODE_LEN - 1 neighbours there are no words: the wrap
+ * declines (dd_wrap_fill).  In w_run a cell's facets take the key of its
+ * four corners less one (a word is its own inverse under ^).
+ * Open addressing, at most half full; every record has its entry, so
+ * the table grows with the records and takes them again (w_ftab_grow).
+ * Against the vertex-triple hash of mesh.h (with gid[n] and the inline
+ * w_reserve_recs): uniform degree 24-31, 60.8k -> 57.0k instructions a
+ * deletion, deletion / re-insertion 1.95 -> 1.85 (8 alternated runs of
+ * 100 vertices); helix n = 4 000, degree 64-127, 230k -> 226k and 1.99
+ * -> 1.89 (sorted keys there).  Keys that are symmetric functions of the
+ * corners (sum, sum of squares and product, for n < 1024: no sort
+ * either) took 0.9% more instructions than sorting on the helix; the
+ * same table probed with one branch (& for &&), a quarter full, took
+ * more instructions and ran no faster.                                 */
 struct w_fslot {
     uint64_t key;
     uint32_t rec, gen;            /* used iff gen == w->fs_gen            */
 };
 
+#define W_CODE_M 21
+#define W_CODE_POLY ((1u << W_CODE_M) | (1u << 2) | 1u)   /* x^21 + x^2 + 1 */
+_Static_assert(DD_WRAP_CODE_LEN == (1u << W_CODE_M) - 1, "wrap: the code's length");
+
+static inline uint32_t w_gf_times_alpha(uint32_t x, int times)
+{
+    for (int i = 0; i < times; i++) {
+        x <<= 1;
+        if (x >> W_CODE_M) x ^= W_CODE_POLY;
+    }
+    return x;
+}
+
+/* Word k (see wrap.h) is (alpha^k, alpha^3k, alpha^5k), 21 bits each,
+ * alpha a root of x^21 + x^2 + 1 in GF(2^21); gf holds alpha^from,
+ * alpha^3from, alpha^5from ({1, 1, 1} for from = 0), and then those of
+ * count.                                                                */
+void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t gf[3])
+{
+    for (uint32_t k = from; k < count; k++) {
+        code[k] = (uint64_t)gf[0] | (uint64_t)gf[1] << W_CODE_M | (uint64_t)gf[2] << (2 * W_CODE_M);
+        gf[0] = w_gf_times_alpha(gf[0], 1);
+        gf[1] = w_gf_times_alpha(gf[1], 3);
+        gf[2] = w_gf_times_alpha(gf[2], 5);
+    }
+}
+
+/* The code words for local numbers below count (< DD_WRAP_CODE_LEN),
+ * made once: the wrap keeps them for the next deletions.               */
+static dd_status w_code_reserve(struct dd_wrap *w, uint32_t count)
+{
+    if (count <= w->ncode) return DD_OK;
+    if (!grow((void **)&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
+    if (w->ncode == 0) w->gf[0] = w->gf[1] = w->gf[2] = 1;
+    dd_wrap_code_words(w->code, w->ncode, count, w->gf);
+    w->ncode = count;
+    return DD_OK;
+}
+
+/* The words below 64 neighbours: bit k. */
+static const uint64_t w_bit_words[64] = {
+#define W_B4(k) 1ull << (k), 1ull << ((k) + 1), 1ull << ((k) + 2), 1ull << ((k) + 3)
+#define W_B16(k) W_B4(k), W_B4((k) + 4), W_B4((k) + 8), W_B4((k) + 12)
+    W_B16(0), W_B16(16), W_B16(32), W_B16(48)
+#undef W_B16
+#undef W_B4
+};
+
 static inline uint64_t w_fkey(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
 {
-    return w->fs_sets ? (1ull << a | 1ull << b | 1ull << c) : w_tri_key(a, b, c);
+    return w->kword[a] ^ w->kword[b] ^ w->kword[c];
 }
 
 static inline struct w_fslot *w_fprobe(const struct dd_wrap *w, uint64_t key)
@@ -257,7 +321,7 @@ static dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
     dd_status s = dd_gen_table_reset(&fs, &w->fs_alloc, &w->fs_gen, &w->fs_mask, 2 * expect, sizeof *w->fs);
     w->fs = fs;
     w->fs_shift = 64u - (uint32_t)__builtin_popcount(w->fs_mask);
-    w->fs_sets = w->n < 64;
+    w->kword = w->n < 64 ? w_bit_words : w->code;   /* made for n + 1 (dd_wrap_fill) */
     return s;
 }
 
@@ -1962,12 +2026,13 @@ static dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, 
             nlink++;
         }
         if ((s = w_reserve_recs(w, 3)) != DD_OK) return s;
-        /* facet j's key: the cell's set of local numbers less lv[j]      */
-        const uint64_t set = w->fs_sets ? 1ull << a | 1ull << b | 1ull << e | 1ull << p : 0;
+        uint64_t key[3];                             /* facet j's: the cell's less lv[j] */
+        const uint64_t *kw = w->kword, set = kw[a] ^ kw[b] ^ kw[e] ^ kw[p];
+        for (uint32_t j = 0; j < 3; j++) key[j] = set ^ kw[lv[j]];
         for (uint32_t j = 0; j < 3; j++) {
             uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
             int found;
-            uint32_t *val = w_fslot_of(w, w->fs_sets ? set & ~(1ull << lv[j]) : w_tri_key(f0, f1, f2), &found);
+            uint32_t *val = w_fslot_of(w, key[j], &found);
             if (found) {                         /* its other side is known */
                 uint32_t o = *val;
                 if (w->closed[o]) W_WRONG("a triangle bounds three cells");
@@ -2049,6 +2114,12 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
     if (s == DD_OK) s = dd_vec_room(&d->order, 1);
     if (s != DD_OK) return s;
+    if (d->order.n + 1 >= DD_WRAP_CODE_LEN) {        /* no keys (w_fkey) */
+        d->wrap_how = DD_WRAP_DECLINED;
+        *declined = 1;
+        return DD_OK;
+    }
+    if (d->order.n >= 64 && (s = w_code_reserve(w, (uint32_t)d->order.n + 1)) != DD_OK) return s;
     d->fill.n = 0;                       /* no fill cell made yet (w_drop_fill) */
     w->ncell0 = t->ncell;
     DD_PHASE_BEGIN(d);

@@ -42,8 +42,9 @@
  * star written back and the new cells given back, the mesh as it was,
  * d->fill empty) for a cavity of 40 neighbours or more, not all on one
  * sphere, whose guess is refuted or whose exact tests pass the budget
- * (wrap.c, W_EXACT_FROM), and for the flat hull cases that its checks do
- * not settle (every neighbour in one plane; wrap.c, W_BAIL).  From
+ * (wrap.c, W_EXACT_FROM), for the flat hull cases that its checks do
+ * not settle (every neighbour in one plane; wrap.c, W_BAIL), and from
+ * DD_WRAP_CODE_LEN - 1 neighbours on (no keys for its facet table).  From
  * wide_below neighbours on it does not try the wide guess, so it
  * declines there too unless a narrow guess holds (or the neighbours are
  * cospherical: the scans, whose in-sphere tests are the perturbation's
@@ -55,5 +56,22 @@
 dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined);
 
 void dd_wrap_free(struct dd_wrap *w);
+
+/* The facet table's keys from 64 neighbours on (wrap.c, w_fkey): the
+ * exclusive or of three words, one per local number k, k < 2^21 - 1.
+ * Two distinct sets of three numbers have distinct keys: were they
+ * equal, the set E of the numbers in one set and not the other (2, 4 or
+ * 6 of them) would have sum over k in E of x_k^j = 0 for j = 1, 3, 5,
+ * where word k is (x_k, x_k^3, x_k^5), x_k = alpha^k in GF(2^21), and
+ * so for j = 2, 4, 6 too (squaring is additive in characteristic 2): a
+ * Vandermonde system in at most six distinct nonzero x_k (alpha is
+ * primitive: tests, wrap-code) with a nonzero solution, which has none.
+ * (The words are the columns of the parity checks of a binary BCH code
+ * of designed distance 7.)  So a wrap declines from DD_WRAP_CODE_LEN - 1
+ * neighbours on, where the words run out.
+ * Writes words from .. count - 1 into code; gf: the state, {1, 1, 1}
+ * for from = 0, left for count.                                         */
+#define DD_WRAP_CODE_LEN ((1u << 21) - 1)
+void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t gf[3]);
 
 #endif
