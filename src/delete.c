@@ -124,7 +124,9 @@ static dd_status collect_star(dd_del *d)
     for (size_t k = 0; k < d->star.n; k++) {
         /* room for the cell's three other vertices and neighbours: one
          * test a cell, none a push                                      */
-        if ((s = dd_vec_room(&d->star, 3)) != DD_OK || (s = dd_vec_room(&d->nbr, 3)) != DD_OK) break;
+        if ((d->star.n + 3 > d->star.cap || d->nbr.n + 3 > d->nbr.cap) &&
+            ((s = dd_vec_room(&d->star, 3)) != DD_OK || (s = dd_vec_room(&d->nbr, 3)) != DD_OK))
+            break;
         uint32_t c = d->star.a[k];
         const uint32_t *v = dd_tv(t, c);
         for (uint32_t j = 0; j < 4; j++) {
@@ -492,8 +494,9 @@ static dd_status delete_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
     /* Four independent neighbours, or the forced coplanar-hull fill. */
     d->order.n = 0;
-    for (size_t k = 0; k < d->nbr.n && s == DD_OK; k++) s = dd_vec_push(&d->order, d->nbr.a[k]);
-    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    if ((s = dd_vec_room(&d->order, d->nbr.n)) != DD_OK) return dd_fail(t, s, "out of memory");
+    memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
+    d->order.n = d->nbr.n;
     DD_PHASE_END(d, DD_PH_LINK);
     if (dd_del_pick_base(d, d->order.a, d->order.n) != DD_OK) {
         /* Coplanar finite neighbours: q is on the hull.  If every finite

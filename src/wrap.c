@@ -90,7 +90,7 @@ struct dd_wrap {
     double *lift[4];              /* lift[i][k]: coordinate i of
                                      (x_k - q, |x_k - q|^2), rounded      */
     double *o;                    /* scan scratch, per local number       */
-    uint32_t *tmp;                /* w_sort_ids' and w_lex_ranks' scratch */
+    uint32_t *tmp;                /* w_lex_ranks' scratch                 */
     uint32_t *lexr;               /* lexicographic rank, per local number */
     int lex_ok;                   /* lexr made for this deletion          */
     double ierr, oerr;            /* the filters' error bounds (+inf: off) */
@@ -162,6 +162,8 @@ struct dd_wrap {
     uint8_t *nadj;                /* their number; W_ADJ_FULL: a hub      */
     uint32_t *seen, stamp;        /* seen[k] == stamp: k is a candidate   */
     uint32_t *cand;               /* the candidates of one facet          */
+    int hub_last;                 /* the last link asked had a hub        */
+    uint32_t lead;                /* local number of the least vertex id  */
     int narrower;                 /* test build: shortest lists only      */
 };
 
@@ -213,20 +215,12 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
     return DD_OK;
 }
 
-/* A triangle's rank in a canonical order (its sorted local numbers, 21
- * bits each): picks the link triangle the wrap starts from.            */
-static inline uint64_t w_tri_key(uint32_t a, uint32_t b, uint32_t c)
-{
-    dd_sort3u(&a, &b, &c);
-    return (uint64_t)a << 42 | (uint64_t)b << 21 | c;
-}
-
 /* The facet table.  A triangle's key (w_fkey) is the exclusive or of
  * its corners' words, kword[k], which tells sets of three local numbers
  * apart: no sorting of the corners, and one 64-bit compare a probe.
  *  - Below 64 neighbours (the infinite vertex n included), bit k.
  *  - From 64 on, the code words of dd_wrap_code_words.  Before them the
- *    key was the sorted corners (w_tri_key), whose sorting (dd_sort3u,
+ *    key was the sorted corners (21 bits each), whose sorting (dd_sort3u,
  *    no branches but a dozen operations) was 5.8% of the instructions
  *    of a deletion at bunny degree 72 (callgrind); with the code words,
  *    190k -> 182k instructions a deletion there, 17.55M -> 17.58M for
@@ -1425,34 +1419,47 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
  * then the facet is a facet of the hull of the neighbours.              */
 #ifdef W_AVX2
 /* w_all_behind with AVX2: one pass, four points a vector, o as w_next_avx2
- * has it (w_o4_avx2), the lanes of x, y, z and
- * from `end` on left out.  w_next_to from each point past a corner took
- * four passes with an exit a pass, most of a hull step's proof on the
- * helix (a knock-out of the proof: -5% a deletion there): in the bench,
- * dtdel bench --mode quick --dataset helix, degree >= 32, deletion /
- * re-insertion 1.696 -> 1.639 and 1.696 -> 1.656 (8 and 6 alternated
- * runs, standard errors 0.025, 0.02); uniform points, with fewer hull
- * steps: -0.006 +- 0.017 (scripts/abbench.sh, 12 runs).              */
+ * has it (w_o4_avx2), the lanes from `end` on left out.  It counts the
+ * points not surely behind, and compares the count with that of the
+ * corners among them (o of each evaluated again, w_row_o: the same
+ * operations, bit for bit, hence the same answer), rather than leaving
+ * the corners' lanes out by their numbers: 8 of the 20 operations a
+ * vector (uniform degree 57, a hull vertex: 7.7k -> 5.3k instructions a
+ * deletion in this pass, callgrind).  w_next_to from each point past a
+ * corner took four passes with an exit a pass, most of a hull step's
+ * proof on the helix (a knock-out of the proof: -5% a deletion there):
+ * in the bench, dtdel bench --mode quick --dataset helix, degree >= 32,
+ * deletion / re-insertion 1.696 -> 1.639 and 1.696 -> 1.656 (8 and 6
+ * alternated runs, standard errors 0.025, 0.02); uniform points, with
+ * fewer hull steps: -0.006 +- 0.017 (scripts/abbench.sh, 12 runs).     */
 __attribute__((target("avx2"))) static int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y,
                                                              uint32_t z, const double N[4], double oerr)
 {
     const __m256d ax = _mm256_set1_pd(L[0][y]), ay = _mm256_set1_pd(L[1][y]), az = _mm256_set1_pd(L[2][y]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]),
                   ner = _mm256_set1_pd(-oerr);
-    const __m256i vx = _mm256_set1_epi64x(x), vy = _mm256_set1_epi64x(y), vz = _mm256_set1_epi64x(z),
-                  vlast = _mm256_set1_epi64x((long long)end - 1), four = _mm256_set1_epi64x(4);
-    __m256i kv = _mm256_setr_epi64x(0, 1, 2, 3);
-    __m256d bad = _mm256_setzero_pd();
-    for (uint32_t k = 0; k < end; k += 4) {
+    __m256i cnt = _mm256_setzero_si256();            /* per lane: not surely behind */
+    uint32_t k = 0;
+    for (; k + 4 <= end; k += 4) {
         const __m256d ok = w_o4_avx2(L, k, ax, ay, az, n0, n1, n2);
-        /* a lane before end, not a corner, not surely behind            */
-        const __m256i corner = _mm256_or_si256(_mm256_or_si256(_mm256_cmpeq_epi64(kv, vx), _mm256_cmpeq_epi64(kv, vy)),
-                                               _mm256_cmpeq_epi64(kv, vz));
-        const __m256i skip = _mm256_or_si256(corner, _mm256_cmpgt_epi64(kv, vlast));
-        bad = _mm256_or_pd(bad, _mm256_andnot_pd(_mm256_castsi256_pd(skip), _mm256_cmp_pd(ok, ner, _CMP_NLT_UQ)));
-        kv = _mm256_add_epi64(kv, four);
+        cnt = _mm256_sub_epi64(cnt, _mm256_castpd_si256(_mm256_cmp_pd(ok, ner, _CMP_NLT_UQ)));
     }
-    return !_mm256_movemask_pd(bad);
+    if (k < end) {                                   /* the lanes before end */
+        const __m256d ok = w_o4_avx2(L, k, ax, ay, az, n0, n1, n2);
+        const __m256i in = _mm256_cmpgt_epi64(_mm256_set1_epi64x((long long)end),
+                                              _mm256_add_epi64(_mm256_set1_epi64x(k), _mm256_setr_epi64x(0, 1, 2, 3)));
+        cnt = _mm256_sub_epi64(cnt, _mm256_and_si256(in, _mm256_castpd_si256(_mm256_cmp_pd(ok, ner, _CMP_NLT_UQ))));
+    }
+    __m128i c = _mm_add_epi64(_mm256_castsi256_si128(cnt), _mm256_extracti128_si256(cnt, 1));
+    const long long total = _mm_cvtsi128_si64(_mm_add_epi64(c, _mm_unpackhi_epi64(c, c)));
+    const double A[4] = {L[0][y], L[1][y], L[2][y], L[3][y]};
+    const uint32_t corner[3] = {x, y, z};
+    long long corners = 0;
+    for (int i = 0; i < 3; i++) {
+        double P[4];
+        corners += corner[i] < end && !(w_row_o(L, corner[i], A, N, P) < -oerr);
+    }
+    return total == corners;
 }
 #endif
 
@@ -1660,84 +1667,6 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     return best;
 }
 
-#ifdef W_AVX2
-/* Rank sort of distinct ids: each goes to the place given by the number
- * of ids below it, counted eight at a time (the ids biased by 2^31 for
- * the signed compare; the padding, UINT32_MAX, is below none).  O(n^2)
- * compares but no branch on the data, where the insertion sort's inner
- * loop ends on a mispredicted branch for each id.  tmp has room for n
- * rounded up to 8.                                                      */
-__attribute__((target("avx2"))) static void w_rank_sort_avx2(uint32_t *a, size_t n, uint32_t *tmp)
-{
-    const size_t m = (n + 7) & ~(size_t)7;
-    for (size_t i = 0; i < n; i++) tmp[i] = a[i] ^ 0x80000000u;
-    for (size_t i = n; i < m; i++) tmp[i] = 0x7FFFFFFFu;
-    for (size_t i = 0; i < n; i += 4) {             /* four ids a pass; tmp[i + 3] < m */
-        const __m256i v0 = _mm256_set1_epi32((int)tmp[i]), v1 = _mm256_set1_epi32((int)tmp[i + 1]),
-                      v2 = _mm256_set1_epi32((int)tmp[i + 2]), v3 = _mm256_set1_epi32((int)tmp[i + 3]);
-        __m256i b0 = _mm256_setzero_si256(), b1 = b0, b2 = b0, b3 = b0;
-        for (size_t j = 0; j < m; j += 8) {
-            const __m256i x = _mm256_loadu_si256((const __m256i *)(tmp + j));
-            b0 = _mm256_sub_epi32(b0, _mm256_cmpgt_epi32(v0, x));
-            b1 = _mm256_sub_epi32(b1, _mm256_cmpgt_epi32(v1, x));
-            b2 = _mm256_sub_epi32(b2, _mm256_cmpgt_epi32(v2, x));
-            b3 = _mm256_sub_epi32(b3, _mm256_cmpgt_epi32(v3, x));
-        }
-        const uint32_t r[4] = {w_hsum_epi32(b0), w_hsum_epi32(b1), w_hsum_epi32(b2), w_hsum_epi32(b3)};
-        for (size_t k = i; k < i + 4 && k < n; k++) a[r[k - i]] = tmp[k] ^ 0x80000000u;
-    }
-}
-#endif
-
-/* Sorts the distinct ids a[0..n) increasingly; tmp has room for n rounded
- * up to 8.  With AVX2 a rank sort up to W_RANK_SORT_MAX ids (callgrind,
- * per deletion: uniform degree 24-31, insertion sort 1.6k -> 0.9k
- * instructions, and no mispredicted branch; helix n = 4000, degree
- * 64-127, radix sort 7.6k -> 7.3k).  Else insertion sort while n is
- * small, and least-significant-digit radix sort by bytes, skipping the
- * bytes all ids share (at degree ~150 qsort's compare calls were a tenth
- * of a deletion).                                                       */
-#define W_RANK_SORT_MAX 128
-static void w_sort_ids(uint32_t *a, size_t n, uint32_t *tmp, int avx2)
-{
-#ifdef W_AVX2
-    if (avx2 && n <= W_RANK_SORT_MAX) {
-        w_rank_sort_avx2(a, n, tmp);
-        return;
-    }
-#else
-    (void)avx2;
-#endif
-    if (n <= 32) {
-        for (size_t i = 1; i < n; i++) {
-            uint32_t v = a[i];
-            size_t j = i;
-            for (; j > 0 && a[j - 1] > v; j--) a[j] = a[j - 1];
-            a[j] = v;
-        }
-        return;
-    }
-    uint32_t cnt[4][256];
-    memset(cnt, 0, sizeof cnt);
-    for (size_t i = 0; i < n; i++)
-        for (int b = 0; b < 4; b++) cnt[b][a[i] >> (8 * b) & 255]++;
-    uint32_t *src = a, *dst = tmp;
-    for (int b = 0; b < 4; b++) {
-        if (cnt[b][src[0] >> (8 * b) & 255] == n) continue;    /* one value: already in order */
-        uint32_t sum = 0;
-        for (int v = 0; v < 256; v++) {
-            uint32_t c = cnt[b][v];
-            cnt[b][v] = sum;
-            sum += c;
-        }
-        for (size_t i = 0; i < n; i++) dst[cnt[b][src[i] >> (8 * b) & 255]++] = src[i];
-        uint32_t *x = src;
-        src = dst;
-        dst = x;
-    }
-    if (src != a) memcpy(a, src, n * sizeof *a);
-}
-
 static dd_status w_get(dd_del *d, struct dd_wrap **out)
 {
     if (!d->wrap) {
@@ -1799,16 +1728,20 @@ static void w_drop_fill(dd_del *d, struct dd_wrap *w)
 }
 
 /* Opens the link triangles, oriented towards q, as the first records (all
- * in the table) and returns the record the wrap starts from, *start: the
- * triangle of least key, rotated to begin with its least local number;
- * for a hull vertex, the least among the triangles through the infinite
- * vertex, so that the wrap's first step is wrap_scan_inf: where it
- * cannot settle the hull (W_BAIL: every neighbour in one plane, or one
- * of its checks failing) the wrap declines before any other work.
- * With the neighbours sorted by id, the whole wrap, and so the order and
- * rotation of the fill cells, does not depend on how the star was stored:
- * the same deletion repeated is the same computation, as with the other
- * strategies.
+ * in the table) and returns the record the wrap starts from, *start: of
+ * the triangles through `lead`, the neighbour of least vertex id (for a
+ * hull vertex the infinite vertex, so that the wrap's first step is
+ * wrap_scan_inf: where it cannot settle the hull, W_BAIL, every
+ * neighbour in one plane or one of its checks failing, the wrap declines
+ * before any other work), the one whose two other corners have the
+ * least ids, rotated to begin with its least id.  That choice goes by
+ * vertex ids, not by the local numbers (the order in which collect_star
+ * met the neighbours), so the whole wrap, and so the order and rotation
+ * of the fill cells, does not depend on how the star was stored: the
+ * same deletion repeated is the same computation (the facet table's
+ * layout and the guesses' lanes apart, which decide nothing).  The
+ * neighbours were sorted by id for that before (a rank sort, 2% of a
+ * deletion at bunny degree 72, callgrind).
  * With hub not NULL it also makes the known neighbours at the start (see
  * w_guess_narrow): the link's edges between finite vertices.  The link
  * triangles make a closed oriented surface, where each edge is met once
@@ -1829,12 +1762,14 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
     if (s != DD_OK) return s;
     if ((s = w_reserve_recs(w, d->star.n)) != DD_OK) return s;
     if (hub) memset(w->nadj, 0, n * sizeof *w->nadj);
+    const int puts = hub && w->hub_last;             /* else count them (see below) */
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
+    const uint32_t *gid = d->order.a;                /* gid[inf] = DD_INF, above all */
     /* The least key is on a triangle through `lead`: for a hull vertex the
      * infinite vertex (the triangles through it rank first), else local
      * number 0, the least (each neighbour is a corner of the link).     */
-    const uint32_t lead = d->on_hull ? inf : 0;
+    const uint32_t lead = d->on_hull ? inf : w->lead;
     /* Every vertex of a star cell but q is a neighbour (collect_star), so
      * w->loc holds the local number of each finite link vertex.         */
     for (size_t k = 0; k < d->star.n; k++) {
@@ -1846,33 +1781,51 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
             uint32_t g = v[dd_facet[i][j]];
             lv[j] = g == DD_INF ? inf : w->loc[g];
         }
-        if (hub)
+        if (puts)
             for (int j = 0; j < 3; j++) {
                 uint32_t u = lv[j == 2 ? 0 : j + 1];
                 if (lv[j] != inf && u != inf) w_adj_put(w, lv[j], u);
+            }
+        else if (hub)
+            for (int j = 0; j < 3; j++) {
+                uint32_t u = lv[j == 2 ? 0 : j + 1];
+                if (lv[j] != inf && u != inf) w->nadj[lv[j]] = (uint8_t)(w->nadj[lv[j]] + (w->nadj[lv[j]] < W_ADJ_FULL));
             }
         int found;
         uint32_t *val = w_fslot_of(w, w_fkey(w, lv[0], lv[1], lv[2]), &found);
         if (found) return w_broken(d, "a link triangle appears twice");
         if ((lv[0] == lead) | (lv[1] == lead) | (lv[2] == lead)) {
-            uint64_t key = w_tri_key(lv[0], lv[1], lv[2]);
+            /* the ids of the other two corners (the lead's own is the largest
+             * of the three, DD_INF, or the least): least, then largest */
+            uint32_t g0 = gid[lv[0]], g1 = gid[lv[1]], g2 = gid[lv[2]];
+            dd_sort3u(&g0, &g1, &g2);
+            uint64_t key = lead == inf ? (uint64_t)g0 << 32 | g1 : (uint64_t)g1 << 32 | g2;
             if (key < kmin) { kmin = key; rmin = w->nrec; }
         }
         w->out[w->nrec] = dd_tn(t, c)[(uint32_t)i];
         w_open(w, val, lv[0], lv[1], lv[2], W_NONE);
     }
     if (w->nrec == 0) return w_broken(d, "no link triangle");
-    uint32_t *st = w->tri[rmin];
-    while (st[0] > st[1] || st[0] > st[2]) {      /* rotate: same orientation */
-        uint32_t x0 = st[0];
-        st[0] = st[1]; st[1] = st[2]; st[2] = x0;
-    }
-    *start = rmin;
     if (hub) {
         /* a pass of its own: testing each put cost 25% more (callgrind)  */
         *hub = 0;
         for (uint32_t k = 0; k < n && !*hub; k++) *hub = w->nadj[k] == W_ADJ_FULL;
+        if (*hub && !puts) {                     /* the lists, from the records */
+            memset(w->nadj, 0, n * sizeof *w->nadj);
+            for (uint32_t r = 0; r < w->nrec; r++)
+                for (int j = 0; j < 3; j++) {
+                    uint32_t x = w->tri[r][j], u = w->tri[r][j == 2 ? 0 : j + 1];
+                    if (x != inf && u != inf) w_adj_put(w, x, u);
+                }
+        }
+        w->hub_last = *hub;
     }
+    uint32_t *st = w->tri[rmin];
+    while (gid[st[0]] > gid[st[1]] || gid[st[0]] > gid[st[2]]) {   /* rotate: same orientation */
+        uint32_t x0 = st[0];
+        st[0] = st[1]; st[1] = st[2]; st[2] = x0;
+    }
+    *start = rmin;
     return DD_OK;
 }
 
@@ -2124,8 +2077,8 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     w->ncell0 = t->ncell;
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
-    /* The sanitizer build of the tests takes the plain C code (scans,
-     * sort) for input points of odd index, so that both are tested with
+    /* The sanitizer build of the tests takes the plain C code (scans)
+     * for input points of odd index, so that both are tested with
      * the same inputs.  Its choices below go by the input index too, which
      * the tests pick vertices by.                                         */
 #ifdef DD_TEST_BUILD
@@ -2134,13 +2087,14 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
 #else
     w->avx2 = w->has_avx2;
 #endif
-    w_sort_ids(d->order.a, d->order.n, w->tmp, w->avx2);
     d->order.a[d->order.n] = DD_INF;     /* DD_INF's local number is n: gid[n] */
     const uint32_t *gid = d->order.a;
     const uint32_t n = w->n = (uint32_t)d->order.n;
+    w->lead = 0;                         /* the neighbour of least id (w_open_link) */
     for (uint32_t k = 0; k < n; k++) {
         w->pt[k] = dd_pt(t, gid[k]);
         w->loc[gid[k]] = k;
+        w->lead = gid[k] < gid[w->lead] ? k : w->lead;
     }
     w_lift(w, d->qp);
     w->unf0 = w_unfiltered(&d->qdt->pred);

@@ -38,7 +38,7 @@
 /* Makes the fill of the cavity of d->q in the mesh (d->fill), over the
  * star's cells and past them in new ones, glued to each other, and the
  * sew's matching (d->sew_out; d->fill_in_mesh); d->order holds d->nbr
- * and is sorted by vertex id.  It declines (*declined = 1, DD_OK; the
+ * (its order is the wrap's local numbering).  It declines (*declined = 1, DD_OK; the
  * star written back and the new cells given back, the mesh as it was,
  * d->fill empty) for a cavity of 40 neighbours or more, not all on one
  * sphere, whose guess is refuted or whose exact tests pass the budget
