@@ -124,9 +124,7 @@ static dd_status collect_star(dd_del *d)
     for (size_t k = 0; k < d->star.n; k++) {
         /* room for the cell's three other vertices and neighbours: one
          * test a cell, none a push                                      */
-        if ((d->star.n + 3 > d->star.cap || d->nbr.n + 3 > d->nbr.cap) &&
-            ((s = dd_vec_room(&d->star, 3)) != DD_OK || (s = dd_vec_room(&d->nbr, 3)) != DD_OK))
-            break;
+        if ((s = dd_vec_room(&d->star, 3)) != DD_OK || (s = dd_vec_room(&d->nbr, 3)) != DD_OK) break;
         uint32_t c = d->star.a[k];
         const uint32_t *v = dd_tv(t, c);
         for (uint32_t j = 0; j < 4; j++) {

@@ -1344,6 +1344,17 @@ static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
     w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
 }
 
+/* The known neighbours that link triangle tr gives: each corner the next
+ * one, between finite vertices (inf: the infinite vertex's number; read
+ * from w->n it cost 0.9% of a deletion on the moment curve, n = 1024).  */
+static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
+{
+    for (int j = 0; j < 3; j++) {
+        uint32_t u = tr[j == 2 ? 0 : j + 1];
+        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
+    }
+}
+
 /* Whether v is among k's known neighbours (k not a hub).                */
 static inline int w_adj_has(const struct dd_wrap *w, uint32_t k, uint32_t v)
 {
@@ -1423,9 +1434,9 @@ static uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint3
  * points not surely behind, and compares the count with that of the
  * corners among them (o of each evaluated again, w_row_o: the same
  * operations, bit for bit, hence the same answer), rather than leaving
- * the corners' lanes out by their numbers: 8 of the 20 operations a
- * vector (uniform degree 57, a hull vertex: 7.7k -> 5.3k instructions a
- * deletion in this pass, callgrind).  w_next_to from each point past a
+ * the corners' lanes out by their numbers: 19 instructions a vector
+ * where there were 24 (uniform degree 57, a hull vertex: 7.7k -> 6.9k
+ * instructions a deletion in this pass, callgrind).  w_next_to from each point past a
  * corner took four passes with an exit a pass, most of a hull step's
  * proof on the helix (a knock-out of the proof: -5% a deletion there):
  * in the bench, dtdel bench --mode quick --dataset helix, degree >= 32,
@@ -1766,9 +1777,9 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
     const uint32_t *gid = d->order.a;                /* gid[inf] = DD_INF, above all */
-    /* The least key is on a triangle through `lead`: for a hull vertex the
-     * infinite vertex (the triangles through it rank first), else local
-     * number 0, the least (each neighbour is a corner of the link).     */
+    /* The start is a triangle through `lead`: for a hull vertex the
+     * infinite vertex, else the neighbour of least id (each neighbour is
+     * a corner of the link).                                             */
     const uint32_t lead = d->on_hull ? inf : w->lead;
     /* Every vertex of a star cell but q is a neighbour (collect_star), so
      * w->loc holds the local number of each finite link vertex.         */
@@ -1782,10 +1793,7 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
             lv[j] = g == DD_INF ? inf : w->loc[g];
         }
         if (puts)
-            for (int j = 0; j < 3; j++) {
-                uint32_t u = lv[j == 2 ? 0 : j + 1];
-                if (lv[j] != inf && u != inf) w_adj_put(w, lv[j], u);
-            }
+            w_adj_link(w, lv, inf);
         else if (hub)
             for (int j = 0; j < 3; j++) {
                 uint32_t u = lv[j == 2 ? 0 : j + 1];
@@ -1807,16 +1815,16 @@ static dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int 
     }
     if (w->nrec == 0) return w_broken(d, "no link triangle");
     if (hub) {
-        /* a pass of its own: testing each put cost 25% more (callgrind)  */
+        /* Without the last link's hub the puts were counted only (on
+         * uniform points and the bunny, no hubs, they were a third of this
+         * function); the lists are made here, from the records, where a
+         * count shows a hub.  A pass of its own: testing each put cost 25%
+         * more (callgrind).                                              */
         *hub = 0;
         for (uint32_t k = 0; k < n && !*hub; k++) *hub = w->nadj[k] == W_ADJ_FULL;
         if (*hub && !puts) {                     /* the lists, from the records */
             memset(w->nadj, 0, n * sizeof *w->nadj);
-            for (uint32_t r = 0; r < w->nrec; r++)
-                for (int j = 0; j < 3; j++) {
-                    uint32_t x = w->tri[r][j], u = w->tri[r][j == 2 ? 0 : j + 1];
-                    if (x != inf && u != inf) w_adj_put(w, x, u);
-                }
+            for (uint32_t r = 0; r < w->nrec; r++) w_adj_link(w, w->tri[r], inf);
         }
         w->hub_last = *hub;
     }
