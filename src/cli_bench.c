@@ -32,10 +32,11 @@
  * with the default strategy (dd_delete) and re-inserts it (dd_reinsert),
  * both timed; the same warm-up and median as the other rows, but up to
  * PAIR_REPS repetitions kept, while the deletions and re-insertions take
- * under pair_budget_s together (with --reps 1, the one cold run).  Its match column is 1 iff the local
- * canonical hash around the neighbours after the re-insertion equals the
- * one taken on the intact DT(S) before the vertex's rows ran (a broken
- * insertion is a mismatch); tets_created and the phases are empty.
+ * under pair_budget_s together (with --reps 1, the one cold run).  Its
+ * match column is 1 iff the local canonical hash around the neighbours
+ * after the re-insertion equals the one taken on the intact DT(S) before
+ * the vertex's rows ran (a broken insertion is a mismatch); tets_created
+ * and the phases are empty.
  * Before it comes the paired row, "<default>-paired" (auto-paired): the
  * median of those deletions, each timed right before the re-insertion it
  * is compared with, where the default's own row ran up to seconds
@@ -225,8 +226,9 @@ static double kept_median(double *us, int reps, int max_reps)
  * percent.  With the five of the other rows, the quotient at the bunny's
  * one vertex of degree >= 64 (6873, bucket [64,96)) read 1.62-2.19 over
  * 16 bench runs, two of them above 2; with 15 it read 1.74-1.92, 14 of
- * the 16 within 1.74-1.77 (same binary, alternated).  The runs stop
- * once the deletions and re-insertions took pair_budget_s together.   */
+ * the 16 within 1.73-1.77 (same binary, the 16 runs of each one after
+ * the other).  The runs stop once the deletions and re-insertions took
+ * pair_budget_s together.                                             */
 #define PAIR_REPS 15
 static const double pair_budget_s = 40e-3;
 
