@@ -17,7 +17,7 @@ PREFIX  ?= /usr/local
 CC      ?= gcc
 CXX     ?= g++
 WARN     = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion -Wstrict-prototypes -Wmissing-prototypes
-CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L
+CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L -Isrc -I.
 # -ffp-contract=off: the predicate filters' error bounds assume no FMA fusion.
 # -O3 for our engine and for the CGAL shim alike (CGAL's own CMake Release
 # default), so the bench compares like with like.
@@ -32,13 +32,15 @@ CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
 CXXFLAGS_A = -std=c++17 -O1 -fsanitize=address,undefined
 LIBS     = -lgmp -lmpfr -lm
 
-LIB_SRC  = $(wildcard src/*.c) $(wildcard variants/*.c)
-LIB_SRC := $(filter-out src/cli%,$(LIB_SRC))
-CLI_SRC  = $(wildcard src/cli*.c)
+# The engine's layers, bottom up (docs/architecture.md): each folder of
+# src/ uses only those before it; variants/ and src/api.c sit on top.
+LAYERS   = geom mesh delete wrap
+LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
+CLI_SRC  = $(wildcard src/cli/*.c)
 DATA_SRC = datasets/datasets.c
 SHIM_SRC = src/cgal/cgal_shim.cpp
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h datasets/datasets.h
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h datasets/datasets.h
 
 B = build
 A = build/asan
@@ -73,7 +75,7 @@ $(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(B)/obj/sr
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 $(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_R) -Isrc -c $< -o $@.o
+	$(CC) $(CFLAGS_R) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
@@ -87,7 +89,7 @@ $(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(B)/obj/sr
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
 $(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_A) -Isrc -c $< -o $@.o
+	$(CC) $(CFLAGS_A) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
@@ -101,10 +103,10 @@ $(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(B)/obj/sr
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
-$(B)/summarize: scripts/summarize.c src/buckets.h
+$(B)/summarize: scripts/summarize.c src/cli/buckets.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) $< -o $@ -lm
-$(A)/summarize: scripts/summarize.c src/buckets.h
+$(A)/summarize: scripts/summarize.c src/cli/buckets.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) $< -o $@ -lm
 

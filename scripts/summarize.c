@@ -88,7 +88,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 
-#include "../src/buckets.h"
+#include "cli/buckets.h"
 
 #define EXIT_INPUT 1
 #define EXIT_USAGE 2

@@ -17,6 +17,8 @@
  *  - Every function returns a dd_status.  On failure the triangulation is
  *    left exactly as it was, and dd_errmsg() says what went wrong.
  *  - Exported names start with dd_; nothing here keeps global state.
+ *  - Diagnostics for benchmarks and tests (what a deletion did, predicate
+ *    counters, test-build controls) are in dtdel_stats.h, not here.
  */
 #ifndef DTDEL_H
 #define DTDEL_H
@@ -122,78 +124,6 @@ dd_status dd_reinsert(dd_tri *t, uint32_t v);
 /* The strategies, in registry order (i = 0, 1, ... until NULL). */
 const char *dd_variant_name(size_t i);
 const char *dd_variant_description(size_t i);
-
-#define DD_LINKDEG_BUCKETS 16
-
-/* How gift wrapping (wrap.c) went, in dd_delete_stats.wrap. */
-enum {
-    DD_WRAP_NONE,       /* not tried                                       */
-    DD_WRAP_PROVED,     /* guessed fill proved Delaunay and kept           */
-    DD_WRAP_REFUTED,    /* guessed fill refuted; the scans wrapped again   */
-    DD_WRAP_SCANNED,    /* scans only (filters off: coordinates out of range) */
-    DD_WRAP_DECLINED    /* left to the conflict DT                         */
-};
-
-/* Where the wrap's last guess took its candidates (wrap.c,
- * w_guess_narrow), in dd_delete_stats.wrap_guess.                     */
-enum {
-    DD_GUESS_WIDE,      /* every neighbour                                 */
-    DD_GUESS_SHORT,     /* the short lists of known neighbours             */
-    DD_GUESS_TWO_STEP   /* those and their own lists                       */
-};
-
-/* What the last dd_delete did.  Phase times only in counting builds. */
-typedef struct dd_delete_stats {
-    uint32_t degree;          /* neighbours, the infinite vertex included  */
-    int on_hull;
-    int forced_fill;          /* hull vertex with coplanar finite
-                                 neighbours: the framework's forced fill
-                                 ran instead of the strategy             */
-    int wrap;                 /* gift wrapping's course: DD_WRAP_*        */
-    int wrap_guess;           /* its last guess's candidates: DD_GUESS_*  */
-    uint32_t wrap_narrow_refuted; /* narrow guesses refuted before it     */
-    int wrap_integer;         /* 1: the wrap's lifts were integers, each
-                                 of its tests exact in doubles; 2: its
-                                 orientations and cofactors were, and the
-                                 in-sphere tests the filter left exact in
-                                 128-bit integers; 0: neither (wrap.c)    */
-    int wrap_shift_guess;     /* its guess over every neighbour refuted,
-                                 then made again on shifted lifts (nearly
-                                 cospherical neighbours; wrap.c)          */
-    uint32_t wrap_single;     /* guesses answered in single precision
-                                 (wrap.c, w_guess_f32_avx2)               */
-    uint32_t wrap_single_back; /* ... and made in doubles instead          */
-    int wrap_single_refuted;  /* a guess with single-precision answers was
-                                 refuted, then made again in doubles      */
-    uint32_t wrap_hull_single; /* hull facets (the wrap's steps round a
-                                 hull edge) found in single precision and
-                                 proved (wrap.c, w_inf_f32)               */
-    uint32_t wrap_hull_back;  /* ... and found in doubles instead          */
-    uint32_t wrap_expansions; /* the wrap's tests left to the exact
-                                 predicates' expansions                   */
-    uint64_t tets_created;    /* cells built for the cavity (dummies too)  */
-    uint64_t fallbacks;       /* sampling fallbacks of guided strategies   */
-    uint64_t locate_steps;    /* cells tested by point location in the
-                                 conflict DT (guided variants, dtq-only)  */
-    uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* LINKDTDELETE calls by
-                                 the degree of the deleted link vertex:
-                                 index k = degree k for k < 15, last = 15+ */
-    double link_us, locate_us, conflict_us, sew_us;
-} dd_delete_stats;
-void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *s);
-
-/* Statistics: the predicate counts are kept by counting builds
- * (-DDD_COUNTERS), zero otherwise; tets_created and walk_steps (cells
- * crossed by point location) always.                                    */
-typedef struct dd_counters {
-    uint64_t orient_calls, orient_exact;
-    uint64_t insphere_calls, insphere_exact;
-    uint64_t perturbed;            /* exact zeros resolved by perturbation */
-    uint64_t tets_created;
-    uint64_t walk_steps;
-} dd_counters;
-void dd_get_counters(const dd_tri *t, dd_counters *c);
-void dd_reset_counters(dd_tri *t);
 
 /* Bytes held by the triangulation's arrays (capacity, not just use). */
 size_t dd_memory_bytes(const dd_tri *t);

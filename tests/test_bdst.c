@@ -33,7 +33,7 @@
 #define _POSIX_C_SOURCE 200809L
 #endif
 #include "testlib.h"
-#include "bdst.h"
+#include "delete/bdst.h"
 
 #include <math.h>
 #include <time.h>

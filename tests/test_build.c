@@ -111,6 +111,7 @@ int main(int argc, char **argv)
             const uint32_t vs[2] = {3966, 100};
             for (int k = 0; k < 2; k++) {
                 dd_counters c0, c1;
+                tl_controls_for(t, vs[k]);
                 failed += dd_delete(t, vs[k], "auto") != DD_OK;
                 dd_get_counters(t, &c0);
                 failed += dd_reinsert(t, vs[k]) != DD_OK;

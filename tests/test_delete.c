@@ -8,12 +8,9 @@
 #include "testlib.h"
 #include <math.h>
 #include "dtdel.h"
+#include "wrap/wrap.h"
 #include "cgal/cgal_shim.h"
 #include "../datasets/datasets.h"
-
-#ifdef DD_TEST_BUILD
-extern long dd_test_set_fail_at;   /* src/delete.c: dd_delete_set fails at that deletion */
-#endif
 
 typedef struct canon { int32_t *a; size_t n; } canon;
 
@@ -92,6 +89,7 @@ static void single_deletions(tl_state *st, const char *name, const double *pts, 
             const char *var = dd_variant_name(vi);
             tally *ta = &tv[vi];
             ta->total++;
+            tl_controls_for(t, v);
             dd_status s = dd_delete(t, v, var);
             if (refused) {
                 canon now = ours(t);
@@ -171,6 +169,7 @@ static void sequence(tl_state *st, const char *name, const double *pts, uint32_t
         uint32_t v = perm[pass % n];  /* several passes: refused ones get retried */
         if (!dd_is_vertex(t, v)) continue;
         int cg = dd_cgal_remove(g, v);
+        tl_controls_for(t, v);
         dd_status s = dd_delete(t, v, var);
         if (cg != 0) {   /* CGAL refuses: we must refuse too, and change nothing */
             if (s != DD_ERR_DIMENSION) { ok = 0; snprintf(why, sizeof why, "vertex %u: CGAL refuses, we say %s", v, dd_status_name(s)); }
@@ -274,6 +273,7 @@ static int delete_each(dd_tri *t, uint32_t v, const char *const vars[2], canon g
                        char *why, size_t nwhy)
 {
     for (int k = 0; k < 2; k++) {
+        tl_controls_for(t, v);
         dd_status s = dd_delete(t, v, vars[k]);
         dd_last_delete_stats(t, &ds[k]);
         got[k] = ours(t);
@@ -321,9 +321,9 @@ static void auto_least_degree(tl_state *st, uint32_t n)
                      same(got[k], ref) ? "equals" : "differs from", (unsigned long long)ds[k].fallbacks);
             ok = 0;
         }
-    tl_check(st, ok && ds[0].wrap == DD_WRAP_DECLINED && ds[0].tets_created < ds[1].tets_created, name,
+    tl_check(st, ok && ds[0].strategy[DD_WS_COURSE] == DD_WRAP_DECLINED && ds[0].tets_created < ds[1].tets_created, name,
              "%s; auto's wrap: course %d (declined: %d); cells built: least degree %llu, random %llu", why,
-             ds[0].wrap, DD_WRAP_DECLINED, (unsigned long long)ds[0].tets_created,
+             ds[0].strategy[DD_WS_COURSE], DD_WRAP_DECLINED, (unsigned long long)ds[0].tets_created,
              (unsigned long long)ds[1].tets_created);
     free(got[0].a);
     free(got[1].a);
@@ -358,9 +358,9 @@ static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
     dd_delete_stats ds[2];
     memset(ds, 0, sizeof ds);
     int ok = dd_degree(t, v) >= 2000 && delete_each(t, v, vars, got, ds, why, sizeof why);
-    tl_check(st, ok && same(got[0], got[1]) && ds[1].wrap == DD_WRAP_PROVED, name,
+    tl_check(st, ok && same(got[0], got[1]) && ds[1].strategy[DD_WS_COURSE] == DD_WRAP_PROVED, name,
              "%s; results %s; auto's wrap: course %d (proved: %d)", why, same(got[0], got[1]) ? "equal" : "differ",
-             ds[1].wrap, DD_WRAP_PROVED);
+             ds[1].strategy[DD_WS_COURSE], DD_WRAP_PROVED);
     free(got[0].a);
     free(got[1].a);
     dd_free(t);
@@ -390,6 +390,7 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
     for (uint32_t v = 0; v < np && tested < 40; v += 7) {
         if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 256) continue;
         size_t before = dd_num_tets(t), star = 2 * (size_t)dd_degree(t, v) - 4;
+        tl_controls_for(t, v);
         if (dd_delete(t, v, variant) != DD_OK) {
             snprintf(why, sizeof why, "deleting %u: %s", v, dd_errmsg(t));
             ok = 0;
@@ -403,8 +404,8 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
          * single precision, made again in doubles: the sanitizer build
          * spoils some of those, wrap_single_course) built cells it
          * dropped                                                        */
-        if (ds_.wrap != DD_WRAP_REFUTED && ds_.wrap_narrow_refuted == 0 && !ds_.wrap_shift_guess &&
-            !ds_.wrap_single_refuted && ds_.tets_created != fill) {
+        if (ds_.strategy[DD_WS_COURSE] != DD_WRAP_REFUTED && ds_.strategy[DD_WS_NARROW_REFUTED] == 0 && !ds_.strategy[DD_WS_SHIFT_GUESS] &&
+            !ds_.strategy[DD_WS_SINGLE_REFUTED] && ds_.tets_created != fill) {
             snprintf(why, sizeof why, "vertex %u (degree %u, hull %d): %llu cells built, fill %zu", v,
                      ds_.degree, ds_.on_hull, (unsigned long long)ds_.tets_created, fill);
             ok = 0;
@@ -455,12 +456,13 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     if (dd_cgal_remove(g, v)) return 0;
     canon ref = theirs(g);
     dd_cgal_reinsert(g, v);
+    tl_controls_for(t, v);
     dd_status s = dd_delete(t, v, variant);
     canon now = ours(t);
     dd_last_delete_stats(t, out);
-    course[out->wrap]++;
+    course[out->strategy[DD_WS_COURSE]]++;
     if ((s != DD_OK || !same(now, ref) || dd_check(t) != DD_OK) && (*bad)++ == 0)
-        snprintf(why, nwhy, "deleting %u (course %d): %s", v, out->wrap,
+        snprintf(why, nwhy, "deleting %u (course %d): %s", v, out->strategy[DD_WS_COURSE],
                  s != DD_OK ? dd_errmsg(t) : "differs from CGAL");
     free(now.a);
     free(ref.a);
@@ -514,11 +516,11 @@ static void wrap_course(tl_state *st, const char *tn, const double *pts, uint32_
         memset(&ds_, 0, sizeof ds_);
         if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
         done++;
-        shifted += ds_.wrap == DD_WRAP_PROVED && ds_.wrap_shift_guess;
-        if (lifts < 0 || ds_.wrap == DD_WRAP_NONE) continue;   /* forced fill: no wrap */
-        wrong_lifts += lifts == 2 ? ds_.wrap_integer == 0 : ds_.wrap_integer != lifts;
-        cofactors += ds_.wrap_integer == 2;
-        if (ds_.wrap_integer) expansions += ds_.wrap_expansions;
+        shifted += ds_.strategy[DD_WS_COURSE] == DD_WRAP_PROVED && ds_.strategy[DD_WS_SHIFT_GUESS];
+        if (lifts < 0 || ds_.strategy[DD_WS_COURSE] == DD_WRAP_NONE) continue;   /* forced fill: no wrap */
+        wrong_lifts += lifts == 2 ? ds_.strategy[DD_WS_INTEGER] == 0 : ds_.strategy[DD_WS_INTEGER] != (uint32_t)lifts;
+        cofactors += ds_.strategy[DD_WS_INTEGER] == 2;
+        if (ds_.strategy[DD_WS_INTEGER]) expansions += ds_.strategy[DD_WS_EXPANSIONS];
     }
     int seen = (course[DD_WRAP_PROVED] > 0) | (course[DD_WRAP_REFUTED] > 0) << 1 |
                (course[DD_WRAP_DECLINED] == 0) << 2 | (shifted > 0) << 3;
@@ -582,9 +584,9 @@ static void wrap_narrow_course(tl_state *st, const char *name, const double *pts
         dd_delete_stats ds_;
         if (!dd_is_vertex(t, v) || !wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
         done++;
-        if (ds_.wrap != DD_WRAP_PROVED) continue;
-        kept[ds_.wrap_guess]++;
-        after[ds_.wrap_guess] += ds_.wrap_narrow_refuted > 0;
+        if (ds_.strategy[DD_WS_COURSE] != DD_WRAP_PROVED) continue;
+        kept[ds_.strategy[DD_WS_GUESS]]++;
+        after[ds_.strategy[DD_WS_GUESS]] += ds_.strategy[DD_WS_NARROW_REFUTED] > 0;
     }
     int seen = (kept[DD_GUESS_SHORT] > 0) | (after[DD_GUESS_TWO_STEP] > 0) << 1 | (after[DD_GUESS_WIDE] > 0) << 2;
     tl_check(st, bad == 0 && done > 0 && course[DD_WRAP_DECLINED] == 0 && (seen & want) == want, tn,
@@ -623,14 +625,14 @@ static void wrap_single_course(tl_state *st, const char *name, const double *pts
         memset(&ds_, 0, sizeof ds_);
         if (!wrap_one(t, g, v, variant, course, &bad, why, sizeof why, &ds_)) continue;
         done++;
-        answered += ds_.wrap_single;
+        answered += ds_.strategy[DD_WS_SINGLE];
         if (v % 8 == 0) {
-            kept += ds_.wrap == DD_WRAP_PROVED && ds_.wrap_single > 0 && !ds_.wrap_single_refuted;
-            unspoiled_refuted += ds_.wrap_single_refuted;
-            hull_kept += ds_.wrap_hull_single;
+            kept += ds_.strategy[DD_WS_COURSE] == DD_WRAP_PROVED && ds_.strategy[DD_WS_SINGLE] > 0 && !ds_.strategy[DD_WS_SINGLE_REFUTED];
+            unspoiled_refuted += ds_.strategy[DD_WS_SINGLE_REFUTED];
+            hull_kept += ds_.strategy[DD_WS_HULL_SINGLE];
         } else {
-            spoiled += ds_.wrap_single_refuted, recovered += ds_.wrap_single_refuted && ds_.wrap == DD_WRAP_PROVED;
-            hull_back += ds_.wrap_hull_back;
+            spoiled += ds_.strategy[DD_WS_SINGLE_REFUTED], recovered += ds_.strategy[DD_WS_SINGLE_REFUTED] && ds_.strategy[DD_WS_COURSE] == DD_WRAP_PROVED;
+            hull_back += ds_.strategy[DD_WS_HULL_BACK];
         }
     }
 #ifdef DD_TEST_BUILD
@@ -877,10 +879,11 @@ int main(int argc, char **argv)
         single_deletions(&st, "cosphere-3000-max-degree", p, np, 1, 15, 1, best);
         if (dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
             dd_delete_stats ds_ = {0};
+            tl_controls_for(t, best);
             dd_status s = dd_delete(t, best, "gift-wrap");
             dd_last_delete_stats(t, &ds_);
-            tl_check(&st, s == DD_OK && ds_.wrap != DD_WRAP_DECLINED, "cosphere-3000-max-degree/wrapped",
-                     "status %s, course %d (declined: %d)", dd_status_name(s), ds_.wrap, DD_WRAP_DECLINED);
+            tl_check(&st, s == DD_OK && ds_.strategy[DD_WS_COURSE] != DD_WRAP_DECLINED, "cosphere-3000-max-degree/wrapped",
+                     "status %s, course %d (declined: %d)", dd_status_name(s), ds_.strategy[DD_WS_COURSE], DD_WRAP_DECLINED);
             dd_free(t);
         }
         free(p);
@@ -1076,9 +1079,9 @@ int main(int argc, char **argv)
 #ifdef DD_TEST_BUILD
             /* a failure at the 7th deletion: the six before are undone */
             for (uint32_t i = 0; i < 40; i++) vs[i] = 10 + 2 * i;
-            dd_test_set_fail_at = 6;
+            dd_test_control(t, DD_TEST_SET_FAIL_AT, 7);
             set_refused(&st, "rolled-back", t, vs, 40, "auto", DD_ERR_NOMEM);
-            dd_test_set_fail_at = -1;
+            dd_test_control(t, DD_TEST_SET_FAIL_AT, 0);
 #endif
             tl_check(&st, m == 64 && dd_delete_set(t, vs, 0, NULL) == DD_OK, "delete-set/empty",
                      "layer of %u points; %s", m, dd_errmsg(t));

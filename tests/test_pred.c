@@ -10,7 +10,7 @@
  * 10^5 degenerate tuples.
  */
 #include "testlib.h"
-#include "mesh.h"
+#include "mesh/mesh.h"
 #include "cgal/cgal_shim.h"
 
 #include <math.h>

@@ -7,7 +7,7 @@
  * test_delete.c (moment, helix).
  */
 #include "testlib.h"
-#include "wrap.h"
+#include "wrap/wrap.h"
 
 #define M 21
 #define MASK ((1u << M) - 1)

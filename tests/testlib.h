@@ -15,7 +15,28 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dtdel_stats.h"
+
 typedef struct tl_state { int passed, failed; } tl_state;
+
+/* The test controls (dtdel_stats.h) a test sets before deleting input
+ * vertex v, so that over many deletions every course of the gift wrap is
+ * taken: scalar scans for odd v, single-precision passes only for v of
+ * 0 mod 4 and spoiled for 4 mod 8, narrower guesses for 3 mod 4.  The
+ * test chooses; the engine reads nothing from the input.  Release builds
+ * have no controls and take the default course.                         */
+static inline void tl_controls_for(dd_tri *t, uint32_t v)
+{
+#ifdef DD_TEST_BUILD
+    dd_test_control(t, DD_TEST_SCALAR, v % 2);
+    dd_test_control(t, DD_TEST_NO_SINGLE, v % 4 != 0);
+    dd_test_control(t, DD_TEST_SPOIL_SINGLE, v % 8 == 4);
+    dd_test_control(t, DD_TEST_NARROWER, v % 4 == 3);
+#else
+    (void)t;
+    (void)v;
+#endif
+}
 
 static void tl_check(tl_state *st, int ok, const char *name, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));

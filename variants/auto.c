@@ -49,9 +49,9 @@
  * degree ~15: 1090 vs 1346 over 12 deletions; `dtdel delete --stats`).
  */
 #include "auto.h"
-#include "../src/qsmall.h"
-#include "../src/wrap.h"
-#include "../src/grr.h"
+#include "delete/qsmall.h"
+#include "wrap/wrap.h"
+#include "delete/grr.h"
 
 /* The narrow guesses hold on the curves at every degree of the bench
  * (wrap.c), where wrapping then beats GRR: moment n = 1024, degree

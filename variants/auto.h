@@ -4,7 +4,7 @@
 #ifndef DD_AUTO_H
 #define DD_AUTO_H
 
-#include "../src/delete.h"
+#include "delete/delete.h"
 
 /* auto's choice without gift wrapping: below degree 40 the compact
  * conflict DT, nearest neighbours first; from 40 on, GRR with the link

@@ -8,7 +8,7 @@
  * vertex, so it destroys at least one link triangle).  Robust (only the
  * exact conflict test is used) and O(size of the link) per point.
  */
-#include "../src/qsmall.h"
+#include "delete/qsmall.h"
 
 static dd_status dtq_only_fill(dd_del *d)
 {

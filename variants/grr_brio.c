@@ -15,8 +15,8 @@
  * guide: then the point's BFS-earliest finite link neighbour is used, or,
  * if none precedes it, a counted scan.
  */
-#include "../src/grr.h"
-#include "../src/bdst.h"
+#include "delete/grr.h"
+#include "delete/bdst.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -53,14 +53,16 @@ static int grow(uint32_t **a, size_t n, int zero)
     return 0;
 }
 
+static const dd_scratch_kind brio_kind = {"grr-brio", brio_buf_free};
+
 static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
 {
-    brio_buf *b = d->vscratch;
+    brio_buf *b = dd_del_scratch(d, &brio_kind);
     if (!b) {
         b = calloc(1, sizeof *b);
         if (!b || !(b->ws = dd_bdst_ws_new())) { free(b); return DD_ERR_NOMEM; }
-        d->vscratch = b;
-        d->vscratch_free = brio_buf_free;
+        dd_status s = dd_del_keep_scratch(d, &brio_kind, b);
+        if (s != DD_OK) return s;
     }
     if (b->vcap < d->t->cap_v) {
         size_t n = d->t->cap_v;

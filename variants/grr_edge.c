@@ -9,7 +9,7 @@
  * drawn u with its lowest-degree finite neighbour as guide, or, when no
  * vertex of degree <= 7 is left besides the base points, a random vertex.
  */
-#include "../src/grr.h"
+#include "delete/grr.h"
 
 static uint32_t edge_sample(dd_grr *g, uint32_t *guide)
 {

@@ -6,7 +6,7 @@
  * used a search tree).  Fallback (counted): a random remaining vertex when
  * none of degree <= 7 is left besides the base.
  */
-#include "../src/grr.h"
+#include "delete/grr.h"
 
 static uint32_t hashing_sample(dd_grr *g, uint32_t *guide)
 {

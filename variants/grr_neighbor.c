@@ -4,7 +4,7 @@
  * lowest-degree (finite) link neighbour.  Fallback (counted): a random
  * remaining vertex when none of degree <= 7 is left besides the base.
  */
-#include "../src/grr.h"
+#include "delete/grr.h"
 
 static uint32_t neighbor_sample(dd_grr *g, uint32_t *guide)
 {

@@ -4,7 +4,7 @@
  * the default of dd_delete(..., NULL) and of the CLI: the fastest correct
  * one, as measured by the bench.
  */
-#include "../src/delete.h"
+#include "delete/delete.h"
 
 extern const dd_variant dd_variant_auto, dd_variant_grr_edge, dd_variant_grr_neighbor, dd_variant_grr_hashing,
     dd_variant_guide_only, dd_variant_dtq_only, dd_variant_sew_full, dd_variant_grr_brio,

@@ -4,7 +4,7 @@
  * then its cells in conflict with q are sewn in.  The C analogue of
  * CGAL-rnd: it separates engine speed from algorithm.
  */
-#include "../src/delete.h"
+#include "delete/delete.h"
 
 static dd_status sew_full_fill(dd_del *d)
 {

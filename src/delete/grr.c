@@ -8,7 +8,7 @@
  * triangle guides, and guided point location.  Everything is scratch kept
  * in the deletion context and reused.
  */
-#include "grr.h"
+#include "delete/grr.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -264,14 +264,20 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
 
 /* ---- GRR-CONSTRUCT --------------------------------------------------------- */
 
+static void grr_free_scratch(void *g) { dd_grr_free(g); }
+static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free_scratch};
+
 static dd_status get_grr(dd_del *d, dd_grr **out)
 {
-    if (!d->grr) {
-        d->grr = calloc(1, sizeof *d->grr);
-        if (!d->grr) return DD_ERR_NOMEM;
-        d->grr->d = d;
+    dd_grr *g = dd_del_scratch(d, &grr_kind);
+    if (!g) {
+        g = calloc(1, sizeof *g);
+        if (!g) return DD_ERR_NOMEM;
+        g->d = d;
+        dd_status s = dd_del_keep_scratch(d, &grr_kind, g);
+        if (s != DD_OK) return s;
     }
-    *out = d->grr;
+    *out = g;
     return DD_OK;
 }
 

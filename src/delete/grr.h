@@ -20,8 +20,8 @@
 #ifndef DD_GRR_H
 #define DD_GRR_H
 
-#include "delete.h"
-#include "link.h"
+#include "delete/delete.h"
+#include "delete/link.h"
 
 #define DD_LOWDEG 7   /* "low degree" in the paper's sampling rules */
 

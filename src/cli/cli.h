@@ -7,8 +7,9 @@
 #define DD_CLI_H
 
 #include "dtdel.h"
+#include "dtdel_stats.h"
 #include "cgal/cgal_shim.h"
-#include "../datasets/datasets.h"
+#include "datasets/datasets.h"
 
 #include <stdint.h>
 #include <stdio.h>

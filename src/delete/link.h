@@ -19,7 +19,7 @@
 #ifndef DD_LINK_H
 #define DD_LINK_H
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 #define DD_LINK_EARS_UPTO 12   /* larger holes: fill_by_dt in link.c   */
 

@@ -67,12 +67,14 @@ int dd_orient3d_exp_staged(const double *p, const double *q, const double *r,
 int dd_insphere_exp_staged(const double *p, const double *q, const double *r,
                            const double *s, const double *t, int *stage);
 
-/* Test hook: on != 0 makes stage C use the plain TWO-PRODUCT (Dekker's)
- * even on a CPU with FMA, on == 0 restores the run-time choice.  Returns
- * whether stage C now uses hardware FMA (always 1 in builds targeting
- * FMA, where plain is FMA too; always 0 without FMA support).  For
- * tests; harmless at any time, as both paths give the same results.    */
+#ifdef DD_TEST_BUILD
+/* Test builds only (dd_test_control, DD_TEST_EXP_PLAIN): on != 0 makes
+ * stage C use the plain TWO-PRODUCT (Dekker's) even on a CPU with FMA,
+ * on == 0 restores the run-time choice.  Returns whether stage C now
+ * uses hardware FMA (always 1 in builds targeting FMA, where plain is
+ * FMA too).  Both paths give the same results.                         */
 int dd_exp_force_plain(int on);
+#endif
 
 /* w = |x - q|^2 - 2 (x - q).c within 2u |w| (exact expansion, rounded);
  * |x - q| and |c| must stay below 2^160.  The compact conflict DT's

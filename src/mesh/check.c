@@ -10,7 +10,7 @@
  * triangulation the last test certifies the perturbed Delaunay
  * triangulation, hence CGAL's.
  */
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 #include <stdlib.h>
 

@@ -17,8 +17,8 @@
  * The perturbation (Devillers & Teillaud 2011, as CGAL implements it) is
  * applied on top, only when the exact sign is zero.
  */
-#include "pred.h"
-#include "expansion.h"
+#include "geom/pred.h"
+#include "geom/expansion.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -19,7 +19,7 @@
  * a deterministic function of the input.  The result depends only on the
  * point set (the perturbed DT is unique), not on this order.
  */
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -247,7 +247,7 @@ dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t 
 static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
 {
     if (msg && msglen) snprintf(msg, msglen, "%s", t->err[0] ? t->err : dd_status_name(s));
-    dd_free(t);
+    dd_tri_destroy(t);
     return s;
 }
 

@@ -24,7 +24,7 @@
 #ifndef DD_QSMALL_H
 #define DD_QSMALL_H
 
-#include "delete.h"
+#include "delete/delete.h"
 
 #define DD_QS_MAXV 62     /* neighbours handled: local numbers 0..61     */
 
@@ -59,6 +59,7 @@ static inline double dd_lift_err(double m)
 double dd_shift_lifts(const double *const *pts, uint32_t n, const double *q, const double *a, const double *b,
                       const double *c, double m, double err, double *w);
 
+struct dd_qs;
 void dd_qs_free(struct dd_qs *s);
 
 #endif

@@ -44,7 +44,8 @@
 #include <stdint.h>
 #include <string.h>
 #include "dtdel.h"
-#include "pred.h"
+#include "dtdel_stats.h"
+#include "geom/pred.h"
 
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
 #define DD_DEAD (UINT32_MAX - 1)    /* tv(t)[0] of a dead cell             */
@@ -198,6 +199,9 @@ struct dd_tri {
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
     char err[256];
+#ifdef DD_TEST_BUILD
+    long testctl[DD_TEST_NCTL];   /* dd_test_control (dtdel_stats.h)     */
+#endif
 };
 
 /* Sets t->err and returns s. */
@@ -325,7 +329,7 @@ int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const dou
  * orientations towards p (mesh.c, locate_inexact), then the exact
  * visibility walk; stops in a finite cell whose closure holds p, or in
  * the first outer cell entered (which p sees).                          */
-dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out);
+dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out);
 
 /* Bowyer-Watson in three steps, shared by construction and deletion:
  * dd_find_conflicts marks the conflict region of p reachable from c0 (which
@@ -368,11 +372,13 @@ static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
     return v == DD_INF ? -1 : (int32_t)t->v2in[v];
 }
 
-void dd_delete_ctx_free(struct dd_del *d);
-
 /* A scratch triangulation with its own cells that borrows the points
  * (xyz, v2in, vcell: the caller sets them) of another one.              */
 dd_status dd_tri_alloc_borrowed(dd_tri **out);
+
+/* Frees t's own arrays and t; its deletion context (t->del) must have
+ * been freed already (dd_free, src/api.c).                               */
+void dd_tri_destroy(dd_tri *t);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);

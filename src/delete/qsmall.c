@@ -1,7 +1,7 @@
 /*
  * qsmall.c -- the compact conflict DT (see qsmall.h).
  *
- * Owns: struct dd_qs (kept in d->qs across deletions, so the hot path does
+ * Owns: struct dd_qs (kept in d's scratch across deletions, so the hot path does
  * not allocate once warm), its cell storage, CREATEQCONFLICTDT and
  * QCONFLICTDTINSERT on it, the scan location, and the export of the fill.
  *
@@ -9,8 +9,8 @@
  * dummy-cell swap of dd_cell_conflict), with 8-bit vertices and 16-bit
  * neighbour references.
  */
-#include "qsmall.h"
-#include "expansion.h"
+#include "delete/qsmall.h"
+#include "geom/expansion.h"
 
 #include <math.h>
 
@@ -52,13 +52,17 @@ void dd_qs_free(struct dd_qs *s)
     free(s);
 }
 
+static void qs_free_scratch(void *s) { dd_qs_free(s); }
+static const dd_scratch_kind qs_kind = {"compact conflict DT", qs_free_scratch};
+
 static dd_status qs_get(dd_del *d, struct dd_qs **out)
 {
-    struct dd_qs *s = d->qs;
+    struct dd_qs *s = dd_del_scratch(d, &qs_kind);
     if (!s) {
         s = calloc(1, sizeof *s);
         if (!s) return DD_ERR_NOMEM;
-        d->qs = s;
+        dd_status st = dd_del_keep_scratch(d, &qs_kind, s);
+        if (st != DD_OK) return st;
     }
     *out = s;
     return DD_OK;

@@ -33,7 +33,7 @@
 #ifndef DD_WRAP_H
 #define DD_WRAP_H
 
-#include "delete.h"
+#include "delete/delete.h"
 
 /* Makes the fill of the cavity of d->q in the mesh (d->fill), over the
  * star's cells and past them in new ones, glued to each other, and the
@@ -55,7 +55,47 @@
  * a broken triangulation can cause (the mesh as it was as well).       */
 dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined);
 
+struct dd_wrap;
 void dd_wrap_free(struct dd_wrap *w);
+
+/* Gift wrapping's statistics of a deletion, d->sstat[DD_WS_*] (named in
+ * dd_delete_stats.strategy_name by dd_wrap_stat_names).                */
+enum {
+    DD_WS_COURSE,          /* DD_WRAP_*                                    */
+    DD_WS_GUESS,           /* the last guess's candidates: DD_GUESS_*      */
+    DD_WS_NARROW_REFUTED,  /* narrow guesses refuted before it             */
+    DD_WS_INTEGER,         /* 1: integer lifts, every test of the scans
+                              exact in doubles; 2: integer orientations
+                              and cofactors, the in-sphere tests the
+                              filter leaves exact in 128-bit integers     */
+    DD_WS_SHIFT_GUESS,     /* the wide guess refuted, then made again on
+                              shifted lifts (nearly cospherical points)  */
+    DD_WS_SINGLE,          /* guesses answered in single precision         */
+    DD_WS_SINGLE_BACK,     /* ... and made in doubles instead              */
+    DD_WS_SINGLE_REFUTED,  /* a guess with single-precision answers was
+                              refuted, then made again in doubles         */
+    DD_WS_HULL_SINGLE,     /* hull steps found in single precision, proved */
+    DD_WS_HULL_BACK,       /* ... and found in doubles instead             */
+    DD_WS_EXPANSIONS,      /* tests left to the exact predicates           */
+    DD_WS_COUNT
+};
+extern const char *const dd_wrap_stat_names[DD_WS_COUNT];
+
+/* DD_WS_COURSE: how the wrap went.                                       */
+enum {
+    DD_WRAP_NONE,       /* not tried                                       */
+    DD_WRAP_PROVED,     /* guessed fill proved Delaunay and kept           */
+    DD_WRAP_REFUTED,    /* guessed fill refuted; the scans wrapped again   */
+    DD_WRAP_SCANNED,    /* scans only (filters off: coordinates out of range) */
+    DD_WRAP_DECLINED    /* left to the conflict DT                         */
+};
+
+/* DD_WS_GUESS: where the last guess took its candidates.                 */
+enum {
+    DD_GUESS_WIDE,      /* every neighbour                                 */
+    DD_GUESS_SHORT,     /* the short lists of known neighbours             */
+    DD_GUESS_TWO_STEP   /* those and their own lists                       */
+};
 
 /* The facet table's keys from 64 neighbours on (wrap.c, w_fkey): the
  * exclusive or of three words, one per local number k, k < 2^21 - 1.

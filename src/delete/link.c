@@ -17,8 +17,8 @@
  * search over a fixed array on the stack; larger holes (and the hole into
  * which the infinite vertex enters) go through fill_by_dt.
  */
-#include "link.h"
-#include "delete.h"
+#include "delete/link.h"
+#include "delete/delete.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,7 +28,7 @@ void dd_link_free(dd_link *l)
     free(l->lv); free(l->ln); free(l->ltri); free(l->deg);
     free(l->ring); free(l->ring_tri); free(l->ring_out); free(l->newtri);
     free(l->rpos); free(l->rmark);
-    dd_free(l->scratch);
+    dd_tri_destroy(l->scratch);
     memset(l, 0, sizeof *l);
 }
 

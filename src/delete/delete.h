@@ -35,7 +35,8 @@
 #ifndef DD_DELETE_H
 #define DD_DELETE_H
 
-#include "mesh.h"
+#include "mesh/mesh.h"
+#include "dtdel_stats.h"
 
 #ifdef DD_COUNTERS
 #include <time.h>
@@ -43,6 +44,21 @@
 
 /* Phases of one deletion (seconds), measured in counting builds only. */
 enum { DD_PH_LINK, DD_PH_LOCATE, DD_PH_CONFLICT, DD_PH_SEW, DD_NPHASES };
+
+/* A strategy's scratch, kept in the deletion context across deletions (no
+ * allocation once warm) and freed with it.  The framework knows a scratch
+ * only by its kind: a descriptor the strategy defines once, statically. */
+typedef struct dd_scratch_kind {
+    const char *name;
+    void (*free)(void *scratch);
+} dd_scratch_kind;
+
+typedef struct dd_scratch_slot {
+    const dd_scratch_kind *kind;
+    void *p;
+} dd_scratch_slot;
+
+#define DD_SCRATCH_SLOTS 8
 
 typedef struct dd_del {
     dd_tri *t;            /* the triangulation being edited               */
@@ -61,11 +77,8 @@ typedef struct dd_del {
     uint32_t *vmark;      /* per vertex id, epoch marks (cap t->cap_v)    */
     uint32_t vmark_cap, vepoch;
 
-    struct dd_grr *grr;   /* GRR-CONSTRUCT scratch (grr.c), lazily made   */
-    struct dd_qs *qs;     /* compact conflict DT (qsmall.c), lazily made  */
-    struct dd_wrap *wrap; /* gift-wrapping scratch (wrap.c), lazily made  */
-    void *vscratch;       /* a strategy's own scratch, kept across calls  */
-    void (*vscratch_free)(void *);
+    dd_scratch_slot scratch[DD_SCRATCH_SLOTS];   /* the strategies' own
+                             scratch (dd_del_scratch), kept across calls */
     dd_tri *qdt;          /* the conflict DT, or the full DT of P         */
     uint32_t *qdt_vcell;  /* vertex -> cell of qdt (borrowed by qdt)      */
     dd_vec fill;          /* cells of qdt that fill the cavity (of the
@@ -87,22 +100,9 @@ typedef struct dd_del {
     uint64_t fallbacks;           /* sampling fallbacks (guided variants)  */
     uint64_t locate_steps;        /* cells tested by guided/scan location  */
     int forced_fill;              /* fill_coplanar_hull ran                */
-    int wrap_how;                 /* DD_WRAP_*, set by dd_wrap_fill        */
-    int wrap_guess;               /* DD_GUESS_*, set by dd_wrap_fill       */
-    uint32_t wrap_narrow_refuted; /* dd_wrap_fill: narrow guesses refuted  */
-    int wrap_integer;             /* dd_wrap_fill: integer lifts (1), or
-                                     cofactors (2), else 0 (dtdel.h)      */
-    int wrap_shift_guess;         /* dd_wrap_fill: guessed again, shifted   */
-    uint32_t wrap_single, wrap_single_back;   /* dd_wrap_fill: guesses
-                                     answered in single precision, and made
-                                     in doubles instead                    */
-    int wrap_single_refuted;      /* dd_wrap_fill: a guess with some
-                                     single-precision answers refuted      */
-    uint32_t wrap_hull_single, wrap_hull_back;   /* dd_wrap_fill: hull
-                                     steps found in single precision and
-                                     proved, and made in doubles instead   */
-    uint32_t wrap_expansions;     /* dd_wrap_fill: tests left to the exact
-                                     predicates                            */
+    const char *const *sstat_names;   /* the strategy's statistics: names */
+    uint32_t nsstat;                  /* and how many (dd_del_strategy_stats) */
+    uint32_t sstat[DD_STRATEGY_STATS];
     uint32_t link_deletions[DD_LINKDEG_BUCKETS];   /* by deleted degree     */
     double phase[DD_NPHASES];
 #ifdef DD_COUNTERS
@@ -130,9 +130,29 @@ typedef struct dd_variant {
     dd_status (*fill_cavity)(dd_del *d);
 } dd_variant;
 
-/* The registry (variants/registry.c): NULL-terminated, first = default. */
-extern const dd_variant *const dd_variant_table[];
-const dd_variant *dd_find_variant(const char *name);
+/* The scratch of kind k kept in d, or NULL if none was kept yet. */
+static inline void *dd_del_scratch(const dd_del *d, const dd_scratch_kind *k)
+{
+    for (int i = 0; i < DD_SCRATCH_SLOTS && d->scratch[i].kind; i++)
+        if (d->scratch[i].kind == k) return d->scratch[i].p;
+    return NULL;
+}
+/* Keeps p as d's scratch of kind k (none kept yet), freed with d by
+ * k->free.  DD_ERR_INTERNAL when the slots are full (a bug).            */
+dd_status dd_del_keep_scratch(dd_del *d, const dd_scratch_kind *k, void *p);
+
+/* Names the strategy's statistics of this deletion: d->sstat[0..n), at
+ * most DD_STRATEGY_STATS, zero when the deletion began; names[i] says
+ * what sstat[i] counts (dd_last_delete_stats copies both).              */
+void dd_del_strategy_stats(dd_del *d, const char *const *names, uint32_t n);
+
+/* DELETEVERTEX(q) with strategy var; q a vertex id (dd_del_resolve). */
+dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var);
+/* The vertex id of input index `input`, or DD_ERR_UNKNOWN_VERTEX (with
+ * a message) when it names no vertex now.                               */
+dd_status dd_del_resolve(dd_tri *t, uint32_t input, uint32_t *v);
+/* Frees the deletion context (dd_free). */
+void dd_del_free(dd_del *d);
 
 /* Sets up the context for input vertex v and collects its star, link
  * triangles and neighbours (step 1 of DELETEVERTEX), without deleting. */

@@ -20,8 +20,8 @@
  * no point beyond it becomes a hull facet, and a facet through the
  * infinite vertex is wrapped around its hull edge (wrap_scan_inf).
  */
-#include "wrap.h"
-#include "qsmall.h"
+#include "wrap/wrap.h"
+#include "delete/qsmall.h"
 
 #include <math.h>
 #ifdef __SSE2__
@@ -1678,17 +1678,37 @@ static uint32_t wrap_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32
     return best;
 }
 
+const char *const dd_wrap_stat_names[DD_WS_COUNT] = {
+    "wrap: course (1 proved, 2 refuted, 3 scanned, 4 declined)",
+    "wrap: last guess (0 wide, 1 short lists, 2 two steps)",
+    "wrap: narrow guesses refuted",
+    "wrap: integer lifts (1), integer cofactors (2)",
+    "wrap: guessed again on shifted lifts",
+    "wrap: guesses in single precision",
+    "wrap: ... made in doubles instead",
+    "wrap: a single-precision guess refuted",
+    "wrap: hull steps in single precision",
+    "wrap: ... made in doubles instead",
+    "wrap: tests left to the exact predicates",
+};
+
+static void w_free_scratch(void *w) { dd_wrap_free(w); }
+static const dd_scratch_kind w_kind = {"gift wrapping", w_free_scratch};
+
 static dd_status w_get(dd_del *d, struct dd_wrap **out)
 {
-    if (!d->wrap) {
-        d->wrap = calloc(1, sizeof *d->wrap);
-        if (!d->wrap) return DD_ERR_NOMEM;
+    struct dd_wrap *w = dd_del_scratch(d, &w_kind);
+    if (!w) {
+        w = calloc(1, sizeof *w);
+        if (!w) return DD_ERR_NOMEM;
 #ifdef W_AVX2
-        d->wrap->has_avx2 = __builtin_cpu_supports("avx2");
-        d->wrap->has_fma = __builtin_cpu_supports("fma");
+        w->has_avx2 = __builtin_cpu_supports("avx2");
+        w->has_fma = __builtin_cpu_supports("fma");
 #endif
+        dd_status s = dd_del_keep_scratch(d, &w_kind, w);
+        if (s != DD_OK) return s;
     }
-    *out = d->wrap;
+    *out = w;
     return DD_OK;
 }
 
@@ -2072,11 +2092,12 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     *declined = 0;
     struct dd_wrap *w;
     dd_status s = w_get(d, &w);
+    dd_del_strategy_stats(d, dd_wrap_stat_names, DD_WS_COUNT);
     if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
     if (s == DD_OK) s = dd_vec_room(&d->order, 1);
     if (s != DD_OK) return s;
     if (d->order.n + 1 >= DD_WRAP_CODE_LEN) {        /* no keys (w_fkey) */
-        d->wrap_how = DD_WRAP_DECLINED;
+        d->sstat[DD_WS_COURSE] = DD_WRAP_DECLINED;
         *declined = 1;
         return DD_OK;
     }
@@ -2085,15 +2106,9 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     w->ncell0 = t->ncell;
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
-    /* The sanitizer build of the tests takes the plain C code (scans)
-     * for input points of odd index, so that both are tested with
-     * the same inputs.  Its choices below go by the input index too, which
-     * the tests pick vertices by.                                         */
-#ifdef DD_TEST_BUILD
-    const uint32_t tix = t->v2in[d->q];
-    w->avx2 = w->has_avx2 && tix % 2 == 0;
-#else
     w->avx2 = w->has_avx2;
+#ifdef DD_TEST_BUILD
+    w->avx2 = w->avx2 && !t->testctl[DD_TEST_SCALAR];   /* dtdel_stats.h */
 #endif
     d->order.a[d->order.n] = DD_INF;     /* DD_INF's local number is n: gid[n] */
     const uint32_t *gid = d->order.a;
@@ -2106,7 +2121,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     }
     w_lift(w, d->qp);
     w->unf0 = w_unfiltered(&d->qdt->pred);
-    d->wrap_integer = w->exact ? 1 : w->kexact ? 2 : 0;
+    d->sstat[DD_WS_INTEGER] = w->exact ? 1u : w->kexact ? 2u : 0u;
     w->cosph = 0;                                    /* w_cospherical may set it */
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
     /* The lean guess and the hull step in single precision first
@@ -2117,8 +2132,8 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * the x, y, z the shifted lifts keep), stay in floats.              */
     w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
 #ifdef DD_TEST_BUILD
-    w->flift_ok = w->flift_ok && tix % 4 == 0;
-    w->f32_spoil = tix % 8 == 4;
+    w->flift_ok = w->flift_ok && !t->testctl[DD_TEST_NO_SINGLE];
+    w->f32_spoil = t->testctl[DD_TEST_SPOIL_SINGLE] != 0;
 #endif
     w->f32 = w->flift_ok;
     w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;
@@ -2128,7 +2143,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * input points of index 3 mod 4: there they are refuted much more often,
      * and the wide guess after them is tested too (tests: wrap-narrow). */
 #ifdef DD_TEST_BUILD
-    w->narrower = tix % 4 == 3;
+    w->narrower = t->testctl[DD_TEST_NARROWER] != 0;
 #else
     w->narrower = 0;
 #endif
@@ -2180,7 +2195,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
      * exact expansions on nearly cospherical points (the sphere).        */
     if (s == DD_OK && guess && w->kexact && (w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n))) guess = 0;
     size_t refuted = 0;                              /* cells of a refuted guess */
-    d->wrap_how = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
+    d->sstat[DD_WS_COURSE] = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
     if (s == DD_OK && guess) {
         /* Narrow guesses first where the link has a hub, the short lists
          * then two steps (w_guess_narrow); a refuted one costs its cells
@@ -2191,7 +2206,7 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
         w->narrow = hub ? DD_GUESS_SHORT : DD_GUESS_WIDE;
         for (;;) {
             if (w->narrow == DD_GUESS_WIDE && n >= wide_below) break;
-            d->wrap_guess = w->narrow;
+            d->sstat[DD_WS_GUESS] = (uint32_t)w->narrow;
             s = w_run(d, w, 1, start, &outcome);
             if (s != DD_OK || outcome != W_WRONG_GUESS) break;
             refuted += d->fill.n;
@@ -2204,18 +2219,18 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
                  * more on the shifted lifts, where t measures the
                  * distance from the sphere.  A lean guess refuted is
                  * made again in full: there, or on the same lifts.      */
-                d->wrap_single_refuted |= w->f32 && w->f32_kept > 0;
-                if (!w->shifted && n >= DD_SHIFT_FROM && w_shift(w)) d->wrap_shift_guess = 1;
+                d->sstat[DD_WS_SINGLE_REFUTED] |= w->f32 && w->f32_kept > 0;
+                if (!w->shifted && n >= DD_SHIFT_FROM && w_shift(w)) d->sstat[DD_WS_SHIFT_GUESS] = 1;
                 else if (!w->lean) break;
                 w->lean = w->f32 = 0;
             } else {
-                d->wrap_narrow_refuted++;
+                d->sstat[DD_WS_NARROW_REFUTED]++;
                 w->narrow = w->narrow == DD_GUESS_SHORT ? DD_GUESS_TWO_STEP : DD_GUESS_WIDE;
             }
             if ((s = w_open_link(d, w, &start, w->narrow != DD_GUESS_WIDE ? &hub : NULL)) != DD_OK) break;
         }
         if (s == DD_OK && outcome == W_DONE) goto done;
-        d->wrap_how = DD_WRAP_REFUTED;
+        d->sstat[DD_WS_COURSE] = DD_WRAP_REFUTED;
     }
     /* A guess that declined is final: the budget is spent for the scans
      * too, and W_BAIL is a flat hull case the scans would not settle
@@ -2233,14 +2248,14 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
         return s;
     }
 done:
-    d->wrap_expansions = w->nexact;
-    d->wrap_single = w->f32_kept;
-    d->wrap_single_back = w->f32_back;
-    d->wrap_hull_single = w->inf_kept;
-    d->wrap_hull_back = w->inf_back;
+    d->sstat[DD_WS_EXPANSIONS] = w->nexact;
+    d->sstat[DD_WS_SINGLE] = w->f32_kept;
+    d->sstat[DD_WS_SINGLE_BACK] = w->f32_back;
+    d->sstat[DD_WS_HULL_SINGLE] = w->inf_kept;
+    d->sstat[DD_WS_HULL_BACK] = w->inf_back;
     if (outcome == W_DECLINED) {
         w_drop_fill(d, w);
-        d->wrap_how = DD_WRAP_DECLINED;
+        d->sstat[DD_WS_COURSE] = DD_WRAP_DECLINED;
         *declined = 1;
         return DD_OK;
     }

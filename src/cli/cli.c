@@ -8,7 +8,7 @@
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <errno.h>
 #include <inttypes.h>

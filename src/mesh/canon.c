@@ -7,7 +7,7 @@
  * on the triangulation, never on cell storage order, so it is the key for
  * comparing with CGAL.
  */
-#include "delete.h"
+#include "delete/delete.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -10,7 +10,7 @@
  * triangulate-and-sew in random order).  Every row's result is compared
  * with CGAL's canonical form.
  */
-#include "cli.h"
+#include "cli/cli.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -182,33 +182,14 @@ int cmd_delete(int argc, char **argv)
                 dd_counters cn;
                 dd_last_delete_stats(t, &st);
                 dd_get_counters(t, &cn);
-                static const char *const wrap[] = {"", " (gift wrap: guess proved)",
-                                                   " (gift wrap: guess refuted, then scanned)",
-                                                   " (gift wrap: scanned)", " (gift wrap declined)"};
-                const char *course = st.wrap > 0 && st.wrap < (int)(sizeof wrap / sizeof *wrap) ? wrap[st.wrap] : "";
-                fprintf(stderr, "vertex %u: degree %u%s, %llu cells built%s, %llu fallbacks, %llu location tests,"
+                fprintf(stderr, "vertex %u: degree %u%s, %llu cells built, %llu fallbacks, %llu location tests,"
                                 " link deletions by degree:", vs[k], st.degree, st.on_hull ? " (hull)" : "",
-                        (unsigned long long)st.tets_created, course,
-                        (unsigned long long)st.fallbacks, (unsigned long long)st.locate_steps);
+                        (unsigned long long)st.tets_created, (unsigned long long)st.fallbacks,
+                        (unsigned long long)st.locate_steps);
                 for (int b = 3; b < DD_LINKDEG_BUCKETS; b++)
                     if (st.link_deletions[b]) fprintf(stderr, " %d%s:%u", b, b == DD_LINKDEG_BUCKETS - 1 ? "+" : "", st.link_deletions[b]);
-                static const char *const guess[] = {"every neighbour", "short lists of known neighbours",
-                                                    "known neighbours, two steps"};
-                if (st.wrap > 0)
-                    fprintf(stderr, "\n  gift wrap: %s lifts, %u tests left to the exact predicates, last guess"
-                                    " over %s%s, %u narrow guesses refuted",
-                            st.wrap_integer == 1   ? "integer (exact)"
-                            : st.wrap_integer == 2 ? "integer cofactors (exact in 128 bits)"
-                                                   : "rounded",
-                            st.wrap_expansions,
-                            guess[st.wrap_guess], st.wrap_shift_guess ? " (again, on shifted lifts)" : "",
-                            st.wrap_narrow_refuted);
-                if (st.wrap_single || st.wrap_single_back)
-                    fprintf(stderr, "\n  %u guesses in single precision, %u made in doubles instead%s", st.wrap_single,
-                            st.wrap_single_back, st.wrap_single_refuted ? "; a single-precision guess refuted" : "");
-                if (st.wrap_hull_single || st.wrap_hull_back)
-                    fprintf(stderr, "\n  %u hull facets found in single precision, %u in doubles instead",
-                            st.wrap_hull_single, st.wrap_hull_back);
+                for (uint32_t i = 0; i < st.nstrategy; i++)   /* the strategy's own, by name */
+                    if (st.strategy[i]) fprintf(stderr, "\n  %s: %u", st.strategy_name[i], st.strategy[i]);
                 fprintf(stderr, "\n  insphere %llu (exact %llu), orient %llu (exact %llu), perturbed %llu%s\n",
                         (unsigned long long)cn.insphere_calls, (unsigned long long)cn.insphere_exact,
                         (unsigned long long)cn.orient_calls, (unsigned long long)cn.orient_exact,

@@ -51,8 +51,8 @@
  * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
  * copies those phase columns into its own rows (same seed, same sample).
  */
-#include "cli.h"
-#include "buckets.h"
+#include "cli/cli.h"
+#include "cli/buckets.h"
 
 #include <stdlib.h>
 #include <string.h>

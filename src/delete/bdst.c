@@ -69,7 +69,7 @@
  * canonical orderings, under which it does occur, to test it.  The forward
  * pass still checks the bound and returns DD_BDST_EINTERNAL if it broke.
  */
-#include "bdst.h"
+#include "delete/bdst.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -7,7 +7,7 @@
  * cavity.  Insertion is all-or-nothing: every allocation happens before
  * the first write to the mesh, so a failed insertion leaves it unchanged.
  */
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -76,11 +76,10 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out)
     return DD_OK;
 }
 
-void dd_free(dd_tri *t)
+void dd_tri_destroy(dd_tri *t)
 {
     if (!t) return;
     if (!t->borrowed) { free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); }
-    dd_delete_ctx_free(t->del);
     free(t->cell_block); free(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
@@ -450,7 +449,7 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
  * strictly.  Each step crosses a facet whose plane strictly separates the
  * cell from p; the facet tried first is random (but in the first cell,
  * see below), so the walk cannot cycle.                                  */
-dd_status dd_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
+dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
 {
     uint32_t c = start;
     uint32_t from = DD_NONE;            /* facet index we entered through */
@@ -709,7 +708,7 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
     uint32_t start = t->hint;
     if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
-    dd_status s = dd_locate(t, p, start, &c0);
+    dd_status s = dd_walk_locate(t, p, start, &c0);
     if (s != DD_OK) return s;
     if (!dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
         for (uint32_t k = 0; k < 4; k++) {

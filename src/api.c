@@ -1,0 +1,314 @@
+/*
+ * api.c -- the public calls of dtdel.h that sit on the whole engine: the
+ * strategy resolved by name (the registry of variants/), deletion of one
+ * vertex or a set, insertion, the star queries, the last deletion's
+ * statistics (dtdel_stats.h), and freeing a triangulation with its
+ * deletion context.  Thin: each call checks its arguments and hands over
+ * to the layers below (docs/architecture.md).
+ */
+#include "delete/delete.h"
+#include "geom/expansion.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The registry (variants/registry.c): NULL-terminated, first = default. */
+extern const dd_variant *const dd_variant_table[];
+
+void dd_free(dd_tri *t)
+{
+    if (!t) return;
+    dd_del_free(t->del);
+    t->del = NULL;
+    dd_tri_destroy(t);
+}
+
+/* ---- the registry -------------------------------------------------------- */
+
+static const dd_variant *find_variant(const char *name)
+{
+    if (!name) return dd_variant_table[0];
+    for (const dd_variant *const *v = dd_variant_table; *v; v++)
+        if (!strcmp((*v)->name, name)) return *v;
+    return NULL;
+}
+
+const char *dd_variant_name(size_t i)
+{
+    for (size_t k = 0; k <= i; k++)
+        if (!dd_variant_table[k]) return NULL;
+    return dd_variant_table[i]->name;
+}
+
+const char *dd_variant_description(size_t i)
+{
+    for (size_t k = 0; k <= i; k++)
+        if (!dd_variant_table[k]) return NULL;
+    return dd_variant_table[i]->description;
+}
+
+
+static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
+{
+    t->err[0] = 0;
+    *var = find_variant(variant);
+    return *var ? DD_OK
+                : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
+}
+
+dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
+{
+    const dd_variant *var;
+    uint32_t q = 0;
+    dd_status s = resolve_variant(t, variant, &var);
+    if (s == DD_OK) s = dd_del_resolve(t, input, &q);
+    if (s != DD_OK) return s;
+    return dd_del_vertex(t, q, var);
+}
+
+#ifdef DD_TEST_BUILD
+long dd_test_control(dd_tri *t, dd_test_ctl ctl, long value)
+{
+    if (ctl == DD_TEST_EXP_PLAIN) return dd_exp_force_plain((int)value);
+    if (!t || ctl < 0 || ctl >= DD_TEST_NCTL) return 0;
+    long was = t->testctl[ctl];
+    t->testctl[ctl] = value;
+    return was;
+}
+#endif
+
+static int cmp_u32(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Lists in left[0..max) the first vertices, in id order, that are not
+ * among the sorted ids[0..n); returns how many.                          */
+static uint32_t vertices_left(const dd_tri *t, const uint32_t *ids, size_t n, uint32_t *left, uint32_t max)
+{
+    uint32_t m = 0;
+    size_t k = 0;
+    for (uint32_t v = 0; v < t->nvid && m < max; v++) {
+        if (t->vcell[v] == DD_NONE) continue;
+        if (k < n && ids[k] == v) { k++; continue; }
+        left[m++] = v;
+    }
+    return m;
+}
+
+/* Whether the vertices left after deleting the sorted ids[0..n) include
+ * four affinely independent ones.  The first 64 left nearly always do, so
+ * a small set costs no pass over the whole triangulation.               */
+static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
+{
+    uint32_t few[64], m = vertices_left(t, ids, n, few, 64);
+    if (dd_pick_simplex(t, t->xyz, few, m) == DD_OK) return DD_OK;
+    dd_status s = DD_ERR_DIMENSION;
+    if (m == 64) {                                   /* more are left: all of them */
+        uint32_t *left = malloc((size_t)(t->nvert - n) * sizeof *left);
+        if (!left) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        m = vertices_left(t, ids, n, left, t->nvert - (uint32_t)n);
+        if (dd_pick_simplex(t, t->xyz, left, m) == DD_OK) s = DD_OK;
+        free(left);
+    }
+    return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
+}
+
+/* A set of deletions.  The result, DT of the points left, does not depend
+ * on the order (the perturbed DT is unique), so they go in vertex id
+ * order: the insertion order, BRIO rounds along a Hilbert curve, so that
+ * consecutive deletions work in nearby cells and points, in space and in
+ * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
+ * against a random order, scratch harness).  Checked before the first:
+ * every index a vertex and listed once, and the points left at least 4
+ * and not all in one plane; then no deletion of the sequence can be
+ * refused (each leaves a superset of them).  An unforeseen failure (out
+ * of memory) re-inserts those done, in reverse, which restores DT(S).   */
+dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+{
+    const dd_variant *var;
+    dd_status s = resolve_variant(t, variant, &var);
+    if (s != DD_OK || n == 0) return s;
+    if (n > t->nvert)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u vertices", n,
+                       t->nvert);
+    uint32_t *ids = malloc(n * sizeof *ids);
+    if (!ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    for (size_t k = 0; k < n && s == DD_OK; k++) s = dd_del_resolve(t, vs[k], &ids[k]);
+    if (s == DD_OK) {
+        qsort(ids, n, sizeof *ids, cmp_u32);
+        for (size_t k = 1; k < n && s == DD_OK; k++)
+            if (ids[k] == ids[k - 1])
+                s = dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is listed twice", t->v2in[ids[k]]);
+    }
+    if (s == DD_OK && t->nvert - n < 4)
+        s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
+                    t->nvert, t->nvert - (uint32_t)n);
+    if (s == DD_OK) s = check_left(t, ids, n);
+    size_t done = 0;
+    for (; done < n && s == DD_OK; done++) {
+#ifdef DD_TEST_BUILD
+        if ((long)done + 1 == t->testctl[DD_TEST_SET_FAIL_AT]) {
+            s = dd_fail(t, DD_ERR_NOMEM, "out of memory (test)");
+            continue;
+        }
+#endif
+        s = dd_del_vertex(t, ids[done], var);
+    }
+    if (s != DD_OK && done > 0) {
+        done--;                         /* the one that failed is not done */
+        char why[sizeof t->err];
+        memcpy(why, t->err, sizeof why);
+        while (done > 0) {
+            uint32_t v = ids[--done];
+            if (dd_reinsert(t, t->v2in[v]) != DD_OK) break;
+        }
+        memcpy(t->err, why, sizeof why);
+    }
+    free(ids);
+    return s;
+}
+
+/* Collects the star of input vertex v for the queries below. */
+uint32_t dd_degree(dd_tri *t, uint32_t v)
+{
+    dd_del *d;
+    return dd_del_star_of(t, v, &d) == DD_OK ? d->degree : 0;
+}
+
+int dd_on_hull(dd_tri *t, uint32_t v)
+{
+    dd_del *d;
+    return dd_del_star_of(t, v, &d) == DD_OK ? d->on_hull : 0;
+}
+
+uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max)
+{
+    dd_del *d;
+    if (dd_del_star_of(t, v, &d) != DD_OK) return 0;
+    for (size_t k = 0; k < d->nbr.n && k < max; k++) out[k] = t->v2in[d->nbr.a[k]];
+    return (uint32_t)d->nbr.n;
+}
+
+static int cmp_cell4(const void *a, const void *b)
+{
+    const int32_t *p = a, *q = b;
+    for (int i = 0; i < 4; i++)
+        if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
+    return 0;
+}
+
+dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets)
+{
+    dd_del *d;
+    size_t cap = 64, k = 0;
+    int32_t *a = malloc(4 * cap * sizeof *a);
+    if (!a) return DD_ERR_NOMEM;
+    for (size_t i = 0; i < n; i++) {
+        dd_status s = dd_del_star_of(t, vs[i], &d);
+        if (s != DD_OK) { free(a); return s; }
+        for (size_t j = 0; j < d->star.n; j++) {
+            if (k == cap) {
+                int32_t *b = realloc(a, 8 * cap * sizeof *a);
+                if (!b) { free(a); return DD_ERR_NOMEM; }
+                a = b;
+                cap *= 2;
+            }
+            const uint32_t *v = dd_tv(t, d->star.a[j]);
+            int32_t *o = a + 4 * k++;
+            for (int m = 0; m < 4; m++) o[m] = dd_input_index(t, v[m]);
+            for (int x = 1; x < 4; x++)          /* sort the four */
+                for (int y = x; y > 0 && o[y - 1] > o[y]; y--) { int32_t s2 = o[y]; o[y] = o[y - 1]; o[y - 1] = s2; }
+        }
+    }
+    qsort(a, k, 4 * sizeof *a, cmp_cell4);
+    size_t u = 0;
+    for (size_t i = 0; i < k; i++)
+        if (u == 0 || cmp_cell4(a + 4 * (u - 1), a + 4 * i)) memmove(a + 4 * u++, a + 4 * i, 4 * sizeof *a);
+    *tets = a;
+    *ntets = u;
+    return DD_OK;
+}
+
+void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
+{
+    memset(st, 0, sizeof *st);
+    const dd_del *d = t->del;
+    if (!d) return;
+    st->degree = d->degree;
+    st->on_hull = d->on_hull;
+    st->tets_created = d->qdt_created;
+    st->fallbacks = d->fallbacks;
+    st->locate_steps = d->locate_steps;
+    st->forced_fill = d->forced_fill;
+    st->nstrategy = d->nsstat;
+    for (uint32_t i = 0; i < d->nsstat; i++) {
+        st->strategy_name[i] = d->sstat_names[i];
+        st->strategy[i] = d->sstat[i];
+    }
+    memcpy(st->link_deletions, d->link_deletions, sizeof st->link_deletions);
+    st->link_us = 1e6 * d->phase[DD_PH_LINK];
+    st->locate_us = 1e6 * d->phase[DD_PH_LOCATE];
+    st->conflict_us = 1e6 * d->phase[DD_PH_CONFLICT];
+    st->sew_us = 1e6 * d->phase[DD_PH_SEW];
+}
+
+/* ---- insertion ----------------------------------------------------------- */
+
+dd_status dd_reinsert(dd_tri *t, uint32_t input)
+{
+    t->err[0] = 0;
+    if (input >= t->np)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
+    uint32_t v = t->in2v[input];
+    if (t->v2in[v] != input)
+        return dd_fail(t, DD_ERR_DUPLICATE, "point %u is a duplicate of point %u", input, t->v2in[v]);
+    if (t->vcell[v] != DD_NONE)
+        return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
+    return dd_insert_vertex(t, v);
+}
+
+static dd_status grow_u32(uint32_t **a, size_t n)
+{
+    uint32_t *b = realloc(*a, n * sizeof **a);
+    if (!b) return DD_ERR_NOMEM;
+    *a = b;
+    return DD_OK;
+}
+
+dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+{
+    t->err[0] = 0;
+    for (int c = 0; c < 3; c++) {
+        if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
+        if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
+    }
+    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8)
+        return dd_fail(t, DD_ERR_NOMEM, "too many points");
+    if (t->nvid == t->cap_v) {
+        size_t cap = (size_t)t->cap_v * 2;
+        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
+        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->xyz = xyz;
+        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap))
+            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_v = (uint32_t)cap;
+    }
+    if (t->np == t->cap_in) {
+        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_in *= 2;
+    }
+    uint32_t v = t->nvid;
+    memcpy(t->xyz + 3 * (size_t)v, p, 3 * sizeof *p);
+    t->vcell[v] = DD_NONE;
+    t->v2in[v] = t->np;
+    t->in2v[t->np] = v;
+    dd_status s = dd_insert_vertex(t, v);
+    if (s != DD_OK) return s;   /* nvid, np unchanged: the slot is unused */
+    t->nvid++;
+    *index = t->np++;
+    return DD_OK;
+}
+

@@ -1,0 +1,436 @@
+/*
+ * delete.c -- DELETEVERTEX, the conflict DT and the sewing (paper 3-4,
+ * DESIGN 6; the framework is described in delete.h).
+ *
+ * Owns: the deletion context (scratch reused across deletions, so the hot
+ * path does not allocate once warm; the strategies' own scratch in its
+ * slots), star and link collection, the forced fill of a flat hull, the
+ * all-or-nothing sewing, and DELETEVERTEX itself (dd_del_vertex).  The
+ * conflict DT is in qdt.c; the public calls are in src/api.c.
+ *
+ * Invariant kept between deletions: the main triangulation is a valid
+ * perturbed DT; d->qdt holds whatever the last strategy left (garbage).
+ */
+#include "delete/delete.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- context ------------------------------------------------------------- */
+
+void dd_del_free(dd_del *d)
+{
+    if (!d) return;
+    dd_vec_free(&d->star); dd_vec_free(&d->nbr); dd_vec_free(&d->fill);
+    dd_vec_free(&d->order); dd_vec_free(&d->sew_out); dd_vec_free(&d->cellmap);
+    dd_trihash_free(&d->lhash);
+    free(d->vmark);
+    free(d->qdt_vcell);
+    dd_tri_destroy(d->qdt);
+    for (int i = 0; i < DD_SCRATCH_SLOTS && d->scratch[i].kind; i++) d->scratch[i].kind->free(d->scratch[i].p);
+    free(d);
+}
+
+/* Makes t->del exist and fit the current vertex arrays. */
+static dd_status get_ctx(dd_tri *t, dd_del **out)
+{
+    dd_del *d = t->del;
+    if (!d) {
+        d = calloc(1, sizeof *d);
+        if (!d) return DD_ERR_NOMEM;
+        d->t = t;            /* d->rng: seeded by each deletion */
+        if (dd_tri_alloc_borrowed(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
+        t->del = d;
+    }
+    if (d->vmark_cap < t->cap_v) {
+        uint32_t *m = realloc(d->vmark, (size_t)t->cap_v * sizeof *m);
+        if (!m) return DD_ERR_NOMEM;
+        d->vmark = m;
+        uint32_t *c = realloc(d->qdt_vcell, (size_t)t->cap_v * sizeof *c);
+        if (!c) return DD_ERR_NOMEM;
+        d->qdt_vcell = c;
+        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *m);
+        d->vmark_cap = t->cap_v;
+    }
+    d->qdt->xyz = t->xyz;
+    d->qdt->v2in = t->v2in;
+    d->qdt->vcell = d->qdt_vcell;
+    *out = d;
+    return DD_OK;
+}
+
+dd_status dd_del_keep_scratch(dd_del *d, const dd_scratch_kind *k, void *p)
+{
+    for (int i = 0; i < DD_SCRATCH_SLOTS; i++)
+        if (!d->scratch[i].kind) {
+            d->scratch[i] = (dd_scratch_slot){k, p};
+            return DD_OK;
+        }
+    k->free(p);
+    return dd_fail(d->t, DD_ERR_INTERNAL, "more than %d kinds of strategy scratch (%s)", DD_SCRATCH_SLOTS, k->name);
+}
+
+void dd_del_strategy_stats(dd_del *d, const char *const *names, uint32_t n)
+{
+    d->sstat_names = names;
+    d->nsstat = n < DD_STRATEGY_STATS ? n : DD_STRATEGY_STATS;
+}
+
+uint32_t dd_del_rand(dd_del *d)
+{
+    uint64_t x = d->rng;
+    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+    d->rng = x;
+    return (uint32_t)(x >> 32);
+}
+
+void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n)
+{
+    for (size_t k = n; k > 1; k--) {
+        size_t j = dd_del_rand(d) % k;
+        uint32_t s = a[k - 1]; a[k - 1] = a[j]; a[j] = s;
+    }
+}
+
+#ifdef DD_COUNTERS
+void dd_phase_begin(dd_del *d) { clock_gettime(CLOCK_MONOTONIC, &d->ph_t0); }
+void dd_phase_end(dd_del *d, int phase)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    d->phase[phase] += (double)(now.tv_sec - d->ph_t0.tv_sec) + 1e-9 * (double)(now.tv_nsec - d->ph_t0.tv_nsec);
+    d->ph_t0 = now;
+}
+#endif
+
+/* ---- step 1: star, link, neighbours -------------------------------------- */
+
+/* The star of q by a search over the cells through q, and its neighbours.
+ * Without a branch on the marks (each candidate written at the end of its
+ * list, which grows by the mark test) it ran no faster (uniform degree
+ * [16,32), deletion / re-insertion, alternated runs: 1.89 against 1.84
+ * with the branches), nor did a sew without a branch on inner and outer
+ * facets (1.87 against 1.83).  Of the 44k instructions of a wrapped
+ * deletion (callgrind on dtdel time, uniform 20000, vertex 102, degree
+ * 19, 28 fill cells) this search makes 3.2k, the sew and the rest of
+ * delete_vertex 5.4k, the wrap 35k (28k of them in w_run: 7.4k guessing,
+ * 1.7k proving, the rest its bookkeeping of cells and facets);
+ * re-inserting the vertex makes 26k.                                     */
+static dd_status collect_star(dd_del *d)
+{
+    dd_tri *t = d->t;
+    uint32_t q = d->q;
+    dd_mark ep = dd_new_epoch(t, 1);
+    if (++d->vepoch == 0) {
+        memset(d->vmark, 0, (size_t)d->vmark_cap * sizeof *d->vmark);
+        d->vepoch = 1;
+    }
+    uint32_t vep = d->vepoch;
+    d->star.n = d->nbr.n = 0;
+    d->star_inf = 0;
+    uint32_t c0 = t->vcell[q];
+    t->stamp[c0] = ep;
+    dd_status s = dd_vec_push(&d->star, c0);
+    for (size_t k = 0; k < d->star.n; k++) {
+        /* room for the cell's three other vertices and neighbours: one
+         * test a cell, none a push                                      */
+        if ((s = dd_vec_room(&d->star, 3)) != DD_OK || (s = dd_vec_room(&d->nbr, 3)) != DD_OK) break;
+        uint32_t c = d->star.a[k];
+        const uint32_t *v = dd_tv(t, c);
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t w = v[j];
+            if (w == q) continue;
+            if (w == DD_INF) d->star_inf++;          /* once per infinite cell */
+            else if (d->vmark[w] != vep) {
+                d->vmark[w] = vep;
+                d->nbr.a[d->nbr.n++] = w;
+            }
+            uint32_t nb = dd_tn(t, c)[j] >> 2;
+            if (t->stamp[nb] != ep) {
+                t->stamp[nb] = ep;
+                d->star.a[d->star.n++] = nb;
+            }
+        }
+    }
+    if (s != DD_OK) return s;
+    d->on_hull = d->star_inf > 0;
+    d->lhash_ready = 0;
+    d->fill_in_mesh = 0;
+    d->degree = (uint32_t)d->nbr.n + (uint32_t)d->on_hull;
+    return DD_OK;
+}
+
+dd_status dd_del_link_hash(dd_del *d)
+{
+    if (d->lhash_ready) return DD_OK;
+    dd_tri *t = d->t;
+    dd_status s = dd_trihash_reset(&d->lhash, d->star.n);
+    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+        uint32_t c = d->star.a[k];
+        const uint32_t *v = dd_tv(t, c);
+        int i = dd_index_of(t, c, d->q);
+        s = dd_trihash_put(&d->lhash, v[dd_facet[i][0]], v[dd_facet[i][1]], v[dd_facet[i][2]], (uint32_t)k);
+    }
+    d->lhash_ready = s == DD_OK;
+    return s;
+}
+
+/* Moves four affinely independent points of a[0..n) to a[0..3] (first
+ * found in a's order) and records them in d->base.  DD_ERR_COPLANAR when
+ * there are none.                                                        */
+dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
+{
+    dd_tri *t = d->t;
+    if (n < 4) return DD_ERR_COPLANAR;
+    const double *p0 = dd_pt(t, a[0]), *p1 = dd_pt(t, a[1]);
+    size_t k = 2;
+    while (k < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, a[k])) == 0) k++;
+    if (k == n) return DD_ERR_COPLANAR;
+    uint32_t s = a[2]; a[2] = a[k]; a[k] = s;
+    const double *p2 = dd_pt(t, a[2]);
+    k = 3;
+    while (k < n && dd_orient3d(&t->pred, p0, p1, p2, dd_pt(t, a[k])) == 0) k++;
+    if (k == n) return DD_ERR_COPLANAR;
+    s = a[3]; a[3] = a[k]; a[k] = s;
+    memcpy(d->base, a, sizeof d->base);
+    return DD_OK;
+}
+
+static dd_status fill_coplanar_hull(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    dd_qdt_reset(d, 0);
+    dd_status s = dd_reserve_cells(x, (uint32_t)d->star.n);
+    if (s == DD_OK) s = dd_reserve_edge_hash(x, d->star.n);
+    for (size_t k = 0; k < d->star.n && s == DD_OK; k++) {
+        uint32_t c = d->star.a[k];
+        if (dd_is_infinite_cell(t, c)) continue;
+        uint32_t n = dd_new_cell(x);
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t w = dd_tv(t, c)[i];
+            dd_tv(x, n)[i] = w == d->q ? DD_INF : w;
+            dd_tn(x, n)[i] = DD_NONE;
+        }
+        s = dd_vec_push(&d->fill, n);
+    }
+    if (s == DD_OK) dd_glue_new_cells(x, d->fill.a, d->fill.n, DD_INF);
+    return s;
+}
+
+/* ---- step 3: sewing ------------------------------------------------------ */
+
+/* Matches every boundary facet of the fill with its link triangle, into
+ * d->sew_out; checks that each link triangle is met exactly once.       */
+static dd_status sew_match(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    size_t nf = d->fill.n;
+    dd_status s = dd_del_link_hash(d);
+    if (s != DD_OK) return s;
+    dd_mark epx = dd_new_epoch(x, 1);
+    for (size_t k = 0; k < nf; k++) x->stamp[d->fill.a[k]] = epx;
+    dd_mark ep = dd_new_epoch(t, 1);
+    size_t matched = 0;
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k];
+        const uint32_t *v = dd_tv(x, r);
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t f = dd_tn(x, r)[j];
+            if (f != DD_NONE && x->stamp[f >> 2] == epx) {
+                d->sew_out.a[4 * k + j] = DD_NONE;
+                continue;
+            }
+            uint32_t slot = dd_trihash_get(&d->lhash, v[dd_facet[j][0]], v[dd_facet[j][1]], v[dd_facet[j][2]]);
+            if (slot == DD_NONE)
+                return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a cavity facet matches no link triangle",
+                               t->v2in[d->q]);
+            uint32_t c = d->star.a[slot];
+            if (t->stamp[c] == ep)
+                return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: a link triangle is covered twice",
+                               t->v2in[d->q]);
+            t->stamp[c] = ep;
+            d->sew_out.a[4 * k + j] = dd_tn(t, c)[(uint32_t)dd_index_of(t, c, d->q)];
+            matched++;
+        }
+    }
+    if (matched != d->star.n)
+        return dd_fail(t, DD_ERR_INTERNAL, "deleting point %u: the cavity fill covers %zu of %zu link triangles",
+                       t->v2in[d->q], matched, d->star.n);
+    return DD_OK;
+}
+
+/* The sew's last step for fill cell m, now in the mesh and glued: the
+ * vertices' cells, the finite count, the hint.                          */
+static inline void sew_settle(dd_tri *t, uint32_t m)
+{
+    int inf = 0;
+    for (uint32_t j = 0; j < 4; j++) {
+        uint32_t w = dd_tv(t, m)[j];
+        if (w == DD_INF) { inf = 1; t->inf_cell = m; }
+        else t->vcell[w] = m;
+    }
+    if (!inf) t->nfinite++;
+    t->hint = m;
+}
+
+/* The star's cells from the k0-th on recycled (point of no return), in
+ * reverse, so that the free list gives them back in the star's order;
+ * those before, the fill has taken over.                                */
+static void sew_recycle_star(dd_del *d, size_t k0)
+{
+    dd_tri *t = d->t;
+    for (size_t k = d->star.n; k-- > k0;) dd_kill_cell(t, d->star.a[k]);
+    t->nfinite -= (uint32_t)d->star.n - d->star_inf;
+}
+
+static dd_status sew(dd_del *d)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    size_t nf = d->fill.n;
+    if (d->fill_in_mesh) {
+        /* The fill is in the mesh already (wrap.c), over the star's first
+         * cells and past them in new ones, glued inside and matched to
+         * the link: glue it to the outside.  Against making it in d->qdt
+         * and copying it here: see w_run.                                */
+        size_t taken = nf < d->star.n ? nf : d->star.n;
+        sew_recycle_star(d, taken);
+        t->tets_created += taken;
+        for (size_t k = 0; k < nf; k++) {
+            uint32_t m = d->fill.a[k];
+            for (uint32_t j = 0; j < 4; j++) {
+                uint32_t o = d->sew_out.a[4 * k + j];
+                if (o != DD_NONE) dd_glue(t, 4 * m + j, o);
+            }
+            sew_settle(t, m);
+        }
+        t->vcell[d->q] = DD_NONE;
+        t->nvert--;
+        return DD_OK;
+    }
+    dd_status s = dd_vec_reserve(&d->sew_out, 4 * nf + 4);
+    if (s == DD_OK) s = sew_match(d);
+    if (s == DD_OK) s = dd_vec_reserve(&d->cellmap, (size_t)x->ncell + 1);
+    if (s != DD_OK) return s;
+    s = dd_reserve_cells(t, (uint32_t)nf);
+    if (s != DD_OK) return s;
+
+    /* Point of no return: recycle, copy, glue.  The star's cells go first
+     * (in reverse, so the free list gives them back in the star's order),
+     * so that the fill takes their places: where the deletion is, in
+     * memory, whatever the free list held before.                        */
+    sew_recycle_star(d, 0);
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k], m = dd_new_cell(t);
+        memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
+        d->cellmap.a[r] = m;
+    }
+    for (size_t k = 0; k < nf; k++) {
+        uint32_t r = d->fill.a[k], m = d->cellmap.a[r];
+        for (uint32_t j = 0; j < 4; j++) {
+            uint32_t o = d->sew_out.a[4 * k + j];
+            if (o != DD_NONE) {
+                dd_glue(t, 4 * m + j, o);
+            } else {
+                uint32_t f = dd_tn(x, r)[j];
+                dd_tn(t, m)[j] = 4 * d->cellmap.a[f >> 2] + (f & 3);
+            }
+        }
+        sew_settle(t, m);
+    }
+    t->vcell[d->q] = DD_NONE;
+    t->nvert--;
+    return DD_OK;
+}
+
+/* ---- DELETEVERTEX -------------------------------------------------------- */
+
+dd_status dd_del_resolve(dd_tri *t, uint32_t input, uint32_t *v)
+{
+    if (input >= t->np)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
+    uint32_t id = t->in2v[input];
+    if (t->v2in[id] != input)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is a duplicate of point %u, not a vertex",
+                       input, t->v2in[id]);
+    if (t->vcell[id] == DD_NONE)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is not a vertex (it was deleted)", input);
+    *v = id;
+    return DD_OK;
+}
+
+/* DELETEVERTEX(q): step 1 (collect_star), step 2 (the strategy, or the
+ * forced fill), step 3 (sew).  Steps 1-2 leave the mesh as it was.     */
+dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
+{
+    if (t->nvert <= 4)
+        return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave %u points: at least 4 are needed",
+                       t->v2in[q], t->nvert - 1);
+    dd_del *d;
+    dd_status s = get_ctx(t, &d);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    d->q = q;
+    d->qp = dd_pt(t, q);
+    /* The random choices of a deletion are seeded by the vertex: deleting
+     * the same vertex of the same triangulation does the same work.     */
+    uint64_t z = dd_mix64(t->v2in[q] + 0x9E3779B97F4A7C15ull);
+    d->rng = z | 1;
+    d->qdt->rng = (z * 0x2545F4914F6CDD1Dull) | 1;
+    d->fallbacks = 0;
+    d->locate_steps = 0;
+    d->forced_fill = 0;
+    d->sstat_names = NULL;
+    d->nsstat = 0;
+    memset(d->sstat, 0, sizeof d->sstat);
+    memset(d->link_deletions, 0, sizeof d->link_deletions);
+    d->qdt_created = 0;
+    for (int i = 0; i < DD_NPHASES; i++) d->phase[i] = 0;
+    DD_PHASE_BEGIN(d);
+    s = collect_star(d);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    /* Four independent neighbours, or the forced coplanar-hull fill. */
+    d->order.n = 0;
+    if ((s = dd_vec_room(&d->order, d->nbr.n)) != DD_OK) return dd_fail(t, s, "out of memory");
+    memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
+    d->order.n = d->nbr.n;
+    DD_PHASE_END(d, DD_PH_LINK);
+    if (dd_del_pick_base(d, d->order.a, d->order.n) != DD_OK) {
+        /* Coplanar finite neighbours: q is on the hull.  If every finite
+         * cell holds q, every other point is a neighbour: all coplanar.   */
+        if (d->star.n - d->star_inf == t->nfinite)
+            return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points",
+                           t->v2in[q]);
+        if (!d->on_hull)
+            return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
+        d->forced_fill = 1;
+        s = fill_coplanar_hull(d);
+    } else {
+        s = var->fill_cavity(d);
+    }
+    if (s != DD_OK) {
+        if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
+        if (!t->err[0]) dd_fail(t, s, "the %s strategy failed on point %u", var->name, t->v2in[q]);
+        return s;
+    }
+    d->qdt_created = d->qdt->tets_created;
+    DD_PHASE_BEGIN(d);
+    s = sew(d);
+    DD_PHASE_END(d, DD_PH_SEW);
+    if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
+    return s;
+}
+
+/* The strategy named `variant` (NULL: the default) in *var, clearing the
+ * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
+dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
+{
+    uint32_t v = 0;
+    dd_status s = dd_del_resolve(t, input, &v);
+    if (s == DD_OK) s = get_ctx(t, out);
+    if (s != DD_OK) return s;
+    (*out)->q = v;
+    (*out)->qp = dd_pt(t, v);
+    return collect_star(*out);
+}
+

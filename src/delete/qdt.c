@@ -1,0 +1,120 @@
+/*
+ * qdt.c -- the conflict DT DT(x)_q(P_i) of paper 4.1 (CREATEQCONFLICTDT,
+ * QCONFLICTDTINSERT) and the full DT(P) that triangulate-and-sew builds,
+ * both in d->qdt, a scratch triangulation that borrows the main one's
+ * points (delete.h describes the dummy vertex DD_QD and its cells).
+ *
+ * Invariant: after dd_qdt_create and each dd_qdt_insert, d->qdt is
+ * DT(x)_q of the points inserted so far, closed by dummy cells; d->fill
+ * is only valid after dd_qdt_collect_fill / dd_full_collect_fill.
+ */
+#include "delete/delete.h"
+
+/* ---- the conflict DT ----------------------------------------------------- */
+
+void dd_qdt_reset(dd_del *d, int qd)
+{
+    dd_clear_cells(d->qdt);
+    d->qdt->qd_point = qd ? d->qp : NULL;
+    d->qdt->tets_created = 0;
+    d->fill.n = 0;
+}
+
+/* CREATEQCONFLICTDT: DT of the four base points, then the cells not in
+ * conflict with q are replaced by the star of the dummy vertex: exactly a
+ * Bowyer-Watson step whose "conflict region" is the complement.           */
+dd_status dd_qdt_create(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_reserve_cells(x, 16);
+    if (s != DD_OK) return s;
+    uint32_t b[4];
+    memcpy(b, d->base, sizeof b);
+    dd_make_first_cells(x, b);
+    dd_mark ep = dd_new_epoch(x, 2);
+    x->conflict.n = x->boundary.n = 0;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (!dd_cell_conflict(x, c, d->qp)) {
+            x->stamp[c] = ep;
+            s = dd_vec_push(&x->conflict, c);
+        }
+    for (size_t k = 0; k < x->conflict.n && s == DD_OK; k++) {
+        uint32_t c = x->conflict.a[k];
+        for (uint32_t i = 0; i < 4 && s == DD_OK; i++)
+            if (x->stamp[dd_tn(x, c)[i] >> 2] != ep)
+                s = dd_vec_push(&x->boundary, 4 * c + i);
+    }
+    if (s == DD_OK) s = dd_reserve_star(x);
+    if (s != DD_OK) return s;
+    dd_fill_star(x, DD_QD);
+    return DD_OK;
+}
+
+/* QCONFLICTDTINSERT */
+dd_status dd_qdt_insert(dd_del *d, uint32_t v, uint32_t start)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_find_conflicts(x, dd_pt(x, v), start);
+    if (s == DD_OK) s = dd_reserve_star(x);
+    if (s != DD_OK) return s;
+    dd_fill_star(x, v);
+    return DD_OK;
+}
+
+static int has_qd(const dd_tri *x, uint32_t c)
+{
+    return dd_index_of(x, c, DD_QD) >= 0;
+}
+
+dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell)
+{
+    dd_tri *x = d->qdt;
+    const double *p = dd_pt(x, v);
+    for (uint32_t c = 0; c < x->ncell; c++) {
+        if (dd_tv(x, c)[0] == DD_DEAD || !has_qd(x, c)) continue;
+        d->locate_steps++;
+        if (dd_cell_conflict(x, c, p)) { *cell = c; return DD_OK; }
+    }
+    return dd_fail(d->t, DD_ERR_INTERNAL, "no dummy cell of the conflict DT conflicts with point %u",
+                   d->t->v2in[v]);
+}
+
+dd_status dd_qdt_collect_fill(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    d->fill.n = 0;
+    dd_status s = DD_OK;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (dd_tv(x, c)[0] != DD_DEAD && !has_qd(x, c)) s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+dd_status dd_full_build(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = dd_reserve_cells(x, (uint32_t)(8 * d->nbr.n + 16));
+    if (s != DD_OK) return s;
+    uint32_t b[4];
+    memcpy(b, d->base, sizeof b);
+    dd_make_first_cells(x, b);
+    for (size_t k = 0; k < d->order.n && s == DD_OK; k++) {
+        uint32_t v = d->order.a[k];
+        if (v == d->base[0] || v == d->base[1] || v == d->base[2] || v == d->base[3]) continue;
+        s = dd_insert_vertex(x, v);
+    }
+    return s;
+}
+
+dd_status dd_full_collect_fill(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    d->fill.n = 0;
+    dd_status s = DD_OK;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (dd_tv(x, c)[0] != DD_DEAD && dd_cell_conflict(x, c, d->qp))
+            s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+/* The forced fill of a hull vertex whose finite neighbours are coplanar:
+ * every finite star cell with q replaced by DD_INF.                       */
