@@ -3,8 +3,12 @@
 # construction benchmark, then tables and plots, all into results/.
 #   1. build/count/dtdel bench  -> results/phases/*.csv (phase split, counters on)
 #   2. build/dtdel bench        -> results/<dataset>.csv (timings, phases merged)
-#   3. build/summarize          -> results/summary.md, results/plotdata/
+#   3. build/summarize          -> results/summary.md, results/plotdata/,
+#                                  results/readme-table.md
 #   4. scripts/plots.sh         -> results/*.png
+#   5. scripts/readme-table.sh  -> README.md's results table (between its
+#                                  bench-table markers), from step 3's
+#                                  results/readme-table.md
 #   (2b. build/dtdel bench --reps 1 on uniform, sphere, bunny -> results/cold/)
 #   (2c. build/dtdel build-bench -> results/build.txt, seq-bench -> results/sequence.txt)
 mode=${1:-full}
@@ -54,5 +58,6 @@ cat results/sequence.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
 sh scripts/plots.sh results
-echo "results: results/summary.md and results/*.png" >&2
+sh scripts/readme-table.sh results/readme-table.md README.md
+echo "results: results/summary.md, results/*.png and README.md's table" >&2
 exit $rc

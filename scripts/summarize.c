@@ -72,6 +72,14 @@
  *   plotdata/all-datasets.* the same three files for the pooled rows (the
  *                           paper's time-vs-degree figure); "all-datasets"
  *                           is therefore reserved as a dataset name.
+ *   readme-table.md         README.md's results table (scripts/bench.sh
+ *                           puts it between the README's bench-table
+ *                           markers): the rows of readme_rows, each with
+ *                           cgal's median µs and, per variant, cgal median
+ *                           / variant median over the same rows; then the
+ *                           mismatch count of all rows, the run from
+ *                           meta.txt and the construction ratios from
+ *                           OUTDIR/build.txt (dtdel build-bench), if there.
  *
  * Mismatches (match == 0) are counted per variant and bucket, printed
  * loudly in summary.md and on stderr; they do not change the exit status
@@ -825,7 +833,8 @@ static int phase_medians(const ctx *c, const table *t, size_t ds, size_t j, size
     return any;
 }
 
-/* The phase split in Markdown (out) or as plot data (dat), one of them. */
+/* The phase split in Markdown (out) or, when out is NULL, as plot data
+ * (dat). */
 static int write_phases(ctx *c, const table *t, size_t ds, FILE *out, FILE *dat)
 {
     size_t *idx = malloc((c->nrows ? c->nrows : 1) * sizeof *idx);
@@ -836,7 +845,7 @@ static int write_phases(ctx *c, const table *t, size_t ds, FILE *out, FILE *dat)
         double med[NPHASES + 1];
         size_t k;
         if (!phase_medians(c, t, ds, j, idx, med, &k)) continue;
-        if (dat) {
+        if (!out) {
             fprintf(dat, "%s", c->variants.s[t->var[j]]);
             for (int p = 0; p <= NPHASES; p++) put_num(dat, med[p]);
             fputc('\n', dat);
@@ -966,6 +975,293 @@ static int write_plotdata(ctx *c, const table *t, size_t ds, const char *name)
     return 0;
 }
 
+/* ---- readme-table.md -------------------------------------------------------------- */
+
+/* The rows of README.md's results table: the paper's experiment at a
+ * glance.  n = 0: every size of the dataset; lo = hi = 0: the degree
+ * bucket of the highest degree at size n (on the curves each size has
+ * one degree, or nearly: the moment curve n - 1, the helix about 2√n).  */
+typedef struct readme_spec { const char *dataset; long long n, lo, hi; } readme_spec;
+static const readme_spec readme_rows[] = {
+    {"moment", 64, 0, 0},    {"moment", 256, 0, 0},   {"moment", 1024, 0, 0},
+    {"helix", 16000, 0, 0},  {"helix", 64000, 0, 0},  {"uniform", 0, 12, 16},
+    {"sphere", 0, 4, 8},     {"sphere", 0, 8, 12},    {"bunny", 0, 12, 16},
+    {"grid", 0, 12, 16},     {"cosphere", 0, 16, 24}};
+#define NREADME (sizeof readme_rows / sizeof readme_rows[0])
+
+/* Its ratio columns: these engine variants in this order, then any other
+ * engine deletion variant (by name), then cgal-rnd.  Not the "-paired"
+ * rows (the default's deletion timed again, next to insert) nor insert:
+ * measurements of the default, not variants.                            */
+static const char *const readme_order[] = {
+    "auto", "gift-wrap", "grr-edge", "grr-neighbor", "grr-hashing", "grr-brio",
+    "dtq-only", "guide-only", "sew-full"};
+#define NREADME_ORDER (sizeof readme_order / sizeof readme_order[0])
+
+static size_t find_name(const strtab *t, const char *s)
+{
+    for (size_t i = 0; i < t->n; i++)
+        if (!strcmp(t->s[i], s)) return i;
+    return (size_t)-1;
+}
+
+static int ends_with(const char *s, const char *tail)
+{
+    size_t a = strlen(s), b = strlen(tail);
+    return a >= b && !strcmp(s + a - b, tail);
+}
+
+/* The ratio columns present in the data (ctx.variants indices, in order);
+ * returns their number.  col holds room for every variant.              */
+static size_t readme_columns(const ctx *c, size_t *col)
+{
+    size_t m = 0;
+    for (size_t k = 0; k < NREADME_ORDER; k++) {
+        size_t v = find_name(&c->variants, readme_order[k]);
+        if (v != (size_t)-1) col[m++] = v;
+    }
+    size_t first_other = m;
+    for (size_t v = 0; v < c->variants.n; v++) {
+        const char *name = c->variants.s[v];
+        int known = 0;
+        for (size_t k = 0; k < NREADME_ORDER; k++) known |= !strcmp(name, readme_order[k]);
+        if (known || !is_deletion_variant(name) || ends_with(name, "-paired")) continue;
+        size_t at = m++;                       /* insertion sort by name */
+        while (at > first_other && strcmp(c->variants.s[col[at - 1]], name) > 0) {
+            col[at] = col[at - 1];
+            at--;
+        }
+        col[at] = v;
+    }
+    size_t rnd = find_name(&c->variants, "cgal-rnd");
+    if (rnd != (size_t)-1) col[m++] = rnd;
+    return m;
+}
+
+/* Median us of the rows idx[0..k) of variant var (NaN if none); *count
+ * gets their number. */
+static double variant_median(const ctx *c, const size_t *idx, size_t k, size_t var, size_t *count)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < k; i++)
+        if (c->rows[idx[i]].var == var) c->scratch[m++] = c->rows[idx[i]].us;
+    *count = m;
+    if (!m) return NAN;
+    qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
+    return quantile(c->scratch, m, 0.5);
+}
+
+/* A non-negative integer, its thousands set apart from 10 000 on:
+ * 1178, 52 233, 2 042 014. */
+static const char *fmt_int(long long v, char buf[40])
+{
+    char d[32];
+    snprintf(d, sizeof d, "%lld", v);
+    size_t len = strlen(d), o = 0;
+    for (size_t i = 0; i < len; i++) {
+        if (len >= 5 && i && (len - i) % 3 == 0) buf[o++] = ' ';
+        buf[o++] = d[i];
+    }
+    buf[o] = '\0';
+    return buf;
+}
+
+/* Three significant digits or more: 6444, 121, 36.1, 6.17, 0.76. */
+static const char *fmt_sig(double v, char buf[40])
+{
+    if (isnan(v)) snprintf(buf, 40, "—");
+    else if (v >= 100) fmt_int(llround(v), buf);
+    else if (v >= 10) snprintf(buf, 40, "%.1f", v);
+    else snprintf(buf, 40, "%.2f", v);
+    return buf;
+}
+
+/* How a row is named when it is not in this run. */
+static void readme_missing(const readme_spec *s, FILE *out, int first)
+{
+    char b[40];
+    fprintf(out, "%s%s", first ? "" : "; ", s->dataset);
+    if (s->n) fprintf(out, " n = %s", fmt_int(s->n, b));
+    if (s->lo || s->hi) fprintf(out, ", degree %lld–%lld", s->lo, s->hi - 1);
+}
+
+/* One row of the table from the rows of spec s; 0 if the run has none.
+ * idx, sizes: scratch for nrows entries each. */
+static int readme_row(const ctx *c, const readme_spec *s, const size_t *col, size_t ncol,
+                      size_t *idx, long long *sizes, FILE *out)
+{
+    size_t ds = find_name(&c->datasets, s->dataset), k = 0;
+    if (ds == (size_t)-1) return 0;
+    long long maxdeg = -1;
+    for (size_t i = 0; i < c->nrows; i++) {
+        const row *r = &c->rows[i];
+        if (r->ds != ds || (s->n && r->n != s->n)) continue;
+        idx[k++] = i;
+        if (r->degree > maxdeg) maxdeg = r->degree;
+    }
+    if (!k) return 0;
+    long long lo = s->lo, hi = s->hi;
+    if (!lo && !hi) dd_bucket_bounds(dd_degree_bucket(maxdeg), &lo, &hi);
+    size_t m = 0;
+    long long dmin = 0, dmax = 0;
+    for (size_t i = 0; i < k; i++) {
+        const row *r = &c->rows[idx[i]];
+        if (r->degree < lo || r->degree >= hi) continue;
+        if (!m || r->degree < dmin) dmin = r->degree;
+        if (!m || r->degree > dmax) dmax = r->degree;
+        idx[m++] = idx[i];
+    }
+    if (!m) return 0;
+
+    /* dataset, n = its sizes here */
+    char b[40];
+    size_t ns = 0;
+    for (size_t i = 0; i < m; i++) sizes[i] = c->rows[idx[i]].n;
+    qsort(sizes, m, sizeof *sizes, cmp_llong);
+    fprintf(out, "| %s, n = ", s->dataset);
+    for (size_t i = 0; i < m; i++)
+        if (!i || sizes[i] != sizes[i - 1]) fprintf(out, "%s%s", ns++ ? ", " : "", fmt_int(sizes[i], b));
+
+    /* degree (as the bench counts it: the infinite vertex too): the range
+     * asked for, else the one degree, else about the median             */
+    if (s->lo || s->hi) {
+        fprintf(out, " | %lld–%lld", lo, hi - 1);
+    } else if (dmin == dmax) {
+        fprintf(out, " | %lld", dmin);
+    } else {
+        for (size_t i = 0; i < m; i++) c->scratch[i] = (double)c->rows[idx[i]].degree;
+        qsort(c->scratch, m, sizeof *c->scratch, cmp_double);
+        fprintf(out, " | ~%lld", llround(quantile(c->scratch, m, 0.5)));
+    }
+
+    /* deletions: the most rows of one variant (all delete the same vertices) */
+    size_t most = 0, cnt;
+    for (size_t v = 0; v < c->variants.n; v++) {
+        variant_median(c, idx, m, v, &cnt);
+        if (cnt > most) most = cnt;
+    }
+    size_t cg = find_name(&c->variants, "cgal");
+    double ref = cg == (size_t)-1 ? NAN : variant_median(c, idx, m, cg, &cnt);
+    fprintf(out, " | %zu | %s |", most, fmt_sig(ref, b));
+    for (size_t j = 0; j < ncol; j++) {
+        double med = variant_median(c, idx, m, col[j], &cnt);
+        if (isnan(ref) || !(med > 0)) fprintf(out, " — |");
+        else fprintf(out, " %s× |", fmt_sig(ref / med, b));
+    }
+    fputc('\n', out);
+    return 1;
+}
+
+/* The value of "key: value" in OUTDIR/NAME into buf ("" if none). */
+static void file_value(const ctx *c, const char *name, const char *key, char *buf, size_t len)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", c->outdir, name);
+    buf[0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    char *line = NULL;
+    size_t cap = 0, klen = strlen(key);
+    while (read_line(f, &line, &cap) == 1)
+        if (!strncmp(line, key, klen) && line[klen] == ':') {
+            const char *v = line + klen + 1;
+            snprintf(buf, len, "%s", v + strspn(v, " \t"));
+            break;
+        }
+    free(line);
+    fclose(f);
+}
+
+/* " Construction ...: 2.07× CGAL's speed on uniform, n = 1 000 000; ..."
+ * from OUTDIR/build.txt (dtdel build-bench's output), nothing without it. */
+static void readme_construction(const ctx *c, FILE *out)
+{
+    char path[4096], ds[64] = "", b[40];
+    snprintf(path, sizeof path, "%s/build.txt", c->outdir);
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    char *line = NULL;
+    size_t cap = 0;
+    long long n = 0;
+    double ratio;
+    int any = 0;
+    while (read_line(f, &line, &cap) == 1) {
+        if (sscanf(line, "dataset %63[^,], n = %lld", ds, &n) == 2) continue;
+        if (sscanf(line, "speed ratio dtdel/cgal: %lf", &ratio) == 1 && ds[0]) {
+            fprintf(out, "%s%.2f×%s on %s, n = %s",
+                    any ? "; " : " Construction of DT(S) (`dtdel build-bench`): ", ratio,
+                    any ? "" : " CGAL's speed", ds, fmt_int(n, b));
+            any = 1;
+        } else if (!strcmp(line, "identical to CGAL: NO") && any) {
+            fprintf(out, " (**not identical to CGAL's triangulation**)");
+        }
+    }
+    if (any) fputc('.', out);
+    free(line);
+    fclose(f);
+}
+
+static int write_readme_table(ctx *c)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/readme-table.md", c->outdir);
+    size_t *col = malloc((c->variants.n ? c->variants.n : 1) * sizeof *col);
+    size_t *idx = malloc(c->nrows * sizeof *idx);
+    long long *sizes = malloc(c->nrows * sizeof *sizes);
+    FILE *out = col && idx && sizes ? fopen(path, "w") : NULL;
+    if (!out) {
+        free(col);
+        free(idx);
+        free(sizes);
+        return col && idx && sizes ? fail(c, "cannot write %s: %s", path, strerror(errno))
+                                   : fail(c, "out of memory");
+    }
+    size_t ncol = readme_columns(c, col);
+    fprintf(out, "| dataset | degree | deletions | CGAL µs |");
+    for (size_t j = 0; j < ncol; j++) fprintf(out, " %s |", c->variants.s[col[j]]);
+    fprintf(out, "\n|---|---:|---:|---:|");
+    for (size_t j = 0; j < ncol; j++) fprintf(out, "---:|");
+    fputc('\n', out);
+    int present[NREADME], missing = 0;
+    for (size_t i = 0; i < NREADME; i++) {
+        present[i] = readme_row(c, &readme_rows[i], col, ncol, idx, sizes, out);
+        missing += !present[i];
+    }
+    if (missing) {                  /* paragraphs: a blank line before each */
+        fprintf(out, "\nNot in this run: ");
+        for (size_t i = 0, k = 0; i < NREADME; i++)
+            if (!present[i]) readme_missing(&readme_rows[i], out, !k++);
+        fprintf(out, ".\n");
+    }
+
+    size_t mism = 0;
+    for (size_t i = 0; i < c->nrows; i++) mism += !c->rows[i].match;
+    if (mism)
+        fprintf(out, "\n**mismatches: %zu** (results that differ from CGAL's triangulation: a bug; "
+                     "summary.md lists them)\n", mism);
+    else
+        fprintf(out, "\nmismatches: 0 (every result of the run equals CGAL's triangulation)\n");
+
+    char commit[128], date[128], mode[128], machine[256], cores[32], cgal[128];
+    file_value(c, "meta.txt", "commit", commit, sizeof commit);
+    file_value(c, "meta.txt", "date", date, sizeof date);
+    file_value(c, "meta.txt", "mode", mode, sizeof mode);
+    file_value(c, "meta.txt", "machine", machine, sizeof machine);
+    file_value(c, "meta.txt", "cores", cores, sizeof cores);
+    file_value(c, "meta.txt", "cgal", cgal, sizeof cgal);
+    fprintf(out, "\nRun: commit %s, %s, mode %s; %s, %s cores; CGAL %s.",
+            *commit ? commit : "?", *date ? date : "?", *mode ? mode : "?", *machine ? machine : "?",
+            *cores ? cores : "?", *cgal ? cgal : "?");
+    readme_construction(c, out);
+    fputc('\n', out);
+    free(col);
+    free(idx);
+    free(sizes);
+    int bad = ferror(out);
+    if (fclose(out) || bad) return fail(c, "cannot write %s", path);
+    return 0;
+}
+
 /* ---- driver ------------------------------------------------------------------------ */
 
 static int make_dir(ctx *c, const char *path)
@@ -1037,6 +1333,7 @@ static int write_all(ctx *c)
         if (!st) st = write_plotdata(c, &all, (size_t)-1, ALL_NAME);
     }
     free_table(&all);
+    if (!st) st = write_readme_table(c);
     int bad = ferror(md);
     if (fclose(md) || bad) st = st ? st : fail(c, "cannot write %s", path);
     if (close_out(c, list, "datasets", ".txt")) st = -1;

@@ -4,8 +4,12 @@
 # counts, bucket boundaries, column order, the gnuplot data lines, and the
 # exit codes and messages on malformed input, and the "insert" row (our
 # re-insertion, not a deletion): last column, no ratio to cgal, and the
-# "Deletion vs re-insertion" table.  Prints ok/FAIL lines.
+# "Deletion vs re-insertion" table.  Then the README's results table
+# (readme-table.md) on CSVs named as the bench's datasets, and
+# scripts/readme-table.sh putting it between a README's markers (and
+# failing, changing nothing, without them).  Prints ok/FAIL lines.
 SUM=${1:-build/summarize}
+PUT=$(dirname "$0")/../scripts/readme-table.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failed=0
@@ -179,4 +183,105 @@ expect missing-file 1 "cannot open .*nope\.csv" "$SUM" "$tmp/out2" "$tmp/nope.cs
 expect usage 2 "usage: summarize OUTDIR CSV" "$SUM" "$tmp/out2"
 if [ -e "$tmp/out2/summary.md" ]; then bad no-output-on-error "summary.md written"; else
     ok no-output-on-error; fi
+
+# The README table: rows picked by dataset and size or degree bucket,
+# cgal's median µs, cgal median / variant median per column.
+#   moment n = 64 (degree 64): cgal 1000 3000 -> 2000; auto 10 30 -> 20,
+#     x100; gift-wrap 16 -> x125; cgal-rnd 500 1500 -> 1000, x2.00;
+#     auto-paired and insert are no columns.  n = 256: cgal 52233, auto
+#     46.77 -> x1117 (1116.8).  n = 1024: not in this run.
+#   helix n = 16000: the top bucket [256,384) only (degree 190 left out):
+#     degrees 284 286 -> ~285; cgal 20000 40000 -> 30 000; auto 100 200
+#     -> 150, x200.
+#   uniform [12,16) (degree 16 left out): cgal 30 40 50 -> 40.0; auto
+#     2 4 8 -> 4, x10.0; zeta-x (another variant: after the known ones,
+#     before cgal-rnd) 16 at degree 12 only -> x2.50; gift-wrap none.
+#   mismatches: all rows count, the one at degree 16 too.
+#   build.txt: two blocks, their ratios.
+mkdir "$tmp/rd"
+printf 'commit: abc1234\ndate: 2026-01-01T00:00Z\nmode: full (scale 1)\nmachine: testbox\ncores: 2\ncgal: 9.9\n' \
+    >"$tmp/rd/meta.txt"
+printf 'dataset uniform, n = 1000000, 6 cells\nspeed ratio dtdel/cgal: 2.07\nidentical to CGAL: yes\n\n' >"$tmp/rd/build.txt"
+printf 'dataset helix, n = 16000, 2 cells\nspeed ratio dtdel/cgal: 4.24\nidentical to CGAL: yes\n' >>"$tmp/rd/build.txt"
+cat >"$tmp/moment.csv" <<EOF2
+$H
+moment,64,1,64,1,cgal,1000,,,,,,1
+moment,64,2,64,1,cgal,3000,,,,,,1
+moment,64,1,64,1,auto,10,5,,,,,1
+moment,64,2,64,1,auto,30,5,,,,,1
+moment,64,1,64,1,gift-wrap,16,5,,,,,1
+moment,64,1,64,1,cgal-rnd,500,,,,,,1
+moment,64,2,64,1,cgal-rnd,1500,,,,,,1
+moment,64,1,64,1,auto-paired,1,,,,,,1
+moment,64,1,64,1,insert,1,,,,,,1
+moment,256,3,256,1,cgal,52233,,,,,,1
+moment,256,3,256,1,auto,46.77,,,,,,1
+EOF2
+cat >"$tmp/helix.csv" <<EOF2
+$H
+helix,16000,1,190,1,cgal,5,,,,,,1
+helix,16000,1,190,1,auto,1,,,,,,1
+helix,16000,2,284,1,cgal,20000,,,,,,1
+helix,16000,3,286,1,cgal,40000,,,,,,1
+helix,16000,2,284,1,auto,100,,,,,,1
+helix,16000,3,286,1,auto,200,,,,,,1
+EOF2
+cat >"$tmp/uniform.csv" <<EOF2
+$H
+uniform,100000,1,12,0,cgal,30,,,,,,1
+uniform,100000,2,13,0,cgal,40,,,,,,1
+uniform,100000,3,15,0,cgal,50,,,,,,1
+uniform,100000,4,16,0,cgal,1000,,,,,,1
+uniform,100000,1,12,0,auto,2,,,,,,1
+uniform,100000,2,13,0,auto,4,,,,,,1
+uniform,100000,3,15,0,auto,8,,,,,,1
+uniform,100000,4,16,0,auto,1,,,,,,0
+uniform,100000,1,12,0,zeta-x,16,,,,,,1
+EOF2
+expect readme-runs 0 "" "$SUM" "$tmp/rd" "$tmp/moment.csv" "$tmp/helix.csv" "$tmp/uniform.csv"
+rt=$tmp/rd/readme-table.md
+has readme-header "$rt" "| dataset | degree | deletions | CGAL µs | auto | gift-wrap | zeta-x | cgal-rnd |"
+has readme-moment-64 "$rt" "| moment, n = 64 | 64 | 2 | 2000 | 100× | 125× | — | 2.00× |"
+has readme-moment-256 "$rt" "| moment, n = 256 | 256 | 1 | 52 233 | 1117× | — | — | — |"
+has readme-helix-top "$rt" "| helix, n = 16 000 | ~285 | 2 | 30 000 | 200× | — | — | — |"
+has readme-uniform "$rt" "| uniform, n = 100 000 | 12–15 | 3 | 40.0 | 10.0× | — | 2.50× | — |"
+has readme-missing "$rt" "Not in this run: moment n = 1024; helix n = 64 000; sphere, degree 4–7; sphere, degree 8–11; bunny, degree 12–15; grid, degree 12–15; cosphere, degree 16–23."
+has readme-mismatches "$rt" "**mismatches: 1** (results that differ from CGAL's triangulation: a bug; summary.md lists them)"
+has readme-run "$rt" "Run: commit abc1234, 2026-01-01T00:00Z, mode full (scale 1); testbox, 2 cores; CGAL 9.9. Construction of DT(S) (\`dtdel build-bench\`): 2.07× CGAL's speed on uniform, n = 1 000 000; 4.24× on helix, n = 16 000."
+nrows=$(grep -c '^| [a-z]*, n = ' "$rt")
+if [ "$nrows" -eq 4 ]; then ok readme-rows; else bad readme-rows "$nrows rows, expected 4"; fi
+# no mismatch, no meta.txt, no build.txt
+mkdir "$tmp/rd2"
+expect readme-bare 0 "" "$SUM" "$tmp/rd2" "$tmp/moment.csv" "$tmp/helix.csv"
+has readme-no-mismatch "$tmp/rd2/readme-table.md" "mismatches: 0 (every result of the run equals CGAL's triangulation)"
+has readme-no-meta "$tmp/rd2/readme-table.md" "Run: commit ?, ?, mode ?; ?, ? cores; CGAL ?."
+if grep -q "Construction" "$tmp/rd2/readme-table.md"; then bad readme-no-build "a construction line without build.txt"; else
+    ok readme-no-build; fi
+if [ -n "$(tail -n 1 "$rt")" ] && [ -n "$(tail -n 1 "$tmp/rd2/readme-table.md")" ]; then ok readme-no-trailing-blank; else
+    bad readme-no-trailing-blank "the table file ends with a blank line"; fi
+
+# readme-table.sh: the lines between the markers replaced, nothing else
+printf '# Title\n\ntext before\n<!-- bench-table:begin -->\nold table\n\nold line\n<!-- bench-table:end -->\ntext after\n' \
+    >"$tmp/README.md"
+{ printf '# Title\n\ntext before\n<!-- bench-table:begin -->\n\n'; cat "$rt"
+  printf '\n<!-- bench-table:end -->\ntext after\n'; } >"$tmp/want.md"
+expect put-runs 0 "" sh "$PUT" "$rt" "$tmp/README.md"
+if cmp -s "$tmp/README.md" "$tmp/want.md"; then ok put-replaces; else
+    bad put-replaces "$(diff "$tmp/want.md" "$tmp/README.md" | head -c 300)"; fi
+expect put-again 0 "" sh "$PUT" "$rt" "$tmp/README.md"
+if cmp -s "$tmp/README.md" "$tmp/want.md"; then ok put-idempotent; else
+    bad put-idempotent "a second run changed the README"; fi
+printf '# Title\nno markers here\n' >"$tmp/plain.md"
+cp "$tmp/plain.md" "$tmp/plain0.md"
+expect put-no-markers 1 "bench-table:begin.*once.*found 0 and 0" sh "$PUT" "$rt" "$tmp/plain.md"
+printf 'a\n<!-- bench-table:begin -->\nb\n' >"$tmp/half.md"
+expect put-no-end 1 "found 1 and 0" sh "$PUT" "$rt" "$tmp/half.md"
+printf '<!-- bench-table:end -->\nb\n<!-- bench-table:begin -->\n' >"$tmp/swapped.md"
+expect put-swapped 1 "comes before" sh "$PUT" "$rt" "$tmp/swapped.md"
+printf '<!-- bench-table:begin -->\n<!-- bench-table:end -->\n<!-- bench-table:end -->\n' >"$tmp/twice.md"
+expect put-twice 1 "found 1 and 2" sh "$PUT" "$rt" "$tmp/twice.md"
+expect put-no-table 1 "cannot read the table" sh "$PUT" "$tmp/none.md" "$tmp/README.md"
+expect put-usage 2 "usage" sh "$PUT"
+if cmp -s "$tmp/plain.md" "$tmp/plain0.md" && cmp -s "$tmp/README.md" "$tmp/want.md"; then
+    ok put-unchanged-on-error; else bad put-unchanged-on-error "a failed run changed its README"; fi
 exit $failed
