@@ -358,14 +358,3 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
     l->nring = k;
     return DD_OK;
 }
-
-size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max)
-{
-    size_t n = 0;
-    for (uint32_t s = 0; s < l->ntri; s++) {
-        if (l->lv[3 * s] == DD_DEAD) continue;
-        if (n < max) memcpy(out3 + 3 * n, l->lv + 3 * s, 3 * sizeof *out3);
-        n++;
-    }
-    return n;
-}

@@ -55,7 +55,4 @@ dd_status dd_link_extract(dd_link *l, struct dd_del *d);
  * triangles are l->ring_tri[0 .. l->nnew).                               */
 dd_status dd_link_delete(dd_link *l, struct dd_del *d, uint32_t p);
 
-/* The link's live triangles as sorted vertex triples (for the tests). */
-size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max);
-
 #endif
