@@ -342,6 +342,34 @@ int remove_rnd(Main_dt &dt, Vertex_handle v, uint64_t seed)
     return 0;
 }
 
+/* The cell as its four input indices sorted, -1 for the infinite vertex. */
+std::array<int32_t, 4> canonical_cell(const Main_dt &dt, Cell_handle c)
+{
+    std::array<int32_t, 4> t;
+    for (std::size_t k = 0; k < 4; k++) {
+        const Vertex_handle w = c->vertex(static_cast<int>(k));
+        t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
+    }
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+/* Sorts and deduplicates the cells and hands them out as a malloc'd array. */
+int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, size_t *ntets)
+{
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    int32_t *out = static_cast<int32_t *>(
+        std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
+    if (out == NULL)
+        return 1;
+    for (std::size_t i = 0; i < all.size(); i++)
+        std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
+    *tets = out;
+    *ntets = all.size();
+    return 0;
+}
+
 } // namespace
 
 extern "C" {
@@ -404,55 +432,6 @@ void dd_cgal_free(dd_cgal *c)
         delete c;
     } catch (...) {
     }
-}
-
-int dd_cgal_dimension(const dd_cgal *c)
-{
-    return c ? c->dt.dimension() : -2;
-}
-
-size_t dd_cgal_num_cells(const dd_cgal *c)
-{
-    return c ? c->dt.number_of_cells() : 0;
-}
-
-uint32_t dd_cgal_degree(const dd_cgal *c, uint32_t v)
-{
-    if (c == NULL || !has_vertex(c, v))
-        return 0;
-    try {
-        return static_cast<uint32_t>(c->dt.degree(c->vh[v]));
-    } catch (...) {
-        return 0;
-    }
-}
-
-/* The cell as its four input indices sorted, -1 for the infinite vertex. */
-std::array<int32_t, 4> canonical_cell(const Main_dt &dt, Cell_handle c)
-{
-    std::array<int32_t, 4> t;
-    for (std::size_t k = 0; k < 4; k++) {
-        const Vertex_handle w = c->vertex(static_cast<int>(k));
-        t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
-    }
-    std::sort(t.begin(), t.end());
-    return t;
-}
-
-/* Sorts and deduplicates the cells and hands them out as a malloc'd array. */
-int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, size_t *ntets)
-{
-    std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    int32_t *out = static_cast<int32_t *>(
-        std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
-    if (out == NULL)
-        return 1;
-    for (std::size_t i = 0; i < all.size(); i++)
-        std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
-    *tets = out;
-    *ntets = all.size();
-    return 0;
 }
 
 int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
