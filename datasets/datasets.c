@@ -796,15 +796,6 @@ static const dataset datasets[] = {
 };
 #define NUM_DATASETS (sizeof datasets / sizeof *datasets)
 
-/* Same names, same order as the table above. */
-const char *const dd_dataset_names[] = {
-    "moment", "helix", "uniform", "sphere", "grid", "cosphere", "layers",
-    "grid-perturbed", "bunny", "elephant", "armadillo", "camel", "cow",
-    "dragon", "eight", "fandisk", NULL};
-_Static_assert(sizeof dd_dataset_names / sizeof *dd_dataset_names
-                   == NUM_DATASETS + 1,
-               "dd_dataset_names and datasets[] must list the same sets");
-
 dd_status dd_gen(const char *name, uint32_t n, uint64_t seed,
                  double **xyz, uint32_t *np, char *msg, size_t msglen)
 {
