@@ -26,8 +26,10 @@ struct dd_grr {
     dd_trihash dh;                /* dummy cells by their other 3 vertices   */
 };
 
-void dd_grr_free(dd_grr *g)
+/* Frees a GRR scratch (the free function of its scratch kind). */
+static void grr_free(void *p)
 {
+    dd_grr *g = p;
     if (!g) return;
     dd_link_free(&g->link);
     free(g->candpos); free(g->rempos);
@@ -264,8 +266,7 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
 
 /* ---- GRR-CONSTRUCT --------------------------------------------------------- */
 
-static void grr_free_scratch(void *g) { dd_grr_free(g); }
-static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free_scratch};
+static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free};
 
 static dd_status get_grr(dd_del *d, dd_grr **out)
 {

@@ -63,8 +63,6 @@ uint32_t dd_grr_rand(dd_grr *g);
 /* Counts a sampling fallback (reported in the deletion statistics). */
 void dd_grr_fallback(dd_grr *g);
 
-void dd_grr_free(dd_grr *g);
-
 /* ---- for constructions other than GRR-CONSTRUCT (grr-brio) --------------- */
 
 /* Extracts the link of d->q and fills the sampling sets. */
