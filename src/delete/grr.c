@@ -86,11 +86,11 @@ static dd_status cand_put(dd_grr *g, uint32_t v, uint32_t deg)
     return dd_vec_push(s, v);
 }
 
-uint32_t dd_grr_rand(dd_grr *g) { return dd_del_rand(g->d); }
-void dd_grr_fallback(dd_grr *g) { g->d->fallbacks++; }
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v) { return g->link.deg[v]; }
 
-uint32_t dd_grr_random_lowdeg(dd_grr *g)
+/* A random link vertex of degree <= DD_LOWDEG, uniform over them (base
+ * points excluded), or DD_NONE when there is none.                     */
+static uint32_t random_lowdeg(dd_grr *g)
 {
     size_t n = 0;
     for (int k = 0; k <= DD_LOWDEG; k++) n += g->cand[k].n;
@@ -101,6 +101,8 @@ uint32_t dd_grr_random_lowdeg(dd_grr *g)
     return g->cand[k].a[r];
 }
 
+/* A random link vertex of the least degree if that is <= DD_LOWDEG,
+ * else DD_NONE.                                                         */
 static uint32_t random_mindeg(dd_grr *g)
 {
     for (int k = 0; k <= DD_LOWDEG; k++)
@@ -108,7 +110,8 @@ static uint32_t random_mindeg(dd_grr *g)
     return DD_NONE;
 }
 
-uint32_t dd_grr_random_any(dd_grr *g)
+/* A random remaining link vertex (base points excluded), or DD_NONE. */
+static uint32_t random_any(dd_grr *g)
 {
     return g->rem.n ? g->rem.a[dd_del_rand(g->d) % g->rem.n] : DD_NONE;
 }
@@ -118,13 +121,15 @@ static uint32_t or_any(dd_grr *g, uint32_t u)
 {
     if (u != DD_NONE) return u;
     g->d->fallbacks++;
-    return dd_grr_random_any(g);
+    return random_any(g);
 }
 
 uint32_t dd_grr_sample_mindeg(dd_grr *g) { return or_any(g, random_mindeg(g)); }
-uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, dd_grr_random_lowdeg(g)); }
+uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, random_lowdeg(g)); }
 
-uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
+/* Writes v's link neighbours (the infinite vertex included) to out, in
+ * ring order; returns how many (at most max).                            */
+static uint32_t link_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
 {
     const dd_link *l = &g->link;
     uint32_t t0 = l->ltri[v], t = t0, k = 0;
@@ -137,6 +142,26 @@ uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t 
         t = l->ln[3 * t + (m + 1) % 3] / 3;
     } while (t != t0 && k <= l->ntri);
     return k < max ? k : max;
+}
+
+uint32_t dd_grr_sample_edge(dd_grr *g, uint32_t *guide)
+{
+    uint32_t nb[DD_LOWDEG + 1], u = DD_NONE;
+    for (int tries = 0; tries < 8; tries++) {
+        u = random_lowdeg(g);
+        if (u == DD_NONE) break;
+        uint32_t du = dd_grr_degree(g, u), k = link_neighbours(g, u, nb, DD_LOWDEG + 1), ok = 0;
+        for (uint32_t j = 0; j < k; j++)
+            if (nb[j] != DD_INF && du + dd_grr_degree(g, nb[j]) <= 15) nb[ok++] = nb[j];
+        if (ok) {
+            *guide = nb[dd_del_rand(g->d) % ok];
+            return u;
+        }
+    }
+    g->d->fallbacks++;
+    if (u == DD_NONE) u = random_any(g);
+    *guide = dd_grr_lowest_neighbour(g, u);
+    return u;
 }
 
 uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v)
