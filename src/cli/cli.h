@@ -58,7 +58,9 @@ int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, 
 int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
                         int *rc);
 /* The seeded draws of the CLI (bench and check samples, seq-bench's
- * shuffle): one xorshift64 step of *x, then a number below m.           */
+ * shuffle): one xorshift64 step of *x, then a number below m.  Its own
+ * copy of the engine's dd_xorshift (mesh.h), which the CLI cannot see:
+ * it uses the public headers only.                                     */
 static inline uint32_t rand_below(uint64_t *x, uint32_t m)
 {
     *x ^= *x << 13; *x ^= *x >> 7; *x ^= *x << 17;

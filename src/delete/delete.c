@@ -80,10 +80,7 @@ void dd_del_strategy_stats(dd_del *d, const char *const *names, uint32_t n)
 
 uint32_t dd_del_rand(dd_del *d)
 {
-    uint64_t x = d->rng;
-    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-    d->rng = x;
-    return (uint32_t)(x >> 32);
+    return dd_xorshift(&d->rng);
 }
 
 void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n)

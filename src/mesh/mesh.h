@@ -184,7 +184,7 @@ struct dd_tri {
     uint32_t epoch;
     uint32_t hint;            /* where the next point location starts    */
 
-    uint64_t rng;             /* xorshift state for walks                */
+    uint64_t rng;             /* dd_xorshift state for walks             */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
 
@@ -285,12 +285,22 @@ static inline uint64_t dd_mix64(uint64_t z)
     return z ^ (z >> 31);
 }
 
+/* The engine's one pseudo-random generator: a step of Marsaglia's
+ * xorshift64 (shifts 13, 7, 17) of *state, which must not be 0; returns
+ * the high half of the new state.  Seeded per use, so that the same
+ * input does the same work.                                             */
+static inline uint32_t dd_xorshift(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+    *state = x;
+    return (uint32_t)(x >> 32);
+}
+
+/* A random number for t's walks (dd_walk_locate). */
 static inline uint32_t dd_rand(dd_tri *t)
 {
-    uint64_t x = t->rng;
-    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-    t->rng = x;
-    return (uint32_t)(x >> 32);
+    return dd_xorshift(&t->rng);
 }
 
 /* Cell storage. dd_reserve_cells makes room for k more cells so that the
