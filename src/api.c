@@ -270,14 +270,6 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
-static dd_status grow_u32(uint32_t **a, size_t n)
-{
-    uint32_t *b = realloc(*a, n * sizeof **a);
-    if (!b) return DD_ERR_NOMEM;
-    *a = b;
-    return DD_OK;
-}
-
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
     t->err[0] = 0;
@@ -289,15 +281,14 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
         return dd_fail(t, DD_ERR_NOMEM, "too many points");
     if (t->nvid == t->cap_v) {
         size_t cap = (size_t)t->cap_v * 2;
-        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
-        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->xyz = xyz;
-        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap))
+        if (dd_grow(&t->xyz, 3 * cap, sizeof *t->xyz) || dd_grow(&t->vcell, cap, sizeof *t->vcell) ||
+            dd_grow(&t->v2in, cap, sizeof *t->v2in))
             return dd_fail(t, DD_ERR_NOMEM, "out of memory");
         t->cap_v = (uint32_t)cap;
     }
     if (t->np == t->cap_in) {
-        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        if (dd_grow(&t->in2v, (size_t)t->cap_in * 2, sizeof *t->in2v))
+            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
         t->cap_in *= 2;
     }
     uint32_t v = t->nvid;

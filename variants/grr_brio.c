@@ -44,15 +44,6 @@ static void brio_buf_free(void *p)
     free(b);
 }
 
-static int grow(uint32_t **a, size_t n, int zero)
-{
-    uint32_t *x = zero ? calloc(n, sizeof *x) : malloc(n * sizeof *x);
-    if (!x) return 1;
-    free(*a);
-    *a = x;
-    return 0;
-}
-
 static const dd_scratch_kind brio_kind = {"grr-brio", brio_buf_free};
 
 static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
@@ -64,16 +55,20 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
         dd_status s = dd_del_keep_scratch(d, &brio_kind, b);
         if (s != DD_OK) return s;
     }
+    const size_t u = sizeof(uint32_t);
     if (b->vcap < d->t->cap_v) {
         size_t n = d->t->cap_v;
-        if (grow(&b->loc, n, 0) || grow(&b->mark, n, 1) || grow(&b->rmark, n, 1)) return DD_ERR_NOMEM;
+        if (dd_grow(&b->loc, n, u) || dd_grow(&b->mark, n, u) || dd_grow(&b->rmark, n, u)) return DD_ERR_NOMEM;
+        memset(b->mark, 0, n * u);           /* marks of generation 0 */
+        memset(b->rmark, 0, n * u);
         b->vcap = n;
         b->gen = 0;
     }
     if (b->lcap < 2 * (deg + 2)) {   /* seq holds the records and a round */
         size_t n = 2 * (deg + 2);
-        if (grow(&b->ids, n, 0) || grow(&b->tri, 6 * n + 24, 0) || grow(&b->parent, n, 0) ||
-            grow(&b->order, n, 0) || grow(&b->seq, n, 0) || grow(&b->guide, n, 0) || grow(&b->cur, n, 0))
+        if (dd_grow(&b->ids, n, u) || dd_grow(&b->tri, 6 * n + 24, u) || dd_grow(&b->parent, n, u) ||
+            dd_grow(&b->order, n, u) || dd_grow(&b->seq, n, u) || dd_grow(&b->guide, n, u) ||
+            dd_grow(&b->cur, n, u))
             return DD_ERR_NOMEM;
         b->lcap = n;
     }

@@ -45,13 +45,9 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
         t->del = d;
     }
     if (d->vmark_cap < t->cap_v) {
-        uint32_t *m = realloc(d->vmark, (size_t)t->cap_v * sizeof *m);
-        if (!m) return DD_ERR_NOMEM;
-        d->vmark = m;
-        uint32_t *c = realloc(d->qdt_vcell, (size_t)t->cap_v * sizeof *c);
-        if (!c) return DD_ERR_NOMEM;
-        d->qdt_vcell = c;
-        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *m);
+        if (dd_grow(&d->vmark, t->cap_v, sizeof *d->vmark) || dd_grow(&d->qdt_vcell, t->cap_v, sizeof *d->qdt_vcell))
+            return DD_ERR_NOMEM;
+        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *d->vmark);
         d->vmark_cap = t->cap_v;
     }
     d->qdt->xyz = t->xyz;

@@ -201,12 +201,8 @@ static dd_status init(dd_grr *g)
     dd_del *d = g->d;
     dd_tri *t = d->t;
     if (g->vcap < t->cap_v) {
-        uint32_t *a = realloc(g->candpos, (size_t)t->cap_v * sizeof *a);
-        if (!a) return DD_ERR_NOMEM;
-        g->candpos = a;
-        a = realloc(g->rempos, (size_t)t->cap_v * sizeof *a);
-        if (!a) return DD_ERR_NOMEM;
-        g->rempos = a;
+        if (dd_grow(&g->candpos, t->cap_v, sizeof *g->candpos) || dd_grow(&g->rempos, t->cap_v, sizeof *g->rempos))
+            return DD_ERR_NOMEM;
         g->vcap = t->cap_v;
     }
     dd_status s = dd_link_extract(&g->link, d);

@@ -32,11 +32,29 @@ void dd_link_free(dd_link *l)
     memset(l, 0, sizeof *l);
 }
 
-static dd_status grow(uint32_t **a, size_t n)
+/* Sizes l's arrays for d: per star cell (one link triangle each), per
+ * vertex id of d->t, and per ring (the neighbours of a link vertex, at
+ * most d->nbr.n + 1, the infinite vertex included).                   */
+static dd_status fit_arrays(dd_link *l, const dd_del *d)
 {
-    uint32_t *b = realloc(*a, (n ? n : 1) * sizeof **a);
-    if (!b) return DD_ERR_NOMEM;
-    *a = b;
+    const size_t u = sizeof(uint32_t), n = d->star.n, nv = d->t->cap_v, r = d->nbr.n + 2;
+    if (l->cap < n) {
+        if (dd_grow(&l->lv, 3 * n, u) || dd_grow(&l->ln, 3 * n, u)) return DD_ERR_NOMEM;
+        l->cap = (uint32_t)n;
+    }
+    if (l->vcap < nv) {
+        if (dd_grow(&l->ltri, nv, u) || dd_grow(&l->deg, nv, u) || dd_grow(&l->rpos, nv, u) ||
+            dd_grow(&l->rmark, nv, u))
+            return DD_ERR_NOMEM;
+        memset(l->rmark, 0, nv * u);
+        l->vcap = (uint32_t)nv;
+    }
+    if (l->ring_cap < r) {
+        if (dd_grow(&l->ring, r, u) || dd_grow(&l->ring_tri, r, u) || dd_grow(&l->ring_out, r, u) ||
+            dd_grow(&l->newtri, 4 * r + 12, u))
+            return DD_ERR_NOMEM;
+        l->ring_cap = (uint32_t)r;
+    }
     return DD_OK;
 }
 
@@ -44,23 +62,7 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
 {
     dd_tri *t = d->t;
     uint32_t n = (uint32_t)d->star.n;
-    if (l->cap < n) {
-        if (grow(&l->lv, 3 * (size_t)n) || grow(&l->ln, 3 * (size_t)n)) return DD_ERR_NOMEM;
-        l->cap = n;
-    }
-    if (l->vcap < t->cap_v) {
-        if (grow(&l->ltri, t->cap_v) || grow(&l->deg, t->cap_v) || grow(&l->rpos, t->cap_v) ||
-            grow(&l->rmark, t->cap_v))
-            return DD_ERR_NOMEM;
-        memset(l->rmark, 0, (size_t)t->cap_v * sizeof *l->rmark);
-        l->vcap = t->cap_v;
-    }
-    if (l->ring_cap < d->nbr.n + 2) {
-        size_t r = d->nbr.n + 2;
-        if (grow(&l->ring, r) || grow(&l->ring_tri, r) || grow(&l->ring_out, r) || grow(&l->newtri, 4 * r + 12))
-            return DD_ERR_NOMEM;
-        l->ring_cap = (uint32_t)r;
-    }
+    if (fit_arrays(l, d) != DD_OK) return DD_ERR_NOMEM;
     /* Star slot of a cell: through its stamp (base + slot) when the star
      * fits in one pass's marks, else through its link triangle in
      * collect_star's hash.                                                */

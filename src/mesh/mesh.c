@@ -14,12 +14,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+dd_status dd_grow(void *pp, size_t n, size_t size)
+{
+    void *p;
+    memcpy(&p, pp, sizeof p);           /* pp is a T **, not a void ** */
+    if (n == 0) n = 1;
+    if (n > SIZE_MAX / size) return DD_ERR_NOMEM;
+    p = realloc(p, n * size);
+    if (!p) return DD_ERR_NOMEM;
+    memcpy(pp, &p, sizeof p);
+    return DD_OK;
+}
+
 dd_status dd_vec_reserve(dd_vec *v, size_t cap)
 {
     if (cap <= v->cap) return DD_OK;
-    uint32_t *a = realloc(v->a, cap * sizeof *a);
-    if (!a) return DD_ERR_NOMEM;
-    v->a = a;
+    if (dd_grow(&v->a, cap, sizeof *v->a) != DD_OK) return DD_ERR_NOMEM;
     v->cap = cap;
     return DD_OK;
 }

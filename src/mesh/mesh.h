@@ -133,6 +133,13 @@ static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t 
 
 void dd_trihash_free(dd_trihash *h);
 
+/* Resizes the array whose pointer is at pp (a T ** for any object type
+ * T) to n elements of `size` bytes, as realloc (the first elements
+ * kept; n = 0 keeps room for one).  DD_ERR_NOMEM, the array unchanged,
+ * when the memory is refused.  The engine's one growth helper for
+ * arrays sized by hand; dd_vec below grows itself with it.              */
+dd_status dd_grow(void *pp, size_t n, size_t size);
+
 /* A growable array of uint32_t (scratch; reused, never shrunk). */
 typedef struct dd_vec {
     uint32_t *a;
