@@ -192,44 +192,24 @@ uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max)
     return (uint32_t)d->nbr.n;
 }
 
-static int cmp_cell4(const void *a, const void *b)
-{
-    const int32_t *p = a, *q = b;
-    for (int i = 0; i < 4; i++)
-        if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
-    return 0;
-}
-
+/* The cells of the stars of vs[0..n), listed (a cell in two stars
+ * twice), then their canonical form.                                    */
 dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets)
 {
-    dd_del *d;
-    size_t cap = 64, k = 0;
-    int32_t *a = malloc(4 * cap * sizeof *a);
-    if (!a) return DD_ERR_NOMEM;
-    for (size_t i = 0; i < n; i++) {
-        dd_status s = dd_del_star_of(t, vs[i], &d);
-        if (s != DD_OK) { free(a); return s; }
-        for (size_t j = 0; j < d->star.n; j++) {
-            if (k == cap) {
-                int32_t *b = realloc(a, 8 * cap * sizeof *a);
-                if (!b) { free(a); return DD_ERR_NOMEM; }
-                a = b;
-                cap *= 2;
-            }
-            const uint32_t *v = dd_tv(t, d->star.a[j]);
-            int32_t *o = a + 4 * k++;
-            for (int m = 0; m < 4; m++) o[m] = dd_input_index(t, v[m]);
-            for (int x = 1; x < 4; x++)          /* sort the four */
-                for (int y = x; y > 0 && o[y - 1] > o[y]; y--) { int32_t s2 = o[y]; o[y] = o[y - 1]; o[y - 1] = s2; }
+    dd_vec cells = {NULL, 0, 0};
+    dd_status s = DD_OK;
+    for (size_t i = 0; i < n && s == DD_OK; i++) {
+        dd_del *d;
+        s = dd_del_star_of(t, vs[i], &d);
+        if (s == DD_OK) s = dd_vec_room(&cells, d->star.n);
+        if (s == DD_OK) {
+            memcpy(cells.a + cells.n, d->star.a, d->star.n * sizeof *cells.a);
+            cells.n += d->star.n;
         }
     }
-    qsort(a, k, 4 * sizeof *a, cmp_cell4);
-    size_t u = 0;
-    for (size_t i = 0; i < k; i++)
-        if (u == 0 || cmp_cell4(a + 4 * (u - 1), a + 4 * i)) memmove(a + 4 * u++, a + 4 * i, 4 * sizeof *a);
-    *tets = a;
-    *ntets = u;
-    return DD_OK;
+    if (s == DD_OK) s = dd_canonical_of_cells(t, cells.a, cells.n, tets, ntets);
+    dd_vec_free(&cells);
+    return s;
 }
 
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)

@@ -389,6 +389,13 @@ static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
     return v == DD_INF ? -1 : (int32_t)t->v2in[v];
 }
 
+/* Canonical form (dtdel.h, dd_canonical) of the cells cells[0..n) of t:
+ * each as its four input indices sorted ascending (-1 for DD_INF), the
+ * list sorted, repeated cells once.  *tets is malloc'd, 4 * *ntets ints.
+ * The one builder behind dd_canonical and dd_local_canonical.           */
+dd_status dd_canonical_of_cells(const dd_tri *t, const uint32_t *cells, size_t n, int32_t **tets,
+                                size_t *ntets);
+
 /* A scratch triangulation with its own cells that borrows the points
  * (xyz, v2in, vcell: the caller sets them) of another one.              */
 dd_status dd_tri_alloc_borrowed(dd_tri **out);
