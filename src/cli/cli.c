@@ -328,8 +328,9 @@ static const command commands[] = {
      "row: deleting should cost at most twice that).", cmd_time},
     {"check", "check FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]",
      "Deletes K sampled vertices (default 20), each from DT(S), with each\n"
-     "variant (default all, cgal-rnd included), and compares every result\n"
-     "with CGAL's canonical form; --sequence deletes them one after another\n"
+     "variant (default all: the engine's strategies and cgal-rnd), and\n"
+     "compares every result with CGAL's remove(), the reference (so cgal\n"
+     "itself is no variant here); --sequence deletes them one after another\n"
      "without re-inserting.  Prints matched/total per variant; exit 1 on any\n"
      "mismatch.", cmd_check},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
