@@ -111,6 +111,11 @@ int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
     return 0;
 }
 
+int same_canonical(const int32_t *a, size_t na, const int32_t *b, size_t nb)
+{
+    return na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+}
+
 void write_tets(const int32_t *tets, size_t n)
 {
     for (size_t k = 0; k < n; k++)
@@ -265,7 +270,7 @@ static int cmd_build_bench(int argc, char **argv)
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
     if (c && dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(c, &b, &nb))
-        same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+        same = same_canonical(a, na, b, nb);
     free(a);
     free(b);
     double to = median_of(ours, reps), tc = median_of(theirs, reps);   /* sorted now */

@@ -48,6 +48,11 @@ int find_row(const char *name, row *out);
  * for CGAL); returns 0 on success.  Reinsert undoes it.                  */
 int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed);
 int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
+/* The canonical form of the row's triangulation (malloc'd); 0 on
+ * success.                                                              */
+int row_canonical(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n);
+/* Whether two canonical forms are the same list of cells. */
+int same_canonical(const int32_t *a, size_t na, const int32_t *b, size_t nb);
 /* Points of a generated dataset (dd_gen); 0, or the exit status after a
  * message on stderr: EXIT_USAGE for an unknown dataset, else EXIT_INPUT. */
 int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np);

@@ -115,14 +115,9 @@ static int load_both(const char *cmd, const char *path, int want_cgal, dd_tri **
     return 0;
 }
 
-static int canonical_of(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n)
+int row_canonical(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n)
 {
     return r->kind == ROW_ENGINE ? dd_canonical(t, a, n) != DD_OK : dd_cgal_canonical(g, a, n);
-}
-
-static int same_canon(const int32_t *a, size_t na, const int32_t *b, size_t nb)
-{
-    return na == nb && !memcmp(a, b, 4 * na * sizeof *a);
 }
 
 /* ---- delete --------------------------------------------------------------- */
@@ -204,7 +199,7 @@ int cmd_delete(int argc, char **argv)
     if (!rc) {
         int32_t *a;
         size_t n;
-        if (canonical_of(&r, t, g, &a, &n)) rc = EXIT_INPUT;
+        if (row_canonical(&r, t, g, &a, &n)) rc = EXIT_INPUT;
         else { write_tets(a, n); free(a); }
     }
     free(vs);
@@ -371,8 +366,8 @@ int cmd_check(int argc, char **argv)
             }
             int32_t *a = NULL, *b = NULL;
             size_t na = 0, nb = 0;
-            if (!canonical_of(&rows[ri], t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) &&
-                same_canon(a, na, b, nb))
+            if (!row_canonical(&rows[ri], t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) &&
+                same_canonical(a, na, b, nb))
                 matched++;
             free(a);
             free(b);
