@@ -1,6 +1,7 @@
 /*
- * canon.c -- canonical output, its hash, status names and the small
- * accessors of the public header (DESIGN 8).
+ * canon.c -- canonical output (its one builder, dd_canonical_of_cells),
+ * its hash, status names, counters and the small accessors of the public
+ * header (DESIGN 8).
  *
  * Canonical form: each live cell as its four input indices sorted
  * ascending, -1 for the infinite vertex, the list sorted.  It depends only

@@ -64,7 +64,9 @@ static const uint8_t dd_edge_of[4][4][2] = {
     {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
 
 /* Stars whose boundary has at most this many vertices (the infinite and
- * dummy vertices count 3) are glued through a direct edge table.        */
+ * dummy vertices count 3) are glued through a direct edge table of
+ * DD_STAR_MAXV^2 entries (64 KB, kept in t->etab); larger ones through
+ * the edge hash.                                                        */
 #define DD_STAR_MAXV 128
 
 /* A pass's mark value (see Marks above). */
@@ -105,15 +107,17 @@ dd_status dd_gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_
 
 /* Empties h and sizes it for about `expect` entries. */
 dd_status dd_trihash_reset(dd_trihash *h, size_t expect);
+/* Puts val under the triple {a, b, c} (any order; a triple is put once),
+ * doubling h when half full.  DD_ERR_NOMEM, h unchanged, on refusal.   */
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val);
 /* The value stored under the triple {a, b, c}, or DD_NONE. */
 uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c);
 
 /* a <= b <= c, the same three values: least, greatest and, from the
- * exclusive or of all five, the middle.  No branch on the data's order
- * (compare and swap branches, whose outcome is that order, cost the
- * wrap's facet keys past 63 neighbours 3-6% of a deletion: moment
- * n = 256, helix n = 4000 and 16 000, alternated in one process).      */
+ * exclusive or of all five, the middle.  No branch on the data's order:
+ * compare-and-swap branches, whose outcome is that order, mispredict in
+ * the wrap's facet keys past 63 neighbours (`build/dtdel bench --dataset
+ * helix` shows what they cost).                                        */
 static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
 {
     const uint32_t x = *a, y = *b, z = *c;
@@ -124,6 +128,7 @@ static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
     *c = h;
 }
 
+/* The slot of the sorted triple (a, b, c) in a table of mask + 1 slots. */
 static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
 {
     uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
