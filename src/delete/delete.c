@@ -170,23 +170,10 @@ dd_status dd_del_link_hash(dd_del *d)
     return s;
 }
 
-/* Moves four affinely independent points of a[0..n) to a[0..3] (first
- * found in a's order) and records them in d->base.  DD_ERR_COPLANAR when
- * there are none.                                                        */
 dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
 {
     dd_tri *t = d->t;
-    if (n < 4) return DD_ERR_COPLANAR;
-    const double *p0 = dd_pt(t, a[0]), *p1 = dd_pt(t, a[1]);
-    size_t k = 2;
-    while (k < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, a[k])) == 0) k++;
-    if (k == n) return DD_ERR_COPLANAR;
-    uint32_t s = a[2]; a[2] = a[k]; a[k] = s;
-    const double *p2 = dd_pt(t, a[2]);
-    k = 3;
-    while (k < n && dd_orient3d(&t->pred, p0, p1, p2, dd_pt(t, a[k])) == 0) k++;
-    if (k == n) return DD_ERR_COPLANAR;
-    s = a[3]; a[3] = a[k]; a[k] = s;
+    if (n < 4 || dd_find_simplex(&t->pred, t->xyz, a, (uint32_t)n) != DD_OK) return DD_ERR_COPLANAR;
     memcpy(d->base, a, sizeof d->base);
     return DD_OK;
 }

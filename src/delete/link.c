@@ -207,13 +207,7 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
     ids[n++] = d->q;
     for (uint32_t j = 0; j < k; j++)
         if (l->ring[j] != DD_INF) ids[n++] = l->ring[j];
-    uint32_t i2 = 2, i3 = n;
-    const double *p0 = dd_pt(t, ids[0]), *p1 = n > 1 ? dd_pt(t, ids[1]) : NULL;
-    while (i2 < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, ids[i2])) == 0) i2++;
-    if (i2 < n)
-        for (i3 = i2 + 1; i3 < n; i3++)
-            if (dd_orient3d(&t->pred, p0, p1, dd_pt(t, ids[i2]), dd_pt(t, ids[i3])) != 0) break;
-    if (i2 >= n || i3 >= n) {
+    if (dd_find_simplex(&t->pred, t->xyz, ids, n) != DD_OK) {
         /* q and the ring are coplanar: only infinite link tetrahedra, the
          * fan of the finite ring edges around the infinite vertex.        */
         for (uint32_t j = 0; j < k; j++) {
@@ -225,8 +219,6 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
         *nt = f;
         return DD_OK;
     }
-    uint32_t s2 = ids[2]; ids[2] = ids[i2]; ids[i2] = s2;
-    uint32_t s3 = ids[3]; ids[3] = ids[i3]; ids[i3] = s3;
     dd_status s = dd_reserve_cells(x, 8 * n + 16);
     if (s == DD_OK) {
         uint32_t b4[4] = {ids[0], ids[1], ids[2], ids[3]};

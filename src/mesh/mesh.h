@@ -373,9 +373,13 @@ dd_status dd_build_insert(dd_tri *t, uint32_t v);
  * cells, in an empty t.  Room for 5 cells must be reserved.              */
 void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
 /* Moves four affinely independent points of the distinct points
- * pts[3 ids[k]..], k < n, to ids[0..3], the first found scanning in order;
- * DD_ERR_TOO_FEW, DD_ERR_COLLINEAR or DD_ERR_COPLANAR (with a message)
- * when there are none.                                                   */
+ * pts[3 ids[k]..], k < n, to ids[0..3]: ids[0] and ids[1], the first
+ * point off their line to ids[2], the first off their plane to ids[3].
+ * DD_ERR_TOO_FEW (n < 2), DD_ERR_COLLINEAR or DD_ERR_COPLANAR when there
+ * are none, without a message.  The one search for a first simplex.     */
+dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_t n);
+/* The same for construction: DD_ERR_TOO_FEW when n < 4, and a message
+ * in t->err on every failure.                                          */
 dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n);
 
 /* Empties the cell arrays (keeps their capacity), O(1). */
