@@ -48,7 +48,8 @@ const char *dd_variant_description(size_t i)
     return dd_variant_table[i]->description;
 }
 
-
+/* The strategy named `variant` (NULL: the default) in *var, clearing the
+ * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
 static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
 {
     t->err[0] = 0;
@@ -120,8 +121,8 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
  * on the order (the perturbed DT is unique), so they go in vertex id
  * order: the insertion order, BRIO rounds along a Hilbert curve, so that
  * consecutive deletions work in nearby cells and points, in space and in
- * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
- * against a random order, scratch harness).  Checked before the first:
+ * memory (faster than a random order: `build/dtdel seq-bench` times
+ * both).  Checked before the first:
  * every index a vertex and listed once, and the points left at least 4
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out

@@ -100,17 +100,11 @@ void dd_phase_end(dd_del *d, int phase)
 
 /* ---- step 1: star, link, neighbours -------------------------------------- */
 
-/* The star of q by a search over the cells through q, and its neighbours.
- * Without a branch on the marks (each candidate written at the end of its
- * list, which grows by the mark test) it ran no faster (uniform degree
- * [16,32), deletion / re-insertion, alternated runs: 1.89 against 1.84
- * with the branches), nor did a sew without a branch on inner and outer
- * facets (1.87 against 1.83).  Of the 44k instructions of a wrapped
- * deletion (callgrind on dtdel time, uniform 20000, vertex 102, degree
- * 19, 28 fill cells) this search makes 3.2k, the sew and the rest of
- * delete_vertex 5.4k, the wrap 35k (28k of them in w_run: 7.4k guessing,
- * 1.7k proving, the rest its bookkeeping of cells and facets);
- * re-inserting the vertex makes 26k.                                     */
+/* Step 1: the star of q (d->star) by a search over the cells through q,
+ * marked with a fresh epoch; q's finite neighbours (d->nbr, marked in
+ * d->vmark); the infinite cells of the star, q's degree, whether it is
+ * on the hull.  Each cell makes room for its three other vertices and
+ * neighbours once, so the pushes need no test.  O(degree).            */
 static dd_status collect_star(dd_del *d)
 {
     dd_tri *t = d->t;
@@ -178,6 +172,9 @@ dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
     return DD_OK;
 }
 
+/* The forced fill of a hull vertex whose finite neighbours are coplanar
+ * (delete.h): in d->qdt, every finite star cell with q replaced by
+ * DD_INF, glued to each other; d->fill lists them.                    */
 static dd_status fill_coplanar_hull(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
@@ -265,6 +262,9 @@ static void sew_recycle_star(dd_del *d, size_t k0)
     t->nfinite -= (uint32_t)d->star.n - d->star_inf;
 }
 
+/* Step 3 (delete.h): the fill in place of the star, glued to the
+ * outside, q gone.  Everything that can fail (the matching, the room)
+ * comes before the point of no return.                                */
 static dd_status sew(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
@@ -401,8 +401,7 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     return s;
 }
 
-/* The strategy named `variant` (NULL: the default) in *var, clearing the
- * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
+/* Step 1 alone, for the star queries of api.c. */
 dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
 {
     uint32_t v = 0;

@@ -58,6 +58,8 @@ typedef struct dd_scratch_slot {
     void *p;
 } dd_scratch_slot;
 
+/* Kinds of scratch one context can keep: four exist (GRR-CONSTRUCT,
+ * grr-brio, the compact conflict DT, gift wrapping), room for more.    */
 #define DD_SCRATCH_SLOTS 8
 
 typedef struct dd_del {

@@ -3,10 +3,10 @@
  *
  * Owns: the sampling sets (link vertices of degree <= 7, one set per
  * degree; all remaining link vertices; each an array plus a position per
- * vertex, O(1) update),
- * the removal sequence with its guides, the hash of dummy cells for
- * triangle guides, and guided point location.  Everything is scratch kept
- * in the deletion context and reused.
+ * vertex, O(1) update) and the sampling rules on them, the removal
+ * sequence with its guides, the hash of dummy cells for triangle guides,
+ * and guided point location.  Everything is scratch kept in the deletion
+ * context and reused.
  */
 #include "delete/grr.h"
 
@@ -42,6 +42,7 @@ static void grr_free(void *p)
 
 /* ---- sampling sets -------------------------------------------------------- */
 
+/* Adds v to the set s (pos[v]: its slot in s, DD_NONE when out), if out. */
 static dd_status set_add(dd_vec *s, uint32_t *pos, uint32_t v)
 {
     if (pos[v] != DD_NONE) return DD_OK;
@@ -49,6 +50,7 @@ static dd_status set_add(dd_vec *s, uint32_t *pos, uint32_t v)
     return dd_vec_push(s, v);
 }
 
+/* Takes v out of the set s, if in, the last element moving to its slot. */
 static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
 {
     uint32_t i = pos[v];
@@ -59,10 +61,11 @@ static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
     pos[v] = DD_NONE;
 }
 
-/* The low-degree sets: v (of link degree deg) into cand[deg], out of the
- * one it was in, if another.                                             */
+/* The low-degree sets cand[0..DD_LOWDEG]: candpos[v] = 8 * slot + degree
+ * while v is in one.                                                    */
 _Static_assert(DD_LOWDEG < 8, "grr: a degree must fit the 3 low bits of candpos");
 
+/* Takes v out of its low-degree set, if in one. */
 static void cand_del(dd_grr *g, uint32_t v)
 {
     uint32_t p = g->candpos[v];
@@ -74,6 +77,8 @@ static void cand_del(dd_grr *g, uint32_t v)
     g->candpos[v] = DD_NONE;
 }
 
+/* Puts v (of link degree deg) into cand[deg], out of the set it was in,
+ * if another.                                                           */
 static dd_status cand_put(dd_grr *g, uint32_t v, uint32_t deg)
 {
     uint32_t p = g->candpos[v];
@@ -196,6 +201,9 @@ static dd_status update_sets(dd_grr *g, uint32_t p)
     return s;
 }
 
+/* Readies g for this deletion: its per-vertex arrays sized, the link of
+ * q extracted, the sampling sets filled with every finite neighbour but
+ * the base points, the sequence and guides emptied.                   */
 static dd_status init(dd_grr *g)
 {
     dd_del *d = g->d;
@@ -289,6 +297,7 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
 
 static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free};
 
+/* The GRR scratch kept in d, made on first use. */
 static dd_status get_grr(dd_del *d, dd_grr **out)
 {
     dd_grr *g = dd_del_scratch(d, &grr_kind);

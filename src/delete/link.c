@@ -64,8 +64,8 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
     uint32_t n = (uint32_t)d->star.n;
     if (fit_arrays(l, d) != DD_OK) return DD_ERR_NOMEM;
     /* Star slot of a cell: through its stamp (base + slot) when the star
-     * fits in one pass's marks, else through its link triangle in
-     * collect_star's hash.                                                */
+     * fits in one pass's marks, else through its link triangle in the
+     * link-triangle hash (dd_del_link_hash).                              */
     int by_stamp = n <= DD_EPOCH_STEP_MAX;
     if (!by_stamp) {
         dd_status s = dd_del_link_hash(d);
