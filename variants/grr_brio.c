@@ -5,8 +5,8 @@
  * Gradation: starting from all deletable link vertices (the four base
  * points excepted), each round keeps every point with probability 1/2;
  * the points not kept form the round.  Per round, on the current link
- * DT^l(S_i + q): a spanning tree of maximum degree 3 (src/bdst.c, linear
- * time), rooted at a base point, is stored with its BFS order; then the
+ * DT^l(S_i + q): a spanning tree of maximum degree 3 (delete/bdst.h,
+ * linear time), rooted at a base point, is stored with its BFS order; then the
  * round's points are deleted from the link.  Construction: DT(x) of the
  * base, then the rounds in reverse; inside a round the points are
  * inserted in the BFS order of its tree, each located from its tree
@@ -21,9 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Scratch kept in the deletion context across deletions (d->vscratch):
- * per-vertex arrays sized to the vertex capacity, per-link arrays sized
- * to the largest degree seen.                                            */
+/* Scratch kept in the deletion context across deletions (a strategy
+ * scratch, dd_del_scratch): per-vertex arrays sized to the vertex
+ * capacity, per-link arrays sized to the largest degree seen.           */
 typedef struct brio_buf {
     uint32_t *loc, *mark, *rmark;   /* per vertex id                     */
     size_t vcap;
@@ -46,6 +46,8 @@ static void brio_buf_free(void *p)
 
 static const dd_scratch_kind brio_kind = {"grr-brio", brio_buf_free};
 
+/* The scratch kept in d (made on first use), sized for d's vertices and
+ * a link of degree deg.                                                 */
 static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
 {
     brio_buf *b = dd_del_scratch(d, &brio_kind);
@@ -76,6 +78,8 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
     return DD_OK;
 }
 
+/* GRR-BRIO's fill: the rounds on the link (steps 1-4), then the conflict
+ * DT built round by round from the last (step 5).                      */
 static dd_status brio_fill(dd_del *d)
 {
     dd_grr *g;

@@ -6,6 +6,7 @@
  *   dtdel tets FILE                  canonical DT(points of FILE)
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
+ *   dtdel variants                   the deletion strategies and CGAL rows
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
 #include "cli/cli.h"
@@ -42,7 +43,6 @@ int print_help(const char *cmd)
     return 0;
 }
 
-/* Parses a non-negative integer; returns 0 on success. */
 int parse_u64(const char *s, uint64_t *out)
 {
     if (!s || !*s || *s == '-') return -1;
@@ -222,9 +222,10 @@ int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const ch
 
 #define BUILD_MAX_REPS 9
 
-/* Each engine builds R times, alternating (dtdel, CGAL, dtdel, ...), so
- * that a slow spell of this shared machine hits both; the medians are
- * compared, as the deletion bench compares medians.                     */
+/* `dtdel build-bench`: each engine builds R times, in turns (dtdel,
+ * CGAL, dtdel, ...), so that a slow spell of the machine hits both; the
+ * medians are compared, as the deletion bench compares medians, and the
+ * last pair of triangulations with each other.                          */
 static int cmd_build_bench(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("build-bench");

@@ -24,12 +24,21 @@ typedef struct command {
     int (*run)(int argc, char **argv);
 } command;
 
+/* Says "dtdel CMD: " and fmt (with arg) on stderr, then CMD's usage;
+ * returns EXIT_USAGE.                                                   */
 int usage_error(const char *cmd, const char *fmt, const char *arg);
+/* 1 when an argument is --help or -h. */
 int wants_help(int argc, char **argv);
+/* Prints CMD's usage and help on stdout; returns 0. */
 int print_help(const char *cmd);
+/* Parses a non-negative decimal integer, all of s; 0 on success. */
 int parse_u64(const char *s, uint64_t *out);
+/* A monotonic clock, in seconds. */
 double now_seconds(void);
+/* The points of FILE (.xyz or .off, dd_read_points); 0, or EXIT_INPUT
+ * after a message naming the problem.                                   */
 int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np);
+/* A canonical form on stdout, one line "a b c d" a cell. */
 void write_tets(const int32_t *tets, size_t n);
 
 /* A row of a comparison: an engine strategy, "cgal" or "cgal-rnd". */
