@@ -370,6 +370,29 @@ int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, si
     return 0;
 }
 
+/* Deletes input vertex v of c with CGAL's remove() or, when rnd, with
+ * remove_rnd (seeded by seed).  0; 1, c unchanged, when v is no vertex,
+ * its removal would leave fewer than 4 or only coplanar points, or
+ * remove_rnd finds a mismatch.                                          */
+int remove_vertex(dd_cgal *c, uint32_t v, bool rnd, uint64_t seed)
+{
+    if (c == NULL || !has_vertex(c, v))
+        return 1;
+    try {
+        const Vertex_handle h = c->vh[v];
+        if (removal_drops_dimension(c->dt, h))
+            return 1;
+        if (!rnd)
+            c->dt.remove(h);
+        else if (remove_rnd(c->dt, h, seed) != 0)
+            return 1;
+        c->vh[v] = Vertex_handle();
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
 } // namespace
 
 extern "C" {
@@ -480,35 +503,12 @@ int dd_cgal_local_canonical(const dd_cgal *c, const uint32_t *verts, size_t nv,
 
 int dd_cgal_remove(dd_cgal *c, uint32_t v)
 {
-    if (c == NULL || !has_vertex(c, v))
-        return 1;
-    try {
-        const Vertex_handle h = c->vh[v];
-        if (removal_drops_dimension(c->dt, h))
-            return 1;
-        c->dt.remove(h);
-        c->vh[v] = Vertex_handle();
-        return 0;
-    } catch (...) {
-        return 1;
-    }
+    return remove_vertex(c, v, false, 0);
 }
 
 int dd_cgal_remove_rnd(dd_cgal *c, uint32_t v, uint64_t seed)
 {
-    if (c == NULL || !has_vertex(c, v))
-        return 1;
-    try {
-        const Vertex_handle h = c->vh[v];
-        if (removal_drops_dimension(c->dt, h))
-            return 1;
-        if (remove_rnd(c->dt, h, seed) != 0)
-            return 1;
-        c->vh[v] = Vertex_handle();
-        return 0;
-    } catch (...) {
-        return 1;
-    }
+    return remove_vertex(c, v, true, seed);
 }
 
 int dd_cgal_reinsert(dd_cgal *c, uint32_t v)
