@@ -72,7 +72,10 @@ static const uint8_t dd_edge_of[4][4][2] = {
 /* A pass's mark value (see Marks above). */
 typedef uint16_t dd_mark;
 #define DD_MARK_MAX UINT16_MAX
-#define DD_EPOCH_STEP_MAX 4096   /* most values one pass may take        */
+/* Most mark values one pass may take: link.c numbers the cells of stars
+ * up to this size by marks (larger ones through a hash), and the 16-bit
+ * counter then wraps, clearing every stamp, at most once in 16 passes. */
+#define DD_EPOCH_STEP_MAX 4096
 
 /* A slot of the edge hash used to glue the cells of a star together. */
 typedef struct dd_edge_slot {
