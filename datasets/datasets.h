@@ -16,9 +16,6 @@
 #include <stdint.h>
 #include "../src/dtdel.h"
 
-/* NULL-terminated list of dataset names understood by dd_gen. */
-extern const char *const dd_dataset_names[];
-
 /* Writes n points of dataset `name` into *xyz (3n doubles).  For real
  * models n is a maximum (0 = all vertices) and *np receives the count.
  * Unknown name: DD_ERR_PARSE; missing model archive: DD_ERR_IO.          */

@@ -4,21 +4,20 @@
 #   scripts/abbench.sh DTDEL_A DTDEL_B [DATASET [RUNS [MINDEG]]]
 #
 # Runs `dtdel bench --mode full --dataset DATASET` RUNS times with each
-# binary (default uniform, 10 runs), in turns A B, B A, A B, ... (the
-# second run of a pair was measured up to 2% slower on this VM, so the
-# order alternates), and compares their deletion / re-insertion ratios:
-# per run, the median over the vertices of degree >= MINDEG (default 32)
-# of the paired row's deletion time over the re-insertion's (auto-paired
-# and insert, timed in turn on the same vertex; see src/cli_bench.c).
-# Prints each run's median, then per binary the mean and standard
-# deviation over its runs, and B - A with its standard error.
+# binary (default uniform, 10 runs), in turns A B, B A, A B, ... (so that
+# neither binary always runs second of a pair), and compares their
+# deletion / re-insertion ratios: per run, the median over the vertices
+# of degree >= MINDEG (default 32) of the paired row's deletion time over
+# the re-insertion's (auto-paired and insert, timed in turn on the same
+# vertex; see src/cli/cli_bench.c).  Prints each run's median, then per
+# binary the mean and standard deviation over its runs, and B - A with
+# its standard error.
 #
 # Why not a loop timing the same vertex again and again: there the
-# branch predictor learns the very deletion, and the ratio read 1.75 at
-# uniform degree 48-63 where the bench read 1.9-2.1; changes that only
-# removed mispredicted branches showed nothing in such a loop and 2-3% in
-# the bench.  One bench run of the uniform set takes about 3 s; its
-# median moves by about 0.04 from run to run, hence the repetitions.
+# branch predictor learns the very deletion, so changes that only remove
+# mispredicted branches show nothing.  One bench run's median moves from
+# run to run by as much as the differences looked for, hence the
+# repetitions and the standard error.
 set -e
 [ $# -ge 2 ] || { echo "usage: $0 DTDEL_A DTDEL_B [DATASET [RUNS [MINDEG]]]" >&2; exit 2; }
 A=$1 B=$2 DS=${3:-uniform} N=${4:-10} LO=${5:-32}

@@ -48,7 +48,8 @@ const char *dd_variant_description(size_t i)
     return dd_variant_table[i]->description;
 }
 
-
+/* The strategy named `variant` (NULL: the default) in *var, clearing the
+ * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
 static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
 {
     t->err[0] = 0;
@@ -120,8 +121,8 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
  * on the order (the perturbed DT is unique), so they go in vertex id
  * order: the insertion order, BRIO rounds along a Hilbert curve, so that
  * consecutive deletions work in nearby cells and points, in space and in
- * memory (uniform 10^6, 10% of the vertices: 9.4 -> 6.6 us a deletion
- * against a random order, scratch harness).  Checked before the first:
+ * memory (faster than a random order: `build/dtdel seq-bench` times
+ * both).  Checked before the first:
  * every index a vertex and listed once, and the points left at least 4
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out
@@ -192,44 +193,24 @@ uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max)
     return (uint32_t)d->nbr.n;
 }
 
-static int cmp_cell4(const void *a, const void *b)
-{
-    const int32_t *p = a, *q = b;
-    for (int i = 0; i < 4; i++)
-        if (p[i] != q[i]) return p[i] < q[i] ? -1 : 1;
-    return 0;
-}
-
+/* The cells of the stars of vs[0..n), listed (a cell in two stars
+ * twice), then their canonical form.                                    */
 dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets)
 {
-    dd_del *d;
-    size_t cap = 64, k = 0;
-    int32_t *a = malloc(4 * cap * sizeof *a);
-    if (!a) return DD_ERR_NOMEM;
-    for (size_t i = 0; i < n; i++) {
-        dd_status s = dd_del_star_of(t, vs[i], &d);
-        if (s != DD_OK) { free(a); return s; }
-        for (size_t j = 0; j < d->star.n; j++) {
-            if (k == cap) {
-                int32_t *b = realloc(a, 8 * cap * sizeof *a);
-                if (!b) { free(a); return DD_ERR_NOMEM; }
-                a = b;
-                cap *= 2;
-            }
-            const uint32_t *v = dd_tv(t, d->star.a[j]);
-            int32_t *o = a + 4 * k++;
-            for (int m = 0; m < 4; m++) o[m] = dd_input_index(t, v[m]);
-            for (int x = 1; x < 4; x++)          /* sort the four */
-                for (int y = x; y > 0 && o[y - 1] > o[y]; y--) { int32_t s2 = o[y]; o[y] = o[y - 1]; o[y - 1] = s2; }
+    dd_vec cells = {NULL, 0, 0};
+    dd_status s = DD_OK;
+    for (size_t i = 0; i < n && s == DD_OK; i++) {
+        dd_del *d;
+        s = dd_del_star_of(t, vs[i], &d);
+        if (s == DD_OK) s = dd_vec_room(&cells, d->star.n);
+        if (s == DD_OK) {
+            memcpy(cells.a + cells.n, d->star.a, d->star.n * sizeof *cells.a);
+            cells.n += d->star.n;
         }
     }
-    qsort(a, k, 4 * sizeof *a, cmp_cell4);
-    size_t u = 0;
-    for (size_t i = 0; i < k; i++)
-        if (u == 0 || cmp_cell4(a + 4 * (u - 1), a + 4 * i)) memmove(a + 4 * u++, a + 4 * i, 4 * sizeof *a);
-    *tets = a;
-    *ntets = u;
-    return DD_OK;
+    if (s == DD_OK) s = dd_canonical_of_cells(t, cells.a, cells.n, tets, ntets);
+    dd_vec_free(&cells);
+    return s;
 }
 
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
@@ -270,14 +251,6 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
-static dd_status grow_u32(uint32_t **a, size_t n)
-{
-    uint32_t *b = realloc(*a, n * sizeof **a);
-    if (!b) return DD_ERR_NOMEM;
-    *a = b;
-    return DD_OK;
-}
-
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
     t->err[0] = 0;
@@ -289,15 +262,14 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
         return dd_fail(t, DD_ERR_NOMEM, "too many points");
     if (t->nvid == t->cap_v) {
         size_t cap = (size_t)t->cap_v * 2;
-        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
-        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->xyz = xyz;
-        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap))
+        if (dd_grow(&t->xyz, 3 * cap, sizeof *t->xyz) || dd_grow(&t->vcell, cap, sizeof *t->vcell) ||
+            dd_grow(&t->v2in, cap, sizeof *t->v2in))
             return dd_fail(t, DD_ERR_NOMEM, "out of memory");
         t->cap_v = (uint32_t)cap;
     }
     if (t->np == t->cap_in) {
-        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        if (dd_grow(&t->in2v, (size_t)t->cap_in * 2, sizeof *t->in2v))
+            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
         t->cap_in *= 2;
     }
     uint32_t v = t->nvid;

@@ -49,7 +49,8 @@ typedef enum dd_status {
     DD_NUM_STATUS
 } dd_status;
 
-/* A short fixed name for a status ("ok", "nan", "coplanar", ...). */
+/* A short fixed name for a status ("ok", "out of memory", "coplanar
+ * points", ...).                                                        */
 const char *dd_status_name(dd_status s);
 
 typedef struct dd_tri dd_tri;

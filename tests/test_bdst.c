@@ -1,6 +1,6 @@
 /*
  * test_bdst.c -- the degree-3 spanning tree of a triangulated sphere
- * (src/bdst.c; paper 4.2, DESIGN 6).
+ * (src/delete/bdst.c; paper 4.2, DESIGN 6).
  *
  * Inputs, each relabelled at random (vertex names, triangle order, corner
  * rotation, and half of them with the whole orientation reversed):

@@ -89,8 +89,8 @@ int main(int argc, char **argv)
     /* Point location follows the segment from the vertex nearest p of
      * the last star (mesh.c, locate_inexact): on the helix, where p's
      * predecessor on the Hilbert curve is usually its neighbour, it
-     * crosses ~21 cells a point at n = 4000; the visibility walk crossed
-     * 170 (262 with filtered tests and a random facet order).           */
+     * crosses a few tens of cells a point at n = 4000, the visibility
+     * walk several times as many: the bound 40 tells them apart.        */
     {
         double *h = NULL;
         uint32_t nh = 0;
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
         tl_check(&st, per < 40, "build/helix-4000/short-walk", "%.1f cells crossed a point (want < 40)", per);
         /* Re-inserting a deleted hull vertex from the hint the deletion
          * leaves: the exact walk tries first the hull facet the plain walk
-         * stopped at (it crossed 1300-2600 cells otherwise).             */
+         * stopped at (another facet could send it across the interior). */
         uint64_t most = 0;
         int failed = 0;
         for (int r = 0; t && r < 3; r++) {

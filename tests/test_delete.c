@@ -292,8 +292,7 @@ static int delete_each(dd_tri *t, uint32_t v, const char *const vars[2], canon g
  * result; the order of least degree must build fewer cells.  The vertex:
  * the centre of n points of a sphere, whose link has no hub, so that from
  * degree 600 auto does not try the wide guess and the conflict DT runs
- * (degree 700: 10503 cells against 11949; on the moment curve, where the
- * GRR ran before the narrow guesses, 18% fewer at degree 511).          */
+ * (dtdel delete --stats shows the cells each order builds).            */
 static void auto_least_degree(tl_state *st, uint32_t n)
 {
     uint32_t np;
@@ -333,14 +332,14 @@ static void auto_least_degree(tl_state *st, uint32_t n)
     free(p);
 }
 
-/* The exact-test budget of gift wrapping (wrap.c, W_EXACT_FROM) counts
- * what the tests cost.  On the moment curve, n = 2048, a deletion's proof
- * leaves ~7 000 tests to the predicates, ~2 000 of them past their
- * filters; counted whole, they declined every deletion there, to the
- * conflict DT, about twice as slow.  auto must now wrap with a proved
- * guess.  CGAL's remove() takes seconds at this degree, so the result is
- * checked by the perturbed empty-sphere test of every facet (dd_check)
- * and against grr-neighbor's, which never wraps.                        */
+/* The exact-test budget of gift wrapping (wrap.c, W_EXACT_FROM) weighs
+ * the tests it leaves to the predicates by their cost (w_spent): on the
+ * moment curve, n = 2048, a deletion's proof leaves thousands of tests
+ * to the predicates, most of them settled by the predicates' filters,
+ * and auto must wrap with a proved guess there, not decline to the
+ * slower conflict DT.  CGAL's remove() takes seconds at this degree, so
+ * the result is checked by the perturbed empty-sphere test of every
+ * facet (dd_check) and against grr-neighbor's, which never wraps.      */
 static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
 {
     uint32_t np;
@@ -489,10 +488,10 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
  *    itself, with no decline to the conflict DT.
  *  - Nearly cospherical neighbours (wrap-shift-guess/, points of a
  *    sphere, degree 24 and more): a guess on the plain lifts is refuted
- *    there (the quotients t/o differ by less than their rounding), and
- *    from 40 neighbours on the wrap declined to the conflict DT, 4.8x a
- *    re-insertion; it must now guess again on the shifted lifts, prove
- *    that guess on some vertices, and decline none.
+ *    there (the quotients t/o differ by less than their rounding); the
+ *    wrap must guess again on the shifted lifts, prove that guess on some
+ *    vertices, and decline none (not leave cavities of 40 neighbours and
+ *    more to the slower conflict DT).
  *  - Integer lifts (wrap-integer/, see wrap_integer): `lifts` >= 0 asks
  *    every wrap to have taken integer lifts (1) or rounded ones (0), or
  *    (2) none rounded and some with integer cofactors only, and none with
@@ -606,9 +605,9 @@ static void wrap_narrow_course(tl_state *st, const char *name, const double *pts
  * mod 4 and degree 24 or more is deleted with `variant` against CGAL
  * (wrap_one); some of index 0 mod 8 must have kept single-precision
  * answers in a proved guess, and hull steps, with at most one in ten
- * of those refuted (the floats' rounding rarely misleads them; scales
- * left from the deletion before refuted four of nine bunny deletions of
- * degree 48-95); and (sanitizer build) some of index 4 mod 8 must have
+ * of those refuted (the floats' rounding rarely misleads them; more
+ * refutations mean a pass read stale scales, such as those of the
+ * deletion before); and (sanitizer build) some of index 4 mod 8 must have
  * had such a guess refuted, and hull steps made in doubles instead, and
  * still end as CGAL's.                                                 */
 static void wrap_single_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant)
@@ -957,17 +956,16 @@ int main(int argc, char **argv)
         free(p);
         /* The moment curve at t = i/512, n = 300: each cavity has facets
          * with a point nearly in their plane, of unsure orientation, that
-         * is the apex; left out of the guess it refuted every guess, and
-         * from 40 neighbours on the wrap declined (wrap.c, wrap_guess's
-         * *unsure).  Every guess must now be proved.                     */
+         * is the apex; the guess must take such points (wrap.c,
+         * wrap_guess's *unsure), so that every guess is proved.          */
         p = gen("moment", 300, &np);
         wrap_guess_course(&st, "moment-300", p, np, -1, small ? 2 : 6, 5);
         free(p);
         /* The narrow guesses: on the helix, n = 4000 (degree ~140, every
          * link with hubs), the short lists hold for most vertices; for
          * 69, 70, 87, 89 and 105 the two-step guess holds after them.  (The
-         * helix's DT has ~70 cells a point: each comparison with CGAL's
-         * whole triangulation costs ~0.2 s, so few vertices.)           */
+         * helix's DT has many cells a point, and each comparison with
+         * CGAL's whole triangulation is slow: few vertices.)            */
         p = gen("helix", 4000, &np);
 #ifdef DD_TEST_BUILD
         const int narrow_want = 7;

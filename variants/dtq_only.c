@@ -6,7 +6,9 @@
  * each point is located by scanning the dummy cells of the conflict DT for
  * one in conflict with it (there always is one: the point becomes a link
  * vertex, so it destroys at least one link triangle).  Robust (only the
- * exact conflict test is used) and O(size of the link) per point.
+ * exact conflict test is used) and O(size of the link) per point.  A
+ * cavity of at most DD_QS_MAXV neighbours is built by the same algorithm
+ * in the compact structure of qsmall.h.
  */
 #include "delete/qsmall.h"
 

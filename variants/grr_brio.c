@@ -5,8 +5,8 @@
  * Gradation: starting from all deletable link vertices (the four base
  * points excepted), each round keeps every point with probability 1/2;
  * the points not kept form the round.  Per round, on the current link
- * DT^l(S_i + q): a spanning tree of maximum degree 3 (src/bdst.c, linear
- * time), rooted at a base point, is stored with its BFS order; then the
+ * DT^l(S_i + q): a spanning tree of maximum degree 3 (delete/bdst.h,
+ * linear time), rooted at a base point, is stored with its BFS order; then the
  * round's points are deleted from the link.  Construction: DT(x) of the
  * base, then the rounds in reverse; inside a round the points are
  * inserted in the BFS order of its tree, each located from its tree
@@ -21,9 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Scratch kept in the deletion context across deletions (d->vscratch):
- * per-vertex arrays sized to the vertex capacity, per-link arrays sized
- * to the largest degree seen.                                            */
+/* Scratch kept in the deletion context across deletions (a strategy
+ * scratch, dd_del_scratch): per-vertex arrays sized to the vertex
+ * capacity, per-link arrays sized to the largest degree seen.           */
 typedef struct brio_buf {
     uint32_t *loc, *mark, *rmark;   /* per vertex id                     */
     size_t vcap;
@@ -44,17 +44,10 @@ static void brio_buf_free(void *p)
     free(b);
 }
 
-static int grow(uint32_t **a, size_t n, int zero)
-{
-    uint32_t *x = zero ? calloc(n, sizeof *x) : malloc(n * sizeof *x);
-    if (!x) return 1;
-    free(*a);
-    *a = x;
-    return 0;
-}
-
 static const dd_scratch_kind brio_kind = {"grr-brio", brio_buf_free};
 
+/* The scratch kept in d (made on first use), sized for d's vertices and
+ * a link of degree deg.                                                 */
 static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
 {
     brio_buf *b = dd_del_scratch(d, &brio_kind);
@@ -64,16 +57,20 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
         dd_status s = dd_del_keep_scratch(d, &brio_kind, b);
         if (s != DD_OK) return s;
     }
+    const size_t u = sizeof(uint32_t);
     if (b->vcap < d->t->cap_v) {
         size_t n = d->t->cap_v;
-        if (grow(&b->loc, n, 0) || grow(&b->mark, n, 1) || grow(&b->rmark, n, 1)) return DD_ERR_NOMEM;
+        if (dd_grow(&b->loc, n, u) || dd_grow(&b->mark, n, u) || dd_grow(&b->rmark, n, u)) return DD_ERR_NOMEM;
+        memset(b->mark, 0, n * u);           /* marks of generation 0 */
+        memset(b->rmark, 0, n * u);
         b->vcap = n;
         b->gen = 0;
     }
     if (b->lcap < 2 * (deg + 2)) {   /* seq holds the records and a round */
         size_t n = 2 * (deg + 2);
-        if (grow(&b->ids, n, 0) || grow(&b->tri, 6 * n + 24, 0) || grow(&b->parent, n, 0) ||
-            grow(&b->order, n, 0) || grow(&b->seq, n, 0) || grow(&b->guide, n, 0) || grow(&b->cur, n, 0))
+        if (dd_grow(&b->ids, n, u) || dd_grow(&b->tri, 6 * n + 24, u) || dd_grow(&b->parent, n, u) ||
+            dd_grow(&b->order, n, u) || dd_grow(&b->seq, n, u) || dd_grow(&b->guide, n, u) ||
+            dd_grow(&b->cur, n, u))
             return DD_ERR_NOMEM;
         b->lcap = n;
     }
@@ -81,6 +78,8 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
     return DD_OK;
 }
 
+/* GRR-BRIO's fill: the rounds on the link (steps 1-4), then the conflict
+ * DT built round by round from the last (step 5).                      */
 static dd_status brio_fill(dd_del *d)
 {
     dd_grr *g;

@@ -342,6 +342,57 @@ int remove_rnd(Main_dt &dt, Vertex_handle v, uint64_t seed)
     return 0;
 }
 
+/* The cell as its four input indices sorted, -1 for the infinite vertex. */
+std::array<int32_t, 4> canonical_cell(const Main_dt &dt, Cell_handle c)
+{
+    std::array<int32_t, 4> t;
+    for (std::size_t k = 0; k < 4; k++) {
+        const Vertex_handle w = c->vertex(static_cast<int>(k));
+        t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
+    }
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+/* Sorts and deduplicates the cells and hands them out as a malloc'd array. */
+int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, size_t *ntets)
+{
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    int32_t *out = static_cast<int32_t *>(
+        std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
+    if (out == NULL)
+        return 1;
+    for (std::size_t i = 0; i < all.size(); i++)
+        std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
+    *tets = out;
+    *ntets = all.size();
+    return 0;
+}
+
+/* Deletes input vertex v of c with CGAL's remove() or, when rnd, with
+ * remove_rnd (seeded by seed).  0; 1, c unchanged, when v is no vertex,
+ * its removal would leave fewer than 4 or only coplanar points, or
+ * remove_rnd finds a mismatch.                                          */
+int remove_vertex(dd_cgal *c, uint32_t v, bool rnd, uint64_t seed)
+{
+    if (c == NULL || !has_vertex(c, v))
+        return 1;
+    try {
+        const Vertex_handle h = c->vh[v];
+        if (removal_drops_dimension(c->dt, h))
+            return 1;
+        if (!rnd)
+            c->dt.remove(h);
+        else if (remove_rnd(c->dt, h, seed) != 0)
+            return 1;
+        c->vh[v] = Vertex_handle();
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
 } // namespace
 
 extern "C" {
@@ -406,55 +457,6 @@ void dd_cgal_free(dd_cgal *c)
     }
 }
 
-int dd_cgal_dimension(const dd_cgal *c)
-{
-    return c ? c->dt.dimension() : -2;
-}
-
-size_t dd_cgal_num_cells(const dd_cgal *c)
-{
-    return c ? c->dt.number_of_cells() : 0;
-}
-
-uint32_t dd_cgal_degree(const dd_cgal *c, uint32_t v)
-{
-    if (c == NULL || !has_vertex(c, v))
-        return 0;
-    try {
-        return static_cast<uint32_t>(c->dt.degree(c->vh[v]));
-    } catch (...) {
-        return 0;
-    }
-}
-
-/* The cell as its four input indices sorted, -1 for the infinite vertex. */
-std::array<int32_t, 4> canonical_cell(const Main_dt &dt, Cell_handle c)
-{
-    std::array<int32_t, 4> t;
-    for (std::size_t k = 0; k < 4; k++) {
-        const Vertex_handle w = c->vertex(static_cast<int>(k));
-        t[k] = dt.is_infinite(w) ? -1 : static_cast<int32_t>(w->info());
-    }
-    std::sort(t.begin(), t.end());
-    return t;
-}
-
-/* Sorts and deduplicates the cells and hands them out as a malloc'd array. */
-int emit_canonical(std::vector<std::array<int32_t, 4> > &all, int32_t **tets, size_t *ntets)
-{
-    std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    int32_t *out = static_cast<int32_t *>(
-        std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
-    if (out == NULL)
-        return 1;
-    for (std::size_t i = 0; i < all.size(); i++)
-        std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
-    *tets = out;
-    *ntets = all.size();
-    return 0;
-}
-
 int dd_cgal_canonical(const dd_cgal *c, int32_t **tets, size_t *ntets)
 {
     if (c == NULL || tets == NULL || ntets == NULL)
@@ -501,35 +503,12 @@ int dd_cgal_local_canonical(const dd_cgal *c, const uint32_t *verts, size_t nv,
 
 int dd_cgal_remove(dd_cgal *c, uint32_t v)
 {
-    if (c == NULL || !has_vertex(c, v))
-        return 1;
-    try {
-        const Vertex_handle h = c->vh[v];
-        if (removal_drops_dimension(c->dt, h))
-            return 1;
-        c->dt.remove(h);
-        c->vh[v] = Vertex_handle();
-        return 0;
-    } catch (...) {
-        return 1;
-    }
+    return remove_vertex(c, v, false, 0);
 }
 
 int dd_cgal_remove_rnd(dd_cgal *c, uint32_t v, uint64_t seed)
 {
-    if (c == NULL || !has_vertex(c, v))
-        return 1;
-    try {
-        const Vertex_handle h = c->vh[v];
-        if (removal_drops_dimension(c->dt, h))
-            return 1;
-        if (remove_rnd(c->dt, h, seed) != 0)
-            return 1;
-        c->vh[v] = Vertex_handle();
-        return 0;
-    } catch (...) {
-        return 1;
-    }
+    return remove_vertex(c, v, true, seed);
 }
 
 int dd_cgal_reinsert(dd_cgal *c, uint32_t v)

@@ -27,10 +27,6 @@ typedef struct dd_cgal dd_cgal;
  * dimension < 3).                                                         */
 dd_cgal *dd_cgal_build(const double *xyz, uint32_t n);
 void dd_cgal_free(dd_cgal *c);
-int dd_cgal_dimension(const dd_cgal *c);
-size_t dd_cgal_num_cells(const dd_cgal *c);   /* finite + infinite */
-uint32_t dd_cgal_degree(const dd_cgal *c, uint32_t v);  /* adjacent vertices,
-                                                  infinite counted; 0 if none */
 
 /* Canonical form (as dd_canonical in dtdel.h): *tets is malloc'd, caller
  * frees.                                                                  */

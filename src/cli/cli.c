@@ -6,6 +6,7 @@
  *   dtdel tets FILE                  canonical DT(points of FILE)
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
+ *   dtdel variants                   the deletion strategies and CGAL rows
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
 #include "cli/cli.h"
@@ -42,7 +43,6 @@ int print_help(const char *cmd)
     return 0;
 }
 
-/* Parses a non-negative integer; returns 0 on success. */
 int parse_u64(const char *s, uint64_t *out)
 {
     if (!s || !*s || *s == '-') return -1;
@@ -109,6 +109,11 @@ int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
         return EXIT_INPUT;
     }
     return 0;
+}
+
+int same_canonical(const int32_t *a, size_t na, const int32_t *b, size_t nb)
+{
+    return na == nb && !memcmp(a, b, 4 * na * sizeof *a);
 }
 
 void write_tets(const int32_t *tets, size_t n)
@@ -217,9 +222,10 @@ int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const ch
 
 #define BUILD_MAX_REPS 9
 
-/* Each engine builds R times, alternating (dtdel, CGAL, dtdel, ...), so
- * that a slow spell of this shared machine hits both; the medians are
- * compared, as the deletion bench compares medians.                     */
+/* `dtdel build-bench`: each engine builds R times, in turns (dtdel,
+ * CGAL, dtdel, ...), so that a slow spell of the machine hits both; the
+ * medians are compared, as the deletion bench compares medians, and the
+ * last pair of triangulations with each other.                          */
 static int cmd_build_bench(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("build-bench");
@@ -265,7 +271,7 @@ static int cmd_build_bench(int argc, char **argv)
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
     if (c && dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(c, &b, &nb))
-        same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+        same = same_canonical(a, na, b, nb);
     free(a);
     free(b);
     double to = median_of(ours, reps), tc = median_of(theirs, reps);   /* sorted now */
@@ -328,8 +334,9 @@ static const command commands[] = {
      "row: deleting should cost at most twice that).", cmd_time},
     {"check", "check FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]",
      "Deletes K sampled vertices (default 20), each from DT(S), with each\n"
-     "variant (default all, cgal-rnd included), and compares every result\n"
-     "with CGAL's canonical form; --sequence deletes them one after another\n"
+     "variant (default all: the engine's strategies and cgal-rnd), and\n"
+     "compares every result with CGAL's remove(), the reference (so cgal\n"
+     "itself is no variant here); --sequence deletes them one after another\n"
      "without re-inserting.  Prints matched/total per variant; exit 1 on any\n"
      "mismatch.", cmd_check},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"

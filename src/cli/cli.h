@@ -24,12 +24,21 @@ typedef struct command {
     int (*run)(int argc, char **argv);
 } command;
 
+/* Says "dtdel CMD: " and fmt (with arg) on stderr, then CMD's usage;
+ * returns EXIT_USAGE.                                                   */
 int usage_error(const char *cmd, const char *fmt, const char *arg);
+/* 1 when an argument is --help or -h. */
 int wants_help(int argc, char **argv);
+/* Prints CMD's usage and help on stdout; returns 0. */
 int print_help(const char *cmd);
+/* Parses a non-negative decimal integer, all of s; 0 on success. */
 int parse_u64(const char *s, uint64_t *out);
+/* A monotonic clock, in seconds. */
 double now_seconds(void);
+/* The points of FILE (.xyz or .off, dd_read_points); 0, or EXIT_INPUT
+ * after a message naming the problem.                                   */
 int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np);
+/* A canonical form on stdout, one line "a b c d" a cell. */
 void write_tets(const int32_t *tets, size_t n);
 
 /* A row of a comparison: an engine strategy, "cgal" or "cgal-rnd". */
@@ -48,6 +57,11 @@ int find_row(const char *name, row *out);
  * for CGAL); returns 0 on success.  Reinsert undoes it.                  */
 int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed);
 int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v);
+/* The canonical form of the row's triangulation (malloc'd); 0 on
+ * success.                                                              */
+int row_canonical(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n);
+/* Whether two canonical forms are the same list of cells. */
+int same_canonical(const int32_t *a, size_t na, const int32_t *b, size_t nb);
 /* Points of a generated dataset (dd_gen); 0, or the exit status after a
  * message on stderr: EXIT_USAGE for an unknown dataset, else EXIT_INPUT. */
 int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np);
@@ -58,7 +72,9 @@ int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, 
 int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
                         int *rc);
 /* The seeded draws of the CLI (bench and check samples, seq-bench's
- * shuffle): one xorshift64 step of *x, then a number below m.           */
+ * shuffle): one xorshift64 step of *x, then a number below m.  Its own
+ * copy of the engine's dd_xorshift (mesh.h), which the CLI cannot see:
+ * it uses the public headers only.                                     */
 static inline uint32_t rand_below(uint64_t *x, uint32_t m)
 {
     *x ^= *x << 13; *x ^= *x >> 7; *x ^= *x << 17;

@@ -1,51 +1,38 @@
 /*
- * cli_bench.c -- `dtdel bench`: the paper's experiment (DESIGN 10).
+ * cli_bench.c -- `dtdel bench`, the paper's experiment (DESIGN 10), and
+ * `dtdel seq-bench`, whole sequences of deletions.
  *
- * Per dataset and size: DT(S) is built once by the engine and once by
- * CGAL; the vertices to delete are drawn from a seeded generator, the same
- * for every row, and sparse degree buckets topped up (bcase, --bucket-min
- * M: at least M a bucket, 0: none); for each vertex and row the deletion
- * alone is timed with a monotonic clock (median of up to 5 repetitions,
- * or --reps R, while they take under 20 ms together: rep_budget_s), its
- * result is compared with CGAL's, and the vertex is re-inserted untimed
- * so the next deletion starts from DT(S) again.  With more than one
- * repetition, one more runs first as a warm-up and is dropped when
- * another follows (so a row of 20 ms or more keeps its single run):
- * rows run one after another on the same vertex, and the first runs of
- * a row pay for the caches and branch predictors of the row before.  Without it, auto, the first engine row after
- * CGAL's, measured up to 1.5x gift-wrap, the same code run later (moment
- * n = 1024: 2.52 against 1.80 times a re-insertion; cosphere degree
- * [64,96): 3.02 against 1.94), and re-running CGAL's two rows before
- * auto in a harness moved helix n = 1000 from 1.90-2.08 to 2.28-2.35
- * (1.97-2.13 with the warm-up).  --reps 1 (the cold run) has none.
+ * Per dataset and size (a bcase): DT(S) is built once by the engine and
+ * once by CGAL; the vertices to delete are drawn from a seeded generator,
+ * the same for every row, and sparse degree buckets are topped up
+ * (--bucket-min).  For each vertex and row, cgal first (its result is the
+ * reference), the deletion alone is timed with a monotonic clock: the
+ * median of up to --reps R runs (default 5) while they take under
+ * rep_budget_s together, after a warm-up run dropped when another follows
+ * (the rows run one after another on the same vertex, and a row's first
+ * run pays for the caches and branch predictors the row before trained;
+ * --reps 1 times that single cold run).  Its result is compared with
+ * CGAL's, and the vertex re-inserted untimed, so that the next deletion
+ * starts from DT(S) again.
  *
  * The comparison: the canonical form of the cells incident to the deleted
  * vertex's neighbours (everything a deletion can change) must equal
  * CGAL's; on the first deletion of each case with n <= 20000 the whole
  * triangulation is compared too.  A mismatch is counted and written in the
- * match column (0); it is a bug.
+ * match column (0); it is a bug.  The cgal row is the reference: its
+ * match column is 1 by definition.
  *
- * The "insert" row: after the deletion rows of a vertex, one more row
- * with variant name "insert" times our engine's re-insertion of it, the
- * cost a deletion is measured against (target: deleting costs at most 2x
- * re-inserting, at every degree).  Each repetition deletes the vertex
- * with the default strategy (dd_delete) and re-inserts it (dd_reinsert),
- * both timed; the same warm-up and median as the other rows, but up to
- * PAIR_REPS repetitions kept, while the deletions and re-insertions take
- * under pair_budget_s together (with --reps 1, the one cold run).  Its
- * match column is 1 iff the local canonical hash around the neighbours
- * after the re-insertion equals the one taken on the intact DT(S) before
- * the vertex's rows ran (a broken insertion is a mismatch); tets_created
- * and the phases are empty.
- * Before it comes the paired row, "<default>-paired" (auto-paired): the
- * median of those deletions, each timed right before the re-insertion it
- * is compared with, where the default's own row ran up to seconds
- * earlier (after CGAL's rows; on this VM the machine's speed drifts
- * between the two: moment n = 1024, the same re-insertion measured 177
- * and 433 us on two vertices of one run).  Its match column compares the
- * first deletion with CGAL's, as a deletion row's does; tets_created and
- * the phases are empty.
- * Counting builds write neither row.
+ * The "insert" row: after the deletion rows of a vertex, our re-insertion
+ * of it, the cost a deletion is measured against (target: deleting costs
+ * at most 2x re-inserting, at every degree).  Each repetition deletes the
+ * vertex with the default strategy and re-inserts it, both timed, up to
+ * PAIR_REPS kept within pair_budget_s.  Its match column: the local hash
+ * after the re-insertion equals the one taken on the intact DT(S).  Before
+ * it comes "<default>-paired" (auto-paired): the median of those
+ * deletions, each timed right before the re-insertion it is compared with
+ * (the default's own row ran earlier, and the machine's speed drifts); its
+ * match column compares the first deletion with CGAL's.  Neither row has
+ * tets_created or phases; counting builds write neither.
  *
  * Phases: counting builds (build/count/dtdel) write only the engine rows,
  * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
@@ -58,24 +45,20 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* A case: `deletions` vertices drawn at random, then, per degree bucket
- * (src/buckets.h) with fewer than `bucket_min` of them, more drawn at
- * random among the vertices of that bucket until it has bucket_min or
- * all of them (bench_sample).  A random sample leaves the tails of the
- * degree distribution with a handful of deletions (uniform degree
- * [24,32): 6 of 150, [4,8): 3; bunny [24,32): 5 of 100; helix n = 1000,
- * [96,128): 1), whose medians then moved by 10-25% from run to run with
- * the same code.  Moment-curve vertices all have one degree per case and
- * the large helix cases cost seconds a deletion: no top-up there.      */
-/* Repetitions of a row go on while they took less than this together.
- * With 2 ms, the moment curve's deletions at degree 1023 (0.3-0.5 ms
- * alone, twice that in the first runs after the rows before) had 2-3
- * runs, the first of them still slow: the paired row read 1.3-3.8 times
- * the re-insertions in one run, 1.4-1.5 in a harness timing 12 runs.
- * 20 ms gives them their five; CGAL's rows and those of the slow
- * variants, a run of 20 ms or more, keep their one.                   */
+/* Repetitions of a row go on while they took less than this together:
+ * five runs for the slowest deletions compared within a few percent (the
+ * moment curve at degree 1023, `build/dtdel bench --dataset moment`); a
+ * run of CGAL's rows and of the slow variants takes longer, and is kept
+ * alone.                                                               */
 static const double rep_budget_s = 20e-3;
 
+/* A case: `deletions` vertices drawn at random, then, per degree bucket
+ * (buckets.h) with fewer than `bucket_min` of them, more drawn at random
+ * among the vertices of that bucket until it has bucket_min or all of
+ * them (bench_sample): a random sample leaves the tails of the degree
+ * distribution a handful of deletions, whose medians move from run to
+ * run.  The moment curve's vertices have one degree per case, and the
+ * large helix cases cost seconds a deletion: no top-up there.          */
 typedef struct bcase { const char *dataset; uint32_t n, deletions, bucket_min; } bcase;
 
 static const bcase full_cases[] = {
@@ -220,29 +203,74 @@ static double kept_median(double *us, int reps, int max_reps)
 }
 
 /* Repetitions kept by the insert row and its paired deletion row (when
- * the other rows keep more than one): their quotient is what the target
- * "deleting costs at most twice re-inserting" is read from, within a few
+ * the other rows keep more than one): their quotient is read against the
+ * target "deleting costs at most twice re-inserting" within a few
  * percent, where the other rows' ratios to CGAL are read within tens of
- * percent.  With the five of the other rows, the quotient at the bunny's
- * one vertex of degree >= 64 (6873, bucket [64,96)) read 1.62-2.19 over
- * 16 bench runs, two of them above 2; with 15 it read 1.74-1.92, 14 of
- * the 16 within 1.73-1.77 (same binary, the 16 runs of each one after
- * the other).  The runs stop once the deletions and re-insertions took
- * pair_budget_s together.                                             */
+ * percent, and five repetitions leave it a spread of tens of percent
+ * from one bench run to the next (`make bench`, the bunny's vertices of
+ * degree 64 and more).  The runs stop once the deletions and
+ * re-insertions took pair_budget_s together.                           */
 #define PAIR_REPS 15
 static const double pair_budget_s = 40e-3;
 
-/* The "insert" row of vertex v and its paired deletion row (see the
+/* The options of a bench run (dtdel bench --help). */
+typedef struct bench_opts {
+    const bcase *cases;           /* the mode's                           */
+    const char *outdir, *phasedir, *only;
+    uint64_t seed;
+    double scale;
+    int max_reps, bucket_min;     /* bucket_min -1: each case's own       */
+    int counting;                 /* a counting build: engine rows only,
+                                     with their phases                    */
+} bench_opts;
+
+/* A run: its options, its rows in order (cgal first), the open CSV with
+ * its dataset and that dataset's phases, the mismatches and the
+ * progress (deletions done of the total, in cases' parts).             */
+typedef struct bench_run {
+    bench_opts o;
+    row rows[32];
+    size_t nr;
+    const char *open_ds;
+    FILE *csv;
+    phase_row *ph;
+    size_t nph;
+    long mismatches;
+    double total_work, done_work, t_start, last_print;
+} bench_run;
+
+/* A case under way: its points, DT(S) in the engine and in CGAL (g for
+ * the CGAL rows, ref for the whole-triangulation comparison; none in a
+ * counting build), the sample, and scratch for a vertex's neighbours.  */
+typedef struct bench_case {
+    const bcase *c;
+    double *pts;
+    uint32_t np, k;               /* k: the random part of the sample     */
+    dd_tri *t;
+    dd_cgal *g, *ref;
+    unsigned char *used;
+    uint32_t *nb, *sample, ns;
+} bench_case;
+
+/* The vertex whose rows are being timed: its neighbours (in the case's
+ * nb), the engine's local hash of the intact DT(S) for the insert row
+ * (pre, if pre_ok), and CGAL's local hash of its deletion (refh, once
+ * the cgal row ran: have_ref).                                         */
+typedef struct bench_vertex {
+    uint32_t it, v, deg, hull, nnb;
+    uint64_t pre, refh;
+    int pre_ok, have_ref;
+} bench_vertex;
+
+/* The "insert" row of vertex bv and its paired deletion row (see the
  * top): 0, or -1 when a deletion or re-insertion failed (dd_errmsg(t)
- * says why).  Each repetition deletes v with the default strategy and
- * re-inserts it, each timed.  *med, *del_med: the medians of the
- * re-insertions and of the deletions; *match: the local hash after the
- * first re-insertion equals pre (pre_ok: pre could be computed);
- * *del_match: the one after the first deletion equals CGAL's, refh
- * (have_ref: CGAL's row ran). */
-static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, uint64_t pre, int pre_ok,
-                       uint64_t refh, int have_ref, int max_reps, double *med, double *del_med, int *match,
-                       int *del_match)
+ * says why).  Each repetition deletes the vertex with the default
+ * strategy and re-inserts it, each timed.  *med, *del_med: the medians
+ * of the re-insertions and of the deletions; *match: the local hash
+ * after the first re-insertion equals bv->pre; *del_match: the one
+ * after the first deletion equals CGAL's, bv->refh.                    */
+static int time_insert(dd_tri *t, const bench_vertex *bv, const uint32_t *nb, int max_reps, double *med,
+                       double *del_med, int *match, int *del_match)
 {
     const int keep = max_reps > 1 ? PAIR_REPS : max_reps;
     double us[PAIR_REPS + 1], ds[PAIR_REPS + 1], spent = 0;
@@ -250,219 +278,310 @@ static int time_insert(dd_tri *t, uint32_t v, const uint32_t *nb, uint32_t nnb, 
     *match = *del_match = 0;
     while (reps < runs_for(keep) && (reps == 0 || spent < pair_budget_s)) {
         double t0 = now_seconds();
-        if (dd_delete(t, v, NULL) != DD_OK) return -1;
+        if (dd_delete(t, bv->v, NULL) != DD_OK) return -1;
         double t1 = now_seconds();
         uint64_t h = 0;
-        if (reps == 0) *del_match = have_ref && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == refh;
+        if (reps == 0)
+            *del_match = bv->have_ref && !local_hash(&insert_row, t, NULL, nb, bv->nnb, &h) && h == bv->refh;
         double t2 = now_seconds();
-        if (dd_reinsert(t, v) != DD_OK) return -1;
+        if (dd_reinsert(t, bv->v) != DD_OK) return -1;
         double t3 = now_seconds();
         ds[reps] = 1e6 * (t1 - t0);
         us[reps++] = 1e6 * (t3 - t2);
         spent += (t1 - t0) + (t3 - t2);
-        if (reps == 1) *match = pre_ok && !local_hash(&insert_row, t, NULL, nb, nnb, &h) && h == pre;
+        if (reps == 1) *match = bv->pre_ok && !local_hash(&insert_row, t, NULL, nb, bv->nnb, &h) && h == bv->pre;
     }
     *med = kept_median(us, reps, keep);
     *del_med = kept_median(ds, reps, keep);
     return 0;
 }
 
+/* Whether the row's whole triangulation equals ref's. */
 static int full_equal(const row *r, dd_tri *t, dd_cgal *g, dd_cgal *ref)
 {
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
-    int ok = (r->kind == ROW_ENGINE ? dd_canonical(t, &a, &na) == DD_OK : !dd_cgal_canonical(g, &a, &na)) &&
-             !dd_cgal_canonical(ref, &b, &nb) && na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+    int ok = !row_canonical(r, t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) && same_canonical(a, na, b, nb);
     free(a);
     free(b);
     return ok;
 }
 
-int cmd_bench(int argc, char **argv)
+/* Parses the bench's arguments into *o: 0, or the exit status of a usage
+ * error (already reported).                                            */
+static int parse_bench_args(int argc, char **argv, bench_opts *o)
 {
-    if (wants_help(argc, argv)) return print_help("bench");
-    const char *mode = "full", *outdir = "results", *phasedir = NULL, *only = NULL;
-    uint64_t seed = 1;
-    double scale = 1.0;
-    int max_reps = 5, bucket_min = -1;               /* -1: the case's */
-    int counting = 0;
+    const char *mode = "full";
+    *o = (bench_opts){NULL, "results", NULL, NULL, 1, 1.0, 5, -1, 0};
 #ifdef DD_COUNTERS
-    counting = 1;
+    o->counting = 1;
 #endif
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--mode") && i + 1 < argc) mode = argv[++i];
-        else if (!strcmp(argv[i], "--out") && i + 1 < argc) outdir = argv[++i];
-        else if (!strcmp(argv[i], "--phases") && i + 1 < argc) phasedir = argv[++i];
-        else if (!strcmp(argv[i], "--dataset") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--out") && i + 1 < argc) o->outdir = argv[++i];
+        else if (!strcmp(argv[i], "--phases") && i + 1 < argc) o->phasedir = argv[++i];
+        else if (!strcmp(argv[i], "--dataset") && i + 1 < argc) o->only = argv[++i];
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
             if (*end || r < 1 || r > 5) return usage_error("bench", "--reps wants 1 to 5, got '%s'", argv[i]);
-            max_reps = (int)r;
+            o->max_reps = (int)r;
         }
         else if (!strcmp(argv[i], "--bucket-min") && i + 1 < argc) {
             char *end;
             long b = strtol(argv[++i], &end, 10);
             if (*end || end == argv[i] || b < 0 || b > 1000)
                 return usage_error("bench", "--bucket-min wants 0 to 1000, got '%s'", argv[i]);
-            bucket_min = (int)b;
+            o->bucket_min = (int)b;
         }
         else if (!strcmp(argv[i], "--scale") && i + 1 < argc) {
             char *end;
-            scale = strtod(argv[++i], &end);
-            if (*end || !(scale > 0) || scale > 1000) return usage_error("bench", "--scale wants a positive number, got '%s'", argv[i]);
+            o->scale = strtod(argv[++i], &end);
+            if (*end || !(o->scale > 0) || o->scale > 1000)
+                return usage_error("bench", "--scale wants a positive number, got '%s'", argv[i]);
         } else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
-            if (parse_u64(argv[++i], &seed)) return usage_error("bench", "--seed wants a non-negative integer%s", "");
+            if (parse_u64(argv[++i], &o->seed)) return usage_error("bench", "--seed wants a non-negative integer%s", "");
         } else return usage_error("bench", "unexpected argument '%s'", argv[i]);
     }
-    const bcase *cases = !strcmp(mode, "full") ? full_cases : !strcmp(mode, "quick") ? quick_cases : NULL;
-    if (!cases) return usage_error("bench", "--mode is quick or full, got '%s'", mode);
-    mkdir(outdir, 0777);
-    row all[32], rows[32];
-    size_t na = all_rows(all, 32), nr = 0;
-    /* cgal first: its result is the reference of every other row */
+    o->cases = !strcmp(mode, "full") ? full_cases : !strcmp(mode, "quick") ? quick_cases : NULL;
+    if (!o->cases) return usage_error("bench", "--mode is quick or full, got '%s'", mode);
+    return 0;
+}
+
+/* The rows, cgal first (its result is the reference of every other
+ * row), and the progress's total: the deletions of the cases run.      */
+static void start_run(bench_run *b)
+{
+    row all[32];
+    size_t na = all_rows(all, 32);
     for (size_t i = 0; i < na; i++)
-        if (all[i].kind == ROW_CGAL) rows[nr++] = all[i];
+        if (all[i].kind == ROW_CGAL) b->rows[b->nr++] = all[i];
     for (size_t i = 0; i < na; i++)
-        if (all[i].kind != ROW_CGAL) rows[nr++] = all[i];
-    double total_work = 0, done_work = 0, t_start = now_seconds(), last_print = -10;
-    for (const bcase *c = cases; c->dataset; c++)
-        if (!only || !strcmp(only, c->dataset)) total_work += deletions_of(c, scale);
-    long mismatches = 0;
-    const char *open_ds = NULL;
-    FILE *csv = NULL;
-    phase_row *ph = NULL;
-    size_t nph = 0;
-    for (const bcase *c = cases; c->dataset; c++) {
-        if (only && strcmp(only, c->dataset)) continue;
-        if (!open_ds || strcmp(open_ds, c->dataset)) {
-            if (csv) fclose(csv);
-            free(ph);
-            char path[512];
-            snprintf(path, sizeof path, "%s/%s.csv", outdir, c->dataset);
-            csv = fopen(path, "w");
-            if (!csv) { fprintf(stderr, "dtdel bench: cannot write %s\n", path); return EXIT_INPUT; }
-            fprintf(csv, "dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,locate_us,conflict_us,sew_us,match\n");
-            open_ds = c->dataset;
-            ph = load_phases(phasedir, c->dataset, &nph);
-        }
-        double *pts;
-        uint32_t np;
-        char msg[512];
-        if (dd_gen(c->dataset, c->n, seed, &pts, &np, msg, sizeof msg) != DD_OK) {
-            fprintf(stderr, "dtdel bench: %s\n", msg);
-            return EXIT_INPUT;
-        }
-        dd_tri *t;
-        if (dd_create(&t, pts, np, msg, sizeof msg) != DD_OK) {
-            fprintf(stderr, "dtdel bench: %s %u: %s\n", c->dataset, np, msg);
-            return EXIT_INPUT;
-        }
-        /* counting runs time no CGAL row: no CGAL triangulation needed */
-        dd_cgal *g = counting ? NULL : dd_cgal_build(pts, np);
-        dd_cgal *ref = !counting && np <= 20000 ? dd_cgal_build(pts, np) : NULL;
-        uint32_t k = deletions_of(c, scale);
-        if (k < 1) k = 1;
-        if (k > dd_num_vertices(t)) k = dd_num_vertices(t);
-        uint64_t x = (seed + c->n) * 0x9E3779B97F4A7C15ull | 1;
-        unsigned char *used = calloc(np, 1);
-        uint32_t *nb = malloc((np + 1) * sizeof *nb), *sample = NULL, ns = 0;
-        uint32_t bmin = bucket_min >= 0 ? (uint32_t)bucket_min : (uint32_t)((double)c->bucket_min * scale + 0.5);
-        if (!used || !nb || bench_sample(t, np, k, bmin, &x, used, &sample, &ns)) {
-            fprintf(stderr, "dtdel bench: out of memory\n");
-            return EXIT_INPUT;
-        }
-        for (uint32_t it = 0; it < ns; it++) {
-            uint32_t v = sample[it];
-            uint32_t deg = dd_degree(t, v), hull = (uint32_t)dd_on_hull(t, v);
-            uint32_t nnb = dd_neighbors(t, v, nb, np);
-            uint64_t refh = 0, pre = 0;
-            int have_ref = 0, skipped = 0;
-            /* the engine's local hash on the intact DT(S), for the insert row */
-            int pre_ok = !counting && !local_hash(&insert_row, t, NULL, nb, nnb, &pre);
-            for (size_t ri = 0; ri < nr; ri++) {
-                const row *r = &rows[ri];
-                if (counting && r->kind != ROW_ENGINE) continue;
-                double us[6];
-                int reps = 0, bad = 0;
-                double spent = 0;
-                uint64_t h = 0;
-                int hashed = 0;
-                dd_delete_stats st;
-                memset(&st, 0, sizeof st);
-                while (reps < runs_for(max_reps) && (reps == 0 || spent < rep_budget_s) && !bad) {
-                    double t0 = now_seconds();
-                    bad = row_delete(r, t, g, v, seed + it + (uint64_t)reps);
-                    double t1 = now_seconds();
-                    if (bad) break;
-                    us[reps++] = 1e6 * (t1 - t0);
-                    spent += t1 - t0;
-                    if (r->kind == ROW_ENGINE) dd_last_delete_stats(t, &st);
-                    if (!hashed) { bad = local_hash(r, t, g, nb, nnb, &h); hashed = 1; }
-                    if (!bad && it == 0 && reps == 1 && ref && dd_cgal_remove(ref, v) == 0) {
-                        if (!full_equal(r, t, g, ref)) h ^= 1;    /* force a mismatch */
-                        dd_cgal_reinsert(ref, v);
-                    }
-                    if (row_reinsert(r, t, g, v)) { bad = 1; break; }
-                }
-                if (bad) {
-                    if (r->kind == ROW_CGAL) { skipped = 1; break; }   /* CGAL refuses: skip the vertex */
-                    fprintf(stderr, "dtdel bench: %s %u: %s failed on vertex %u: %s\n", c->dataset, np, r->name, v,
-                            r->kind == ROW_ENGINE ? dd_errmsg(t) : "");
-                    mismatches++;
-                    continue;
-                }
-                if (r->kind == ROW_CGAL) { refh = h; have_ref = 1; }
-                int match = counting ? 1 : have_ref && h == refh;
-                if (!match) mismatches++;
-                double med = kept_median(us, reps, max_reps);
-                fprintf(csv, "%s,%u,%u,%u,%u,%s,%.3f,", c->dataset, np, v, deg, hull, r->name, med);
-                if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st.tets_created);
-                const phase_row *pr = counting ? NULL : find_phase(ph, nph, np, v, r->name);
-                if (counting && r->kind == ROW_ENGINE)
-                    fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", st.link_us, st.locate_us, st.conflict_us, st.sew_us);
-                else if (pr)
-                    fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", pr->ph[0], pr->ph[1], pr->ph[2], pr->ph[3]);
-                else
-                    fprintf(csv, ",,,,");
-                fprintf(csv, ",%d\n", match);
-            }
-            if (!counting && !skipped) {
-                double med, del_med;
-                int match, del_match;
-                if (time_insert(t, v, nb, nnb, pre, pre_ok, refh, have_ref, max_reps, &med, &del_med, &match,
-                                &del_match)) {
-                    fprintf(stderr, "dtdel bench: %s %u: insert row failed on vertex %u: %s\n", c->dataset, np, v,
-                            dd_errmsg(t));
-                    mismatches++;
-                } else {
-                    mismatches += !match + !del_match;
-                    fprintf(csv, "%s,%u,%u,%u,%u,%s-paired,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull,
-                            dd_variant_name(0), del_med, del_match);
-                    fprintf(csv, "%s,%u,%u,%u,%u,insert,%.3f,,,,,,%d\n", c->dataset, np, v, deg, hull, med, match);
-                }
-            }
-            done_work += (double)k / ns;             /* the top-up shares its case's part */
-            double el = now_seconds() - t_start;
-            if (el - last_print >= 2.0 || it + 1 == ns) {   /* at most every 2 s */
-                last_print = el;
-                fprintf(stderr, "  %-9s n=%-7u %3.0f%% of the deletions done, %4.0f s elapsed\n", c->dataset, np,
-                        100.0 * done_work / total_work, el);
-            }
-        }
-        fflush(csv);
-        free(used);
-        free(nb);
-        free(sample);
-        free(pts);
-        dd_free(t);
-        dd_cgal_free(g);
-        dd_cgal_free(ref);
+        if (all[i].kind != ROW_CGAL) b->rows[b->nr++] = all[i];
+    b->t_start = now_seconds();
+    b->last_print = -10;
+    for (const bcase *c = b->o.cases; c->dataset; c++)
+        if (!b->o.only || !strcmp(b->o.only, c->dataset)) b->total_work += deletions_of(c, b->o.scale);
+}
+
+/* Makes OUTDIR/<dataset>.csv the open CSV (a new file with its header,
+ * the dataset's phases loaded) unless it already is.  0, or EXIT_INPUT
+ * after a message.                                                     */
+static int open_dataset(bench_run *b, const char *dataset)
+{
+    if (b->open_ds && !strcmp(b->open_ds, dataset)) return 0;
+    if (b->csv) fclose(b->csv);
+    free(b->ph);
+    b->ph = NULL;
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.csv", b->o.outdir, dataset);
+    b->csv = fopen(path, "w");
+    if (!b->csv) { fprintf(stderr, "dtdel bench: cannot write %s\n", path); return EXIT_INPUT; }
+    fprintf(b->csv, "dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,locate_us,conflict_us,sew_us,match\n");
+    b->open_ds = dataset;
+    b->ph = load_phases(b->o.phasedir, dataset, &b->nph);
+    return 0;
+}
+
+/* Builds case c (points, both triangulations, the sample) into *bc,
+ * which free_case frees whatever happened.  0, or EXIT_INPUT after a
+ * message.                                                             */
+static int setup_case(const bench_run *b, const bcase *c, bench_case *bc)
+{
+    const bench_opts *o = &b->o;
+    char msg[512];
+    *bc = (bench_case){.c = c};
+    if (dd_gen(c->dataset, c->n, o->seed, &bc->pts, &bc->np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel bench: %s\n", msg);
+        return EXIT_INPUT;
     }
-    if (csv) fclose(csv);
-    free(ph);
-    fprintf(stderr, "  bench: %ld mismatches%s\n", mismatches, mismatches ? " -- A BUG" : "");
-    return mismatches ? EXIT_INPUT : 0;
+    if (dd_create(&bc->t, bc->pts, bc->np, msg, sizeof msg) != DD_OK) {
+        fprintf(stderr, "dtdel bench: %s %u: %s\n", c->dataset, bc->np, msg);
+        return EXIT_INPUT;
+    }
+    /* counting runs time no CGAL row: no CGAL triangulation needed */
+    bc->g = o->counting ? NULL : dd_cgal_build(bc->pts, bc->np);
+    bc->ref = !o->counting && bc->np <= 20000 ? dd_cgal_build(bc->pts, bc->np) : NULL;
+    uint32_t k = deletions_of(c, o->scale);
+    if (k < 1) k = 1;
+    if (k > dd_num_vertices(bc->t)) k = dd_num_vertices(bc->t);
+    bc->k = k;
+    uint64_t x = (o->seed + c->n) * 0x9E3779B97F4A7C15ull | 1;
+    bc->used = calloc(bc->np, 1);
+    bc->nb = malloc((bc->np + 1) * sizeof *bc->nb);
+    uint32_t bmin = o->bucket_min >= 0 ? (uint32_t)o->bucket_min : (uint32_t)((double)c->bucket_min * o->scale + 0.5);
+    if (!bc->used || !bc->nb || bench_sample(bc->t, bc->np, k, bmin, &x, bc->used, &bc->sample, &bc->ns)) {
+        fprintf(stderr, "dtdel bench: out of memory\n");
+        return EXIT_INPUT;
+    }
+    return 0;
+}
+
+static void free_case(bench_case *bc)
+{
+    free(bc->used);
+    free(bc->nb);
+    free(bc->sample);
+    free(bc->pts);
+    dd_free(bc->t);
+    dd_cgal_free(bc->g);
+    dd_cgal_free(bc->ref);
+}
+
+/* Times row r's deletion of the vertex (see the top), re-inserting it
+ * after each run: *med the median kept, *h the local hash of the first
+ * result (changed when, on the case's first vertex, the whole
+ * triangulation differs from CGAL's), *st the engine's statistics of the
+ * last run.  0, or 1 when a deletion or re-insertion failed.          */
+static int time_row(const bench_run *b, bench_case *bc, const bench_vertex *bv, const row *r, double *med,
+                    uint64_t *h, dd_delete_stats *st)
+{
+    const int max_reps = b->o.max_reps;
+    double us[6], spent = 0;
+    int reps = 0, bad = 0, hashed = 0;
+    *h = 0;
+    memset(st, 0, sizeof *st);
+    while (reps < runs_for(max_reps) && (reps == 0 || spent < rep_budget_s) && !bad) {
+        double t0 = now_seconds();
+        bad = row_delete(r, bc->t, bc->g, bv->v, b->o.seed + bv->it + (uint64_t)reps);
+        double t1 = now_seconds();
+        if (bad) break;
+        us[reps++] = 1e6 * (t1 - t0);
+        spent += t1 - t0;
+        if (r->kind == ROW_ENGINE) dd_last_delete_stats(bc->t, st);
+        if (!hashed) { bad = local_hash(r, bc->t, bc->g, bc->nb, bv->nnb, h); hashed = 1; }
+        if (!bad && bv->it == 0 && reps == 1 && bc->ref && dd_cgal_remove(bc->ref, bv->v) == 0) {
+            if (!full_equal(r, bc->t, bc->g, bc->ref)) *h ^= 1;    /* force a mismatch */
+            dd_cgal_reinsert(bc->ref, bv->v);
+        }
+        if (row_reinsert(r, bc->t, bc->g, bv->v)) { bad = 1; break; }
+    }
+    if (!bad) *med = kept_median(us, reps, max_reps);
+    return bad;
+}
+
+/* The CSV columns every row of the vertex starts with, up to variant. */
+static void write_row_start(const bench_run *b, const bench_case *bc, const bench_vertex *bv)
+{
+    fprintf(b->csv, "%s,%u,%u,%u,%u,", bc->c->dataset, bc->np, bv->v, bv->deg, bv->hull);
+}
+
+/* The CSV row of row r: its median, tets created and phases (its own in
+ * a counting build, else the counting build's if loaded), its match.  */
+static void write_row(const bench_run *b, const bench_case *bc, const bench_vertex *bv, const row *r, double med,
+                      const dd_delete_stats *st, int match)
+{
+    FILE *csv = b->csv;
+    write_row_start(b, bc, bv);
+    fprintf(csv, "%s,%.3f,", r->name, med);
+    if (r->kind == ROW_ENGINE) fprintf(csv, "%llu", (unsigned long long)st->tets_created);
+    const phase_row *pr = b->o.counting ? NULL : find_phase(b->ph, b->nph, bc->np, bv->v, r->name);
+    if (b->o.counting && r->kind == ROW_ENGINE)
+        fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", st->link_us, st->locate_us, st->conflict_us, st->sew_us);
+    else if (pr)
+        fprintf(csv, ",%.3f,%.3f,%.3f,%.3f", pr->ph[0], pr->ph[1], pr->ph[2], pr->ph[3]);
+    else
+        fprintf(csv, ",,,,");
+    fprintf(csv, ",%d\n", match);
+}
+
+/* The paired and insert rows of the vertex (time_insert), written. */
+static void insert_rows(bench_run *b, bench_case *bc, const bench_vertex *bv)
+{
+    double med, del_med;
+    int match, del_match;
+    if (time_insert(bc->t, bv, bc->nb, b->o.max_reps, &med, &del_med, &match, &del_match)) {
+        fprintf(stderr, "dtdel bench: %s %u: insert row failed on vertex %u: %s\n", bc->c->dataset, bc->np, bv->v,
+                dd_errmsg(bc->t));
+        b->mismatches++;
+        return;
+    }
+    b->mismatches += !match + !del_match;
+    write_row_start(b, bc, bv);
+    fprintf(b->csv, "%s-paired,%.3f,,,,,,%d\n", dd_variant_name(0), del_med, del_match);
+    write_row_start(b, bc, bv);
+    fprintf(b->csv, "insert,%.3f,,,,,,%d\n", med, match);
+}
+
+/* Every row of sample vertex number it: the deletion rows, timed and
+ * compared with CGAL's (cgal first), then the paired and insert rows.
+ * A vertex CGAL refuses to delete is skipped.                          */
+static void bench_vertex_rows(bench_run *b, bench_case *bc, uint32_t it)
+{
+    bench_vertex bv = {.it = it, .v = bc->sample[it]};
+    dd_tri *t = bc->t;
+    bv.deg = dd_degree(t, bv.v);
+    bv.hull = (uint32_t)dd_on_hull(t, bv.v);
+    bv.nnb = dd_neighbors(t, bv.v, bc->nb, bc->np);
+    /* the engine's local hash on the intact DT(S), for the insert row */
+    bv.pre_ok = !b->o.counting && !local_hash(&insert_row, t, NULL, bc->nb, bv.nnb, &bv.pre);
+    for (size_t ri = 0; ri < b->nr; ri++) {
+        const row *r = &b->rows[ri];
+        if (b->o.counting && r->kind != ROW_ENGINE) continue;
+        double med = 0;
+        uint64_t h;
+        dd_delete_stats st;
+        if (time_row(b, bc, &bv, r, &med, &h, &st)) {
+            if (r->kind == ROW_CGAL) return;                  /* CGAL refuses: skip the vertex */
+            fprintf(stderr, "dtdel bench: %s %u: %s failed on vertex %u: %s\n", bc->c->dataset, bc->np, r->name,
+                    bv.v, r->kind == ROW_ENGINE ? dd_errmsg(t) : "");
+            b->mismatches++;
+            continue;
+        }
+        if (r->kind == ROW_CGAL) { bv.refh = h; bv.have_ref = 1; }
+        int match = b->o.counting ? 1 : bv.have_ref && h == bv.refh;
+        if (!match) b->mismatches++;
+        write_row(b, bc, &bv, r, med, &st, match);
+    }
+    if (!b->o.counting) insert_rows(b, bc, &bv);
+}
+
+/* Counts sample vertex it done (the top-up shares its case's part) and
+ * says how far the run is, at most every 2 s and at a case's end.      */
+static void report_progress(bench_run *b, const bench_case *bc, uint32_t it)
+{
+    b->done_work += (double)bc->k / bc->ns;
+    double el = now_seconds() - b->t_start;
+    if (el - b->last_print >= 2.0 || it + 1 == bc->ns) {
+        b->last_print = el;
+        fprintf(stderr, "  %-9s n=%-7u %3.0f%% of the deletions done, %4.0f s elapsed\n", bc->c->dataset, bc->np,
+                100.0 * b->done_work / b->total_work, el);
+    }
+}
+
+/* Case c: built, every sample vertex's rows written, freed.  0, or
+ * EXIT_INPUT after a message.                                          */
+static int run_case(bench_run *b, const bcase *c)
+{
+    bench_case bc;
+    int rc = setup_case(b, c, &bc);
+    for (uint32_t it = 0; !rc && it < bc.ns; it++) {
+        bench_vertex_rows(b, &bc, it);
+        report_progress(b, &bc, it);
+    }
+    if (!rc) fflush(b->csv);
+    free_case(&bc);
+    return rc;
+}
+
+int cmd_bench(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("bench");
+    bench_run b = {0};
+    int rc = parse_bench_args(argc, argv, &b.o);
+    if (rc) return rc;
+    mkdir(b.o.outdir, 0777);
+    start_run(&b);
+    for (const bcase *c = b.o.cases; !rc && c->dataset; c++) {
+        if (b.o.only && strcmp(b.o.only, c->dataset)) continue;
+        rc = open_dataset(&b, c->dataset);
+        if (!rc) rc = run_case(&b, c);
+    }
+    if (b.csv) fclose(b.csv);
+    free(b.ph);
+    if (rc) return rc;
+    fprintf(stderr, "  bench: %ld mismatches%s\n", b.mismatches, b.mismatches ? " -- A BUG" : "");
+    return b.mismatches ? EXIT_INPUT : 0;
 }
 
 /* ---- seq-bench ------------------------------------------------------------- */
@@ -630,7 +749,7 @@ int cmd_seq_bench(int argc, char **argv)
     dd_free(t);
     int same = !rc;
     for (int i = 0; i < NRUN && same; i++)
-        same = nc[i] == nc[1] && !memcmp(canon[i], canon[1], 4 * nc[1] * sizeof *canon[1]);
+        same = same_canonical(canon[i], nc[i], canon[1], nc[1]);
     if (!rc) {
         double per = k ? 1e6 / k : 0;
         printf("dataset %s, n = %u, %u of %u vertices deleted one after another (seed %llu), %zu cells left\n",

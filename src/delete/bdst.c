@@ -70,6 +70,7 @@
  * pass still checks the bound and returns DD_BDST_EINTERNAL if it broke.
  */
 #include "delete/bdst.h"
+#include "mesh/mesh.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -262,10 +263,8 @@ static inline uint32_t pop_candidate(dd_bdst_ws *ws, uint32_t *sp)
 {
     while (*sp > 0) {
         if (ws->seed) {                       /* move a random entry on top */
-            uint64_t z = (ws->rng += 0x9E3779B97F4A7C15ull);
-            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-            uint32_t j = (uint32_t)((z ^ (z >> 31)) % *sp), t = ws->stack[j];
+            uint64_t z = dd_mix64(ws->rng += 0x9E3779B97F4A7C15ull);   /* splitmix64 */
+            uint32_t j = (uint32_t)(z % *sp), t = ws->stack[j];
             ws->stack[j] = ws->stack[*sp - 1];
             ws->stack[*sp - 1] = t;
         }

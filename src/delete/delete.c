@@ -45,13 +45,9 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
         t->del = d;
     }
     if (d->vmark_cap < t->cap_v) {
-        uint32_t *m = realloc(d->vmark, (size_t)t->cap_v * sizeof *m);
-        if (!m) return DD_ERR_NOMEM;
-        d->vmark = m;
-        uint32_t *c = realloc(d->qdt_vcell, (size_t)t->cap_v * sizeof *c);
-        if (!c) return DD_ERR_NOMEM;
-        d->qdt_vcell = c;
-        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *m);
+        if (dd_grow(&d->vmark, t->cap_v, sizeof *d->vmark) || dd_grow(&d->qdt_vcell, t->cap_v, sizeof *d->qdt_vcell))
+            return DD_ERR_NOMEM;
+        memset(d->vmark + d->vmark_cap, 0, (size_t)(t->cap_v - d->vmark_cap) * sizeof *d->vmark);
         d->vmark_cap = t->cap_v;
     }
     d->qdt->xyz = t->xyz;
@@ -80,10 +76,7 @@ void dd_del_strategy_stats(dd_del *d, const char *const *names, uint32_t n)
 
 uint32_t dd_del_rand(dd_del *d)
 {
-    uint64_t x = d->rng;
-    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-    d->rng = x;
-    return (uint32_t)(x >> 32);
+    return dd_xorshift(&d->rng);
 }
 
 void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n)
@@ -107,17 +100,11 @@ void dd_phase_end(dd_del *d, int phase)
 
 /* ---- step 1: star, link, neighbours -------------------------------------- */
 
-/* The star of q by a search over the cells through q, and its neighbours.
- * Without a branch on the marks (each candidate written at the end of its
- * list, which grows by the mark test) it ran no faster (uniform degree
- * [16,32), deletion / re-insertion, alternated runs: 1.89 against 1.84
- * with the branches), nor did a sew without a branch on inner and outer
- * facets (1.87 against 1.83).  Of the 44k instructions of a wrapped
- * deletion (callgrind on dtdel time, uniform 20000, vertex 102, degree
- * 19, 28 fill cells) this search makes 3.2k, the sew and the rest of
- * delete_vertex 5.4k, the wrap 35k (28k of them in w_run: 7.4k guessing,
- * 1.7k proving, the rest its bookkeeping of cells and facets);
- * re-inserting the vertex makes 26k.                                     */
+/* Step 1: the star of q (d->star) by a search over the cells through q,
+ * marked with a fresh epoch; q's finite neighbours (d->nbr, marked in
+ * d->vmark); the infinite cells of the star, q's degree, whether it is
+ * on the hull.  Each cell makes room for its three other vertices and
+ * neighbours once, so the pushes need no test.  O(degree).            */
 static dd_status collect_star(dd_del *d)
 {
     dd_tri *t = d->t;
@@ -177,27 +164,17 @@ dd_status dd_del_link_hash(dd_del *d)
     return s;
 }
 
-/* Moves four affinely independent points of a[0..n) to a[0..3] (first
- * found in a's order) and records them in d->base.  DD_ERR_COPLANAR when
- * there are none.                                                        */
 dd_status dd_del_pick_base(dd_del *d, uint32_t *a, size_t n)
 {
     dd_tri *t = d->t;
-    if (n < 4) return DD_ERR_COPLANAR;
-    const double *p0 = dd_pt(t, a[0]), *p1 = dd_pt(t, a[1]);
-    size_t k = 2;
-    while (k < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, a[k])) == 0) k++;
-    if (k == n) return DD_ERR_COPLANAR;
-    uint32_t s = a[2]; a[2] = a[k]; a[k] = s;
-    const double *p2 = dd_pt(t, a[2]);
-    k = 3;
-    while (k < n && dd_orient3d(&t->pred, p0, p1, p2, dd_pt(t, a[k])) == 0) k++;
-    if (k == n) return DD_ERR_COPLANAR;
-    s = a[3]; a[3] = a[k]; a[k] = s;
+    if (n < 4 || dd_find_simplex(&t->pred, t->xyz, a, (uint32_t)n) != DD_OK) return DD_ERR_COPLANAR;
     memcpy(d->base, a, sizeof d->base);
     return DD_OK;
 }
 
+/* The forced fill of a hull vertex whose finite neighbours are coplanar
+ * (delete.h): in d->qdt, every finite star cell with q replaced by
+ * DD_INF, glued to each other; d->fill lists them.                    */
 static dd_status fill_coplanar_hull(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
@@ -285,6 +262,9 @@ static void sew_recycle_star(dd_del *d, size_t k0)
     t->nfinite -= (uint32_t)d->star.n - d->star_inf;
 }
 
+/* Step 3 (delete.h): the fill in place of the star, glued to the
+ * outside, q gone.  Everything that can fail (the matching, the room)
+ * comes before the point of no return.                                */
 static dd_status sew(dd_del *d)
 {
     dd_tri *t = d->t, *x = d->qdt;
@@ -421,8 +401,7 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     return s;
 }
 
-/* The strategy named `variant` (NULL: the default) in *var, clearing the
- * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
+/* Step 1 alone, for the star queries of api.c. */
 dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
 {
     uint32_t v = 0;

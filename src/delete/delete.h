@@ -58,6 +58,8 @@ typedef struct dd_scratch_slot {
     void *p;
 } dd_scratch_slot;
 
+/* Kinds of scratch one context can keep: four exist (GRR-CONSTRUCT,
+ * grr-brio, the compact conflict DT, gift wrapping), room for more.    */
 #define DD_SCRATCH_SLOTS 8
 
 typedef struct dd_del {
@@ -92,7 +94,7 @@ typedef struct dd_del {
                              each other, and matched it to the link
                              (gift wrapping, wrap.c)                     */
     dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
-    uint64_t rng;
+    uint64_t rng;         /* dd_del_rand's state, seeded by q            */
 
     /* statistics of the last deletion */
     uint32_t degree;
@@ -164,6 +166,7 @@ dd_status dd_del_star_of(dd_tri *t, uint32_t v, dd_del **out);
  * most deletions never look a link triangle up by its vertices).       */
 dd_status dd_del_link_hash(dd_del *d);
 
+/* A random number of this deletion (dd_xorshift of d->rng). */
 uint32_t dd_del_rand(dd_del *d);
 /* Shuffles a[0..n) with d's generator. */
 void dd_del_shuffle(dd_del *d, uint32_t *a, size_t n);

@@ -3,10 +3,10 @@
  *
  * Owns: the sampling sets (link vertices of degree <= 7, one set per
  * degree; all remaining link vertices; each an array plus a position per
- * vertex, O(1) update),
- * the removal sequence with its guides, the hash of dummy cells for
- * triangle guides, and guided point location.  Everything is scratch kept
- * in the deletion context and reused.
+ * vertex, O(1) update) and the sampling rules on them, the removal
+ * sequence with its guides, the hash of dummy cells for triangle guides,
+ * and guided point location.  Everything is scratch kept in the deletion
+ * context and reused.
  */
 #include "delete/grr.h"
 
@@ -26,8 +26,10 @@ struct dd_grr {
     dd_trihash dh;                /* dummy cells by their other 3 vertices   */
 };
 
-void dd_grr_free(dd_grr *g)
+/* Frees a GRR scratch (the free function of its scratch kind). */
+static void grr_free(void *p)
 {
+    dd_grr *g = p;
     if (!g) return;
     dd_link_free(&g->link);
     free(g->candpos); free(g->rempos);
@@ -40,6 +42,7 @@ void dd_grr_free(dd_grr *g)
 
 /* ---- sampling sets -------------------------------------------------------- */
 
+/* Adds v to the set s (pos[v]: its slot in s, DD_NONE when out), if out. */
 static dd_status set_add(dd_vec *s, uint32_t *pos, uint32_t v)
 {
     if (pos[v] != DD_NONE) return DD_OK;
@@ -47,6 +50,7 @@ static dd_status set_add(dd_vec *s, uint32_t *pos, uint32_t v)
     return dd_vec_push(s, v);
 }
 
+/* Takes v out of the set s, if in, the last element moving to its slot. */
 static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
 {
     uint32_t i = pos[v];
@@ -57,10 +61,11 @@ static void set_del(dd_vec *s, uint32_t *pos, uint32_t v)
     pos[v] = DD_NONE;
 }
 
-/* The low-degree sets: v (of link degree deg) into cand[deg], out of the
- * one it was in, if another.                                             */
+/* The low-degree sets cand[0..DD_LOWDEG]: candpos[v] = 8 * slot + degree
+ * while v is in one.                                                    */
 _Static_assert(DD_LOWDEG < 8, "grr: a degree must fit the 3 low bits of candpos");
 
+/* Takes v out of its low-degree set, if in one. */
 static void cand_del(dd_grr *g, uint32_t v)
 {
     uint32_t p = g->candpos[v];
@@ -72,6 +77,8 @@ static void cand_del(dd_grr *g, uint32_t v)
     g->candpos[v] = DD_NONE;
 }
 
+/* Puts v (of link degree deg) into cand[deg], out of the set it was in,
+ * if another.                                                           */
 static dd_status cand_put(dd_grr *g, uint32_t v, uint32_t deg)
 {
     uint32_t p = g->candpos[v];
@@ -84,11 +91,11 @@ static dd_status cand_put(dd_grr *g, uint32_t v, uint32_t deg)
     return dd_vec_push(s, v);
 }
 
-uint32_t dd_grr_rand(dd_grr *g) { return dd_del_rand(g->d); }
-void dd_grr_fallback(dd_grr *g) { g->d->fallbacks++; }
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v) { return g->link.deg[v]; }
 
-uint32_t dd_grr_random_lowdeg(dd_grr *g)
+/* A random link vertex of degree <= DD_LOWDEG, uniform over them (base
+ * points excluded), or DD_NONE when there is none.                     */
+static uint32_t random_lowdeg(dd_grr *g)
 {
     size_t n = 0;
     for (int k = 0; k <= DD_LOWDEG; k++) n += g->cand[k].n;
@@ -99,6 +106,8 @@ uint32_t dd_grr_random_lowdeg(dd_grr *g)
     return g->cand[k].a[r];
 }
 
+/* A random link vertex of the least degree if that is <= DD_LOWDEG,
+ * else DD_NONE.                                                         */
 static uint32_t random_mindeg(dd_grr *g)
 {
     for (int k = 0; k <= DD_LOWDEG; k++)
@@ -106,7 +115,8 @@ static uint32_t random_mindeg(dd_grr *g)
     return DD_NONE;
 }
 
-uint32_t dd_grr_random_any(dd_grr *g)
+/* A random remaining link vertex (base points excluded), or DD_NONE. */
+static uint32_t random_any(dd_grr *g)
 {
     return g->rem.n ? g->rem.a[dd_del_rand(g->d) % g->rem.n] : DD_NONE;
 }
@@ -116,13 +126,15 @@ static uint32_t or_any(dd_grr *g, uint32_t u)
 {
     if (u != DD_NONE) return u;
     g->d->fallbacks++;
-    return dd_grr_random_any(g);
+    return random_any(g);
 }
 
 uint32_t dd_grr_sample_mindeg(dd_grr *g) { return or_any(g, random_mindeg(g)); }
-uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, dd_grr_random_lowdeg(g)); }
+uint32_t dd_grr_sample_lowdeg(dd_grr *g) { return or_any(g, random_lowdeg(g)); }
 
-uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
+/* Writes v's link neighbours (the infinite vertex included) to out, in
+ * ring order; returns how many (at most max).                            */
+static uint32_t link_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max)
 {
     const dd_link *l = &g->link;
     uint32_t t0 = l->ltri[v], t = t0, k = 0;
@@ -135,6 +147,26 @@ uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t 
         t = l->ln[3 * t + (m + 1) % 3] / 3;
     } while (t != t0 && k <= l->ntri);
     return k < max ? k : max;
+}
+
+uint32_t dd_grr_sample_edge(dd_grr *g, uint32_t *guide)
+{
+    uint32_t nb[DD_LOWDEG + 1], u = DD_NONE;
+    for (int tries = 0; tries < 8; tries++) {
+        u = random_lowdeg(g);
+        if (u == DD_NONE) break;
+        uint32_t du = dd_grr_degree(g, u), k = link_neighbours(g, u, nb, DD_LOWDEG + 1), ok = 0;
+        for (uint32_t j = 0; j < k; j++)
+            if (nb[j] != DD_INF && du + dd_grr_degree(g, nb[j]) <= 15) nb[ok++] = nb[j];
+        if (ok) {
+            *guide = nb[dd_del_rand(g->d) % ok];
+            return u;
+        }
+    }
+    g->d->fallbacks++;
+    if (u == DD_NONE) u = random_any(g);
+    *guide = dd_grr_lowest_neighbour(g, u);
+    return u;
 }
 
 uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v)
@@ -169,17 +201,16 @@ static dd_status update_sets(dd_grr *g, uint32_t p)
     return s;
 }
 
+/* Readies g for this deletion: its per-vertex arrays sized, the link of
+ * q extracted, the sampling sets filled with every finite neighbour but
+ * the base points, the sequence and guides emptied.                   */
 static dd_status init(dd_grr *g)
 {
     dd_del *d = g->d;
     dd_tri *t = d->t;
     if (g->vcap < t->cap_v) {
-        uint32_t *a = realloc(g->candpos, (size_t)t->cap_v * sizeof *a);
-        if (!a) return DD_ERR_NOMEM;
-        g->candpos = a;
-        a = realloc(g->rempos, (size_t)t->cap_v * sizeof *a);
-        if (!a) return DD_ERR_NOMEM;
-        g->rempos = a;
+        if (dd_grow(&g->candpos, t->cap_v, sizeof *g->candpos) || dd_grow(&g->rempos, t->cap_v, sizeof *g->rempos))
+            return DD_ERR_NOMEM;
         g->vcap = t->cap_v;
     }
     dd_status s = dd_link_extract(&g->link, d);
@@ -264,9 +295,9 @@ static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
 
 /* ---- GRR-CONSTRUCT --------------------------------------------------------- */
 
-static void grr_free_scratch(void *g) { dd_grr_free(g); }
-static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free_scratch};
+static const dd_scratch_kind grr_kind = {"GRR-CONSTRUCT", grr_free};
 
+/* The GRR scratch kept in d, made on first use. */
 static dd_status get_grr(dd_del *d, dd_grr **out)
 {
     dd_grr *g = dd_del_scratch(d, &grr_kind);

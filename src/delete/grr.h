@@ -40,30 +40,22 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol);
 
 /* ---- for sampling policies ------------------------------------------------ */
 
-/* A random link vertex of degree <= DD_LOWDEG (base points excluded), or
- * DD_NONE when there is none.                                            */
-uint32_t dd_grr_random_lowdeg(dd_grr *g);
-/* A random remaining link vertex (base points excluded); never DD_NONE
- * while the link has more than the base.                                 */
-uint32_t dd_grr_random_any(dd_grr *g);
 /* The paper's low-degree vertex sampling: a random link vertex of degree
  * <= 7, or (a counted fallback) a random remaining one when none is left. */
 uint32_t dd_grr_sample_lowdeg(dd_grr *g);
 /* A random link vertex of the least degree (base points excluded) if that
  * is <= 7, or (the same counted fallback) a random remaining one.      */
 uint32_t dd_grr_sample_mindeg(dd_grr *g);
+/* GRR-Edge's sampling (paper 5): u drawn uniformly among the link
+ * vertices of degree <= 7, then its guide v uniformly among u's finite
+ * neighbours with deg(u) + deg(v) <= 15; up to 8 draws of u.  Fallback
+ * (counted): the last u drawn with its lowest-degree finite neighbour as
+ * guide, or a random remaining vertex when none of degree <= 7 is left. */
+uint32_t dd_grr_sample_edge(dd_grr *g, uint32_t *guide);
 /* Link degree of v. */
 uint32_t dd_grr_degree(const dd_grr *g, uint32_t v);
-/* Writes v's link neighbours (the infinite vertex included) to out, in
- * ring order; returns how many (at most max).                            */
-uint32_t dd_grr_neighbours(const dd_grr *g, uint32_t v, uint32_t *out, uint32_t max);
 /* The finite neighbour of v of lowest degree. */
 uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v);
-uint32_t dd_grr_rand(dd_grr *g);
-/* Counts a sampling fallback (reported in the deletion statistics). */
-void dd_grr_fallback(dd_grr *g);
-
-void dd_grr_free(dd_grr *g);
 
 /* ---- for constructions other than GRR-CONSTRUCT (grr-brio) --------------- */
 

@@ -32,11 +32,29 @@ void dd_link_free(dd_link *l)
     memset(l, 0, sizeof *l);
 }
 
-static dd_status grow(uint32_t **a, size_t n)
+/* Sizes l's arrays for d: per star cell (one link triangle each), per
+ * vertex id of d->t, and per ring (the neighbours of a link vertex, at
+ * most d->nbr.n + 1, the infinite vertex included).                   */
+static dd_status fit_arrays(dd_link *l, const dd_del *d)
 {
-    uint32_t *b = realloc(*a, (n ? n : 1) * sizeof **a);
-    if (!b) return DD_ERR_NOMEM;
-    *a = b;
+    const size_t u = sizeof(uint32_t), n = d->star.n, nv = d->t->cap_v, r = d->nbr.n + 2;
+    if (l->cap < n) {
+        if (dd_grow(&l->lv, 3 * n, u) || dd_grow(&l->ln, 3 * n, u)) return DD_ERR_NOMEM;
+        l->cap = (uint32_t)n;
+    }
+    if (l->vcap < nv) {
+        if (dd_grow(&l->ltri, nv, u) || dd_grow(&l->deg, nv, u) || dd_grow(&l->rpos, nv, u) ||
+            dd_grow(&l->rmark, nv, u))
+            return DD_ERR_NOMEM;
+        memset(l->rmark, 0, nv * u);
+        l->vcap = (uint32_t)nv;
+    }
+    if (l->ring_cap < r) {
+        if (dd_grow(&l->ring, r, u) || dd_grow(&l->ring_tri, r, u) || dd_grow(&l->ring_out, r, u) ||
+            dd_grow(&l->newtri, 4 * r + 12, u))
+            return DD_ERR_NOMEM;
+        l->ring_cap = (uint32_t)r;
+    }
     return DD_OK;
 }
 
@@ -44,26 +62,10 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
 {
     dd_tri *t = d->t;
     uint32_t n = (uint32_t)d->star.n;
-    if (l->cap < n) {
-        if (grow(&l->lv, 3 * (size_t)n) || grow(&l->ln, 3 * (size_t)n)) return DD_ERR_NOMEM;
-        l->cap = n;
-    }
-    if (l->vcap < t->cap_v) {
-        if (grow(&l->ltri, t->cap_v) || grow(&l->deg, t->cap_v) || grow(&l->rpos, t->cap_v) ||
-            grow(&l->rmark, t->cap_v))
-            return DD_ERR_NOMEM;
-        memset(l->rmark, 0, (size_t)t->cap_v * sizeof *l->rmark);
-        l->vcap = t->cap_v;
-    }
-    if (l->ring_cap < d->nbr.n + 2) {
-        size_t r = d->nbr.n + 2;
-        if (grow(&l->ring, r) || grow(&l->ring_tri, r) || grow(&l->ring_out, r) || grow(&l->newtri, 4 * r + 12))
-            return DD_ERR_NOMEM;
-        l->ring_cap = (uint32_t)r;
-    }
+    if (fit_arrays(l, d) != DD_OK) return DD_ERR_NOMEM;
     /* Star slot of a cell: through its stamp (base + slot) when the star
-     * fits in one pass's marks, else through its link triangle in
-     * collect_star's hash.                                                */
+     * fits in one pass's marks, else through its link triangle in the
+     * link-triangle hash (dd_del_link_hash).                              */
     int by_stamp = n <= DD_EPOCH_STEP_MAX;
     if (!by_stamp) {
         dd_status s = dd_del_link_hash(d);
@@ -205,13 +207,7 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
     ids[n++] = d->q;
     for (uint32_t j = 0; j < k; j++)
         if (l->ring[j] != DD_INF) ids[n++] = l->ring[j];
-    uint32_t i2 = 2, i3 = n;
-    const double *p0 = dd_pt(t, ids[0]), *p1 = n > 1 ? dd_pt(t, ids[1]) : NULL;
-    while (i2 < n && dd_orient_coplanar(&t->pred, p0, p1, dd_pt(t, ids[i2])) == 0) i2++;
-    if (i2 < n)
-        for (i3 = i2 + 1; i3 < n; i3++)
-            if (dd_orient3d(&t->pred, p0, p1, dd_pt(t, ids[i2]), dd_pt(t, ids[i3])) != 0) break;
-    if (i2 >= n || i3 >= n) {
+    if (dd_find_simplex(&t->pred, t->xyz, ids, n) != DD_OK) {
         /* q and the ring are coplanar: only infinite link tetrahedra, the
          * fan of the finite ring edges around the infinite vertex.        */
         for (uint32_t j = 0; j < k; j++) {
@@ -223,8 +219,6 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
         *nt = f;
         return DD_OK;
     }
-    uint32_t s2 = ids[2]; ids[2] = ids[i2]; ids[i2] = s2;
-    uint32_t s3 = ids[3]; ids[3] = ids[i3]; ids[i3] = s3;
     dd_status s = dd_reserve_cells(x, 8 * n + 16);
     if (s == DD_OK) {
         uint32_t b4[4] = {ids[0], ids[1], ids[2], ids[3]};
@@ -357,15 +351,4 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
     l->nnew = nt;
     l->nring = k;
     return DD_OK;
-}
-
-size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max)
-{
-    size_t n = 0;
-    for (uint32_t s = 0; s < l->ntri; s++) {
-        if (l->lv[3 * s] == DD_DEAD) continue;
-        if (n < max) memcpy(out3 + 3 * n, l->lv + 3 * s, 3 * sizeof *out3);
-        n++;
-    }
-    return n;
 }

@@ -21,7 +21,10 @@
 
 #include "mesh/mesh.h"
 
-#define DD_LINK_EARS_UPTO 12   /* larger holes: fill_by_dt in link.c   */
+/* Holes of up to this many ring vertices are clipped into Delaunay ears
+ * on the stack (O(k^3) tests at worst, few in practice); larger ones go
+ * through link.c's fill_by_dt, a small 3D DT, O(k log k) expected.     */
+#define DD_LINK_EARS_UPTO 12
 
 typedef struct dd_link {
     uint32_t *lv, *ln;
@@ -51,11 +54,8 @@ dd_status dd_link_extract(dd_link *l, struct dd_del *d);
  * and re-triangulates its hole by the Delaunay rule above.  Degrees 3..7
  * use straight-line code; larger holes clip Delaunay ears.  When q leaves
  * the interior of the hull of the remaining points, the infinite vertex
- * enters the link in p's hole (see fill_with_infinity).  The new
+ * enters the link in p's hole (link.c, fill_by_dt).  The new
  * triangles are l->ring_tri[0 .. l->nnew).                               */
 dd_status dd_link_delete(dd_link *l, struct dd_del *d, uint32_t p);
-
-/* The link's live triangles as sorted vertex triples (for the tests). */
-size_t dd_link_triangles(const dd_link *l, uint32_t *out3, size_t max);
 
 #endif

@@ -115,6 +115,3 @@ dd_status dd_full_collect_fill(dd_del *d)
             s = dd_vec_push(&d->fill, c);
     return s;
 }
-
-/* The forced fill of a hull vertex whose finite neighbours are coplanar:
- * every finite star cell with q replaced by DD_INF.                       */

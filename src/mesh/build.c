@@ -218,28 +218,32 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
 
 /* ---- the first tetrahedron ----------------------------------------------- */
 
-/* Moves four affinely independent points to ids[0..3] (scanning in order;
- * the points are distinct).  mesh.h.                                      */
-dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n)
+dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_t n)
 {
-    if (n < 4)
-        return dd_fail(t, DD_ERR_TOO_FEW, "need at least 4 distinct points, got %u", n);
-    dd_pred *pr = &t->pred;
+    if (n < 2) return DD_ERR_TOO_FEW;
 #define PT(i) (pts + 3 * (size_t)(i))
     const double *a = PT(ids[0]), *b = PT(ids[1]);
     uint32_t k = 2;
     while (k < n && dd_orient_coplanar(pr, a, b, PT(ids[k])) == 0) k++;
-    if (k == n)
-        return dd_fail(t, DD_ERR_COLLINEAR, "all %u points are collinear", n);
+    if (k == n) return DD_ERR_COLLINEAR;
     uint32_t tmp = ids[2]; ids[2] = ids[k]; ids[k] = tmp;
     const double *c = PT(ids[2]);
     k = 3;
     while (k < n && dd_orient3d(pr, a, b, c, PT(ids[k])) == 0) k++;
 #undef PT
-    if (k == n)
-        return dd_fail(t, DD_ERR_COPLANAR, "all %u points are coplanar", n);
+    if (k == n) return DD_ERR_COPLANAR;
     tmp = ids[3]; ids[3] = ids[k]; ids[k] = tmp;
     return DD_OK;
+}
+
+dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n)
+{
+    if (n < 4)
+        return dd_fail(t, DD_ERR_TOO_FEW, "need at least 4 distinct points, got %u", n);
+    dd_status s = dd_find_simplex(&t->pred, pts, ids, n);
+    if (s == DD_ERR_COLLINEAR) return dd_fail(t, s, "all %u points are collinear", n);
+    if (s == DD_ERR_COPLANAR) return dd_fail(t, s, "all %u points are coplanar", n);
+    return s;
 }
 
 /* ---- dd_create ------------------------------------------------------------ */

@@ -1,6 +1,7 @@
 /*
- * canon.c -- canonical output, its hash, status names and the small
- * accessors of the public header (DESIGN 8).
+ * canon.c -- canonical output (its one builder, dd_canonical_of_cells),
+ * its hash, status names, counters and the small accessors of the public
+ * header (DESIGN 8).
  *
  * Canonical form: each live cell as its four input indices sorted
  * ascending, -1 for the infinite vertex, the list sorted.  It depends only
@@ -100,23 +101,34 @@ static int cmp_tet(const void *a, const void *b)
     return 0;
 }
 
-dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
+dd_status dd_canonical_of_cells(const dd_tri *t, const uint32_t *cells, size_t n, int32_t **tets, size_t *ntets)
 {
-    size_t n = t->nlive;
     int32_t *a = malloc((n ? n : 1) * 4 * sizeof *a);
     if (!a) return DD_ERR_NOMEM;
-    size_t k = 0;
-    for (uint32_t c = 0; c < t->ncell; c++) {
-        const uint32_t *v = dd_tv(t, c);
-        if (v[0] == DD_DEAD) continue;
+    for (size_t k = 0; k < n; k++) {
+        const uint32_t *v = dd_tv(t, cells[k]);
         for (int i = 0; i < 4; i++) a[4 * k + (size_t)i] = dd_input_index(t, v[i]);
         sort4(a + 4 * k);
-        k++;
     }
-    qsort(a, k, 4 * sizeof *a, cmp_tet);
+    qsort(a, n, 4 * sizeof *a, cmp_tet);
+    size_t u = 0;
+    for (size_t k = 0; k < n; k++)
+        if (u == 0 || cmp_tet(a + 4 * (u - 1), a + 4 * k)) memmove(a + 4 * u++, a + 4 * k, 4 * sizeof *a);
     *tets = a;
-    *ntets = k;
+    *ntets = u;
     return DD_OK;
+}
+
+dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
+{
+    uint32_t *live = malloc((t->nlive ? t->nlive : 1) * sizeof *live);
+    if (!live) return DD_ERR_NOMEM;
+    size_t n = 0;
+    for (uint32_t c = 0; c < t->ncell; c++)
+        if (dd_tv(t, c)[0] != DD_DEAD) live[n++] = c;
+    dd_status s = dd_canonical_of_cells(t, live, n, tets, ntets);
+    free(live);
+    return s;
 }
 
 uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets)

@@ -14,6 +14,8 @@
 
 #include <stdlib.h>
 
+/* Whether facet i of cell c and facet j of cell d have the same three
+ * vertices (in any order).                                              */
 static int same_facet(const dd_tri *t, uint32_t c, uint32_t i, uint32_t d, uint32_t j)
 {
     uint32_t a[3], b[3];

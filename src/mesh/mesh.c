@@ -2,9 +2,9 @@
  * mesh.c -- cell storage, point location and Bowyer-Watson insertion
  * (DESIGN 4 and 5).
  *
- * Owns: growth of the flat arrays, the free list of dead cells, the
- * visibility walk, the conflict search and the star re-filling of the
- * cavity.  Insertion is all-or-nothing: every allocation happens before
+ * Owns: the growth helpers (dd_grow, dd_vec), the vertex-triple hash,
+ * growth of the cell arrays, the free list of dead cells, the visibility
+ * walk, the conflict search and the star re-filling of the cavity.  Insertion is all-or-nothing: every allocation happens before
  * the first write to the mesh, so a failed insertion leaves it unchanged.
  */
 #include "mesh/mesh.h"
@@ -14,12 +14,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+dd_status dd_grow(void *pp, size_t n, size_t size)
+{
+    void *p;
+    memcpy(&p, pp, sizeof p);           /* pp is a T **, not a void ** */
+    if (n == 0) n = 1;
+    if (n > SIZE_MAX / size) return DD_ERR_NOMEM;
+    p = realloc(p, n * size);
+    if (!p) return DD_ERR_NOMEM;
+    memcpy(pp, &p, sizeof p);
+    return DD_OK;
+}
+
 dd_status dd_vec_reserve(dd_vec *v, size_t cap)
 {
     if (cap <= v->cap) return DD_OK;
-    uint32_t *a = realloc(v->a, cap * sizeof *a);
-    if (!a) return DD_ERR_NOMEM;
-    v->a = a;
+    if (dd_grow(&v->a, cap, sizeof *v->a) != DD_OK) return DD_ERR_NOMEM;
     v->cap = cap;
     return DD_OK;
 }
@@ -331,8 +341,9 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 }
 
 /* dd_cell_conflict with the filter inlined for finite cells (the hot
- * test of the conflict search).  Inlining dd_insphere itself everywhere
- * (pred.h) measured 3% slower construction: only this call site does.    */
+ * test of the conflict search).  Only this call site inlines it:
+ * inlining dd_insphere everywhere (pred.h) slows construction down
+ * (`build/dtdel build-bench`).                                          */
 static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
 {
     const uint32_t *v = dd_tv(t, c);
@@ -369,19 +380,18 @@ static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
  * with p beyond one facet only, through that one.  s is made in the first
  * cell with p beyond two facets or more (mostly the start), next to its
  * vertex nearest p.  The walk stops in a cell with p beyond no facet,
- * before an outer cell, or after 2500 + cells/4 steps (in case rounding
- * makes it cycle; CGAL's 2500 alone left 1841 of 16000 helix points to
- * the exact walk).
+ * before an outer cell, or after 2500 + cells/4 steps, in case rounding
+ * makes it cycle (CGAL's bound, 2500, grows with the cells here: on the
+ * large helices more points need the longer walks).
  *
  * Why a segment from a vertex: the start is the last insertion's star,
  * and on the curves the point inserted before p is on the Hilbert curve
  * next to it, usually its neighbour in the new DT; the cells that such
  * a new edge crosses are all in conflict with p.  The visibility walk
- * (the first facet with p beyond) crossed 6600 thin cells a point on the
- * helix, n = 64000 (construction 93.7 s with the filtered tests, 59.6
- * with plain ones); this walk crosses 60 (4.7 s).  On uniform points it
- * costs ~3% more instructions than the plain visibility walk (callgrind,
- * n = 100000: 200 M against 133 M in location, of 2.2 G).               */
+ * (the first facet with p beyond) crosses thousands of thin cells a
+ * point on the large helices where this walk crosses tens
+ * (`build/dtdel build-bench 64000 --dataset helix`); on uniform points
+ * it costs a few percent more than the visibility walk.                 */
 /* The segment's start s: in cell c, 1% of the way from its vertex
  * nearest p towards its centroid.                                       */
 static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double s[3])
@@ -398,6 +408,8 @@ static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double 
     for (int j = 0; j < 3; j++) s[j] = 0.99 * near[j] + 0.0025 * s[j];
 }
 
+/* The walk above from cell c: the cell it stops in; *exit the facet of
+ * that cell towards the outer cell it stopped before, else DD_NONE.     */
 static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t *exit)
 {
     double s[3];
@@ -462,8 +474,8 @@ dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *o
     }
     /* The exact walk tries first the facet the plain one would have
      * crossed next: when that is a hull facet, another facet with p
-     * beyond it sent the walk across the interior (1300-2400 cells
-     * re-inserting a vertex of the helix, n = 4000).                    */
+     * beyond it could send the walk across the whole interior
+     * (re-inserting a hull vertex of the helix; test_build).            */
     uint32_t exit = DD_NONE;
     c = locate_inexact(t, p, c, &exit);
     for (;;) {
@@ -489,13 +501,12 @@ dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *o
 
 /* Asks for the records and marks of c's neighbours ahead: the conflict
  * search tests them after it has tested c's siblings.  Construction only
- * (dd_build_insert): there they are out of cache (10^6 uniform points:
- * 4.20 -> 3.86 s, median of 10 alternated builds, with the dedup's
- * look-ahead, build.c), where a re-insertion finds the cavity the
- * deletion just left in cache and would run 6% more instructions
- * (callgrind, uniform degree 24-31).  So the search is compiled twice,
- * each copy a function of its own (inlined into the insertion, its
- * in-sphere filter took 7% more instructions).                          */
+ * (dd_build_insert), whose cells are out of cache (`build/dtdel
+ * build-bench`); a re-insertion finds the cavity the deletion just left
+ * in cache, and the prefetches would only add instructions (the bench's
+ * insert row).  So the search is compiled twice, each copy a function of
+ * its own (inlined into the insertion, its in-sphere filter compiles
+ * worse).                                                               */
 static inline void prefetch_neighbours(const dd_tri *t, uint32_t c)
 {
     for (uint32_t j = 0; j < 4; j++) {
@@ -702,6 +713,8 @@ void dd_clear_cells(dd_tri *t)
     t->inf_cell = t->hint = DD_NONE;
 }
 
+/* dd_insert_vertex (ahead = 0) and dd_build_insert (ahead = 1): locate,
+ * refuse a duplicate, find the conflict region, reserve, fill the star. */
 static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
 {
     const double *p = dd_pt(t, v);

@@ -64,13 +64,18 @@ static const uint8_t dd_edge_of[4][4][2] = {
     {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
 
 /* Stars whose boundary has at most this many vertices (the infinite and
- * dummy vertices count 3) are glued through a direct edge table.        */
+ * dummy vertices count 3) are glued through a direct edge table of
+ * DD_STAR_MAXV^2 entries (64 KB, kept in t->etab); larger ones through
+ * the edge hash.                                                        */
 #define DD_STAR_MAXV 128
 
 /* A pass's mark value (see Marks above). */
 typedef uint16_t dd_mark;
 #define DD_MARK_MAX UINT16_MAX
-#define DD_EPOCH_STEP_MAX 4096   /* most values one pass may take        */
+/* Most mark values one pass may take: link.c numbers the cells of stars
+ * up to this size by marks (larger ones through a hash), and the 16-bit
+ * counter then wraps, clearing every stamp, at most once in 16 passes. */
+#define DD_EPOCH_STEP_MAX 4096
 
 /* A slot of the edge hash used to glue the cells of a star together. */
 typedef struct dd_edge_slot {
@@ -105,15 +110,17 @@ dd_status dd_gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_
 
 /* Empties h and sizes it for about `expect` entries. */
 dd_status dd_trihash_reset(dd_trihash *h, size_t expect);
+/* Puts val under the triple {a, b, c} (any order; a triple is put once),
+ * doubling h when half full.  DD_ERR_NOMEM, h unchanged, on refusal.   */
 dd_status dd_trihash_put(dd_trihash *h, uint32_t a, uint32_t b, uint32_t c, uint32_t val);
 /* The value stored under the triple {a, b, c}, or DD_NONE. */
 uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c);
 
 /* a <= b <= c, the same three values: least, greatest and, from the
- * exclusive or of all five, the middle.  No branch on the data's order
- * (compare and swap branches, whose outcome is that order, cost the
- * wrap's facet keys past 63 neighbours 3-6% of a deletion: moment
- * n = 256, helix n = 4000 and 16 000, alternated in one process).      */
+ * exclusive or of all five, the middle.  No branch on the data's order:
+ * compare-and-swap branches, whose outcome is that order, mispredict in
+ * the wrap's facet keys past 63 neighbours (`build/dtdel bench --dataset
+ * helix` shows what they cost).                                        */
 static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
 {
     const uint32_t x = *a, y = *b, z = *c;
@@ -124,6 +131,7 @@ static inline void dd_sort3u(uint32_t *a, uint32_t *b, uint32_t *c)
     *c = h;
 }
 
+/* The slot of the sorted triple (a, b, c) in a table of mask + 1 slots. */
 static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t mask)
 {
     uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full
@@ -132,6 +140,13 @@ static inline uint32_t dd_tri_hash(uint32_t a, uint32_t b, uint32_t c, uint32_t 
 }
 
 void dd_trihash_free(dd_trihash *h);
+
+/* Resizes the array whose pointer is at pp (a T ** for any object type
+ * T) to n elements of `size` bytes, as realloc (the first elements
+ * kept; n = 0 keeps room for one).  DD_ERR_NOMEM, the array unchanged,
+ * when the memory is refused.  The engine's one growth helper for
+ * arrays sized by hand; dd_vec below grows itself with it.              */
+dd_status dd_grow(void *pp, size_t n, size_t size);
 
 /* A growable array of uint32_t (scratch; reused, never shrunk). */
 typedef struct dd_vec {
@@ -184,7 +199,7 @@ struct dd_tri {
     uint32_t epoch;
     uint32_t hint;            /* where the next point location starts    */
 
-    uint64_t rng;             /* xorshift state for walks                */
+    uint64_t rng;             /* dd_xorshift state for walks             */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
 
@@ -285,12 +300,22 @@ static inline uint64_t dd_mix64(uint64_t z)
     return z ^ (z >> 31);
 }
 
+/* The engine's one pseudo-random generator: a step of Marsaglia's
+ * xorshift64 (shifts 13, 7, 17) of *state, which must not be 0; returns
+ * the high half of the new state.  Seeded per use, so that the same
+ * input does the same work.                                             */
+static inline uint32_t dd_xorshift(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+    *state = x;
+    return (uint32_t)(x >> 32);
+}
+
+/* A random number for t's walks (dd_walk_locate). */
 static inline uint32_t dd_rand(dd_tri *t)
 {
-    uint64_t x = t->rng;
-    x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-    t->rng = x;
-    return (uint32_t)(x >> 32);
+    return dd_xorshift(&t->rng);
 }
 
 /* Cell storage. dd_reserve_cells makes room for k more cells so that the
@@ -351,9 +376,13 @@ dd_status dd_build_insert(dd_tri *t, uint32_t v);
  * cells, in an empty t.  Room for 5 cells must be reserved.              */
 void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
 /* Moves four affinely independent points of the distinct points
- * pts[3 ids[k]..], k < n, to ids[0..3], the first found scanning in order;
- * DD_ERR_TOO_FEW, DD_ERR_COLLINEAR or DD_ERR_COPLANAR (with a message)
- * when there are none.                                                   */
+ * pts[3 ids[k]..], k < n, to ids[0..3]: ids[0] and ids[1], the first
+ * point off their line to ids[2], the first off their plane to ids[3].
+ * DD_ERR_TOO_FEW (n < 2), DD_ERR_COLLINEAR or DD_ERR_COPLANAR when there
+ * are none, without a message.  The one search for a first simplex.     */
+dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_t n);
+/* The same for construction: DD_ERR_TOO_FEW when n < 4, and a message
+ * in t->err on every failure.                                          */
 dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n);
 
 /* Empties the cell arrays (keeps their capacity), O(1). */
@@ -371,6 +400,13 @@ static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
 {
     return v == DD_INF ? -1 : (int32_t)t->v2in[v];
 }
+
+/* Canonical form (dtdel.h, dd_canonical) of the cells cells[0..n) of t:
+ * each as its four input indices sorted ascending (-1 for DD_INF), the
+ * list sorted, repeated cells once.  *tets is malloc'd, 4 * *ntets ints.
+ * The one builder behind dd_canonical and dd_local_canonical.           */
+dd_status dd_canonical_of_cells(const dd_tri *t, const uint32_t *cells, size_t n, int32_t **tets,
+                                size_t *ntets);
 
 /* A scratch triangulation with its own cells that borrows the points
  * (xyz, v2in, vcell: the caller sets them) of another one.              */
