@@ -49,6 +49,28 @@ const char *dd_variant_description(size_t i)
 }
 
 
+/* Records deleted vertex q for dd_insert to reuse.  Entries of vertices
+ * re-inserted since are stale and skipped; when stale entries make the
+ * list longer than the vertex ids, it is compacted (amortised O(1)).  A
+ * failed push only forgoes the reuse.                                    */
+static void note_deleted(dd_tri *t, uint32_t q)
+{
+    dd_vec *f = &t->vfree;
+    if (f->n >= t->nvid && f->n > 64) {
+        size_t m = 0;
+        for (size_t k = 0; k < f->n; k++) {
+            uint32_t v = f->a[k];
+            if (t->vcell[v] == DD_NONE) {
+                t->vcell[v] = DD_DEAD;       /* mark: keep once */
+                f->a[m++] = v;
+            }
+        }
+        for (size_t k = 0; k < m; k++) t->vcell[f->a[k]] = DD_NONE;
+        f->n = m;
+    }
+    (void)dd_vec_push(f, q);
+}
+
 static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
 {
     t->err[0] = 0;
@@ -63,8 +85,9 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
     uint32_t q = 0;
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
-    if (s != DD_OK) return s;
-    return dd_del_vertex(t, q, var);
+    if (s == DD_OK) s = dd_del_vertex(t, q, var);
+    if (s == DD_OK) note_deleted(t, q);
+    return s;
 }
 
 #ifdef DD_TEST_BUILD
@@ -167,6 +190,7 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
         }
         memcpy(t->err, why, sizeof why);
     }
+    for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     free(ids);
     return s;
 }
@@ -278,6 +302,39 @@ static dd_status grow_u32(uint32_t **a, size_t n)
     return DD_OK;
 }
 
+/* A vertex id for a new point: a deleted one to reuse (*reused = 1), or
+ * the next unused one, the vertex arrays grown if needed.               */
+static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
+{
+    while (t->vfree.n > 0) {
+        const uint32_t x = t->vfree.a[--t->vfree.n];
+        if (t->vcell[x] == DD_NONE) {
+            *v = x;
+            *reused = 1;
+            return DD_OK;
+        }
+    }
+    *reused = 0;
+    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8) return dd_fail(t, DD_ERR_NOMEM, "too many points");
+    if (t->nvid == t->cap_v) {
+        size_t cap = (size_t)t->cap_v * 2;
+        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
+        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->xyz = xyz;
+        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_v = (uint32_t)cap;
+    }
+    if (t->np == t->cap_in) {
+        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+        t->cap_in *= 2;
+    }
+    *v = t->nvid;
+    t->vcell[*v] = DD_NONE;
+    t->v2in[*v] = t->np;
+    t->in2v[t->np] = *v;
+    return DD_OK;
+}
+
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
     t->err[0] = 0;
@@ -285,30 +342,26 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
     }
-    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8)
-        return dd_fail(t, DD_ERR_NOMEM, "too many points");
-    if (t->nvid == t->cap_v) {
-        size_t cap = (size_t)t->cap_v * 2;
-        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
-        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->xyz = xyz;
-        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap))
-            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_v = (uint32_t)cap;
+    uint32_t v = 0;
+    int reused = 0;
+    dd_status s = dd_grid_ready(t);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    if ((s = new_vertex_id(t, &v, &reused)) != DD_OK) return s;
+    double old[3];                                   /* a reused slot's point, kept */
+    memcpy(old, t->xyz + 3 * (size_t)v, sizeof old);
+    memcpy(t->xyz + 3 * (size_t)v, p, sizeof old);
+    s = dd_insert_vertex_at(t, v, dd_start_near(t, p));
+    if (s != DD_OK) {                                /* nothing changes */
+        memcpy(t->xyz + 3 * (size_t)v, old, sizeof old);
+        if (reused) (void)dd_vec_push(&t->vfree, v);
+        return s;
     }
-    if (t->np == t->cap_in) {
-        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_in *= 2;
+    dd_grid_note(t, v);
+    if (!reused) {
+        t->nvid++;
+        t->np++;
     }
-    uint32_t v = t->nvid;
-    memcpy(t->xyz + 3 * (size_t)v, p, 3 * sizeof *p);
-    t->vcell[v] = DD_NONE;
-    t->v2in[v] = t->np;
-    t->in2v[t->np] = v;
-    dd_status s = dd_insert_vertex(t, v);
-    if (s != DD_OK) return s;   /* nvid, np unchanged: the slot is unused */
-    t->nvid++;
-    *index = t->np++;
+    *index = t->v2in[v];
     return DD_OK;
 }
 

@@ -45,11 +45,12 @@ size_t dd_memory_bytes(const dd_tri *t)
 {
     /* cells: records (plus the alignment slack), stamp; vertices: xyz,
      * vcell, v2in; inputs: in2v; insertion scratch: the three vectors,
-     * the edge hash and table                                            */
+     * the edge hash and table; the location grid and the reusable ids   */
     return (size_t)t->cap_c * (DD_CELL_WORDS * sizeof(uint32_t) + sizeof(dd_mark)) + (t->cell_block ? 64 : 0)
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
          + (size_t)t->cap_in * sizeof(uint32_t)
-         + (t->stack.cap + t->conflict.cap + t->boundary.cap) * sizeof(uint32_t)
+         + (t->stack.cap + t->conflict.cap + t->boundary.cap + t->vfree.cap) * sizeof(uint32_t)
+         + t->grid.cap * sizeof(uint32_t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0);
 }

@@ -7,7 +7,10 @@
  * cavity.  Insertion is all-or-nothing: every allocation happens before
  * the first write to the mesh, so a failed insertion leaves it unchanged.
  */
+#define _DEFAULT_SOURCE 1   /* madvise advice names (huge_pages) */
 #include "mesh/mesh.h"
+
+#include <sys/mman.h>
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -84,6 +87,8 @@ void dd_tri_destroy(dd_tri *t)
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
     free(t->etab);
+    dd_grid_free(&t->grid);
+    dd_vec_free(&t->vfree);
     dd_pred_clear(&t->pred);
     free(t);
 }
@@ -182,6 +187,22 @@ void dd_trihash_free(dd_trihash *h)
  * cache line, none straddling two): after a realloc that moved the block
  * to another offset, they are moved back into line.                     */
 #define CELL_ALIGN 64
+
+/* Asks the kernel for transparent huge pages under the 2 MiB-aligned part
+ * of block b: the walks and conflict searches of random insertions and
+ * queries jump across the cell array, where 4 KiB pages miss the TLB at
+ * nearly every cell.  Advice only: ignored where unsupported.           */
+static void huge_pages(void *b, size_t len)
+{
+#ifdef MADV_HUGEPAGE
+    const uintptr_t page = (uintptr_t)2 << 20, lo = ((uintptr_t)b + page - 1) & ~(page - 1),
+                    hi = ((uintptr_t)b + len) & ~(page - 1);
+    if (hi > lo) (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
+#else
+    (void)b, (void)len;
+#endif
+}
+
 static dd_status resize_cells(dd_tri *t, uint32_t cap)
 {
     int grow = cap > t->cap_c;
@@ -193,6 +214,7 @@ static dd_status resize_cells(dd_tri *t, uint32_t cap)
         if (off != old_off) memmove(b + off, b + old_off, keep * rec);
         t->cell_block = b;
         t->cell = (uint32_t *)(void *)(b + off);
+        huge_pages(b, (size_t)cap * rec + CELL_ALIGN);
     } else if (grow) {
         return DD_ERR_NOMEM;
     }
@@ -702,10 +724,9 @@ void dd_clear_cells(dd_tri *t)
     t->inf_cell = t->hint = DD_NONE;
 }
 
-static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
+static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead)
 {
     const double *p = dd_pt(t, v);
-    uint32_t start = t->hint;
     if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
     dd_status s = dd_walk_locate(t, p, start, &c0);
@@ -726,10 +747,15 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
 
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, 0);
+    return insert_vertex(t, v, t->hint, 0);
+}
+
+dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start)
+{
+    return insert_vertex(t, v, start, 1);
 }
 
 dd_status dd_build_insert(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, 1);
+    return insert_vertex(t, v, t->hint, 1);
 }

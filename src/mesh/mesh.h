@@ -159,6 +159,17 @@ static inline dd_status dd_vec_push(dd_vec *v, uint32_t x)
 }
 void dd_vec_free(dd_vec *v);
 
+/* Where point location starts for a query or a new point (locate.c): per
+ * box of a grid over the vertices' bounding box, one vertex id or
+ * DD_NONE.  Empty (box NULL) until first needed.                        */
+typedef struct dd_grid {
+    uint32_t *box;
+    size_t nbox, cap;
+    uint32_t dim[3];
+    double lo[3], inv[3];     /* box of x: (x - lo) * inv, per axis       */
+    uint32_t made_for;        /* t->nvert when it was made                */
+} dd_grid;
+
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
@@ -189,6 +200,9 @@ struct dd_tri {
     uint64_t tets_created, walk_steps;
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
+    dd_grid grid;             /* location starts (locate.c), lazily made */
+    dd_vec vfree;             /* ids of deleted vertices, for dd_insert to
+                                 reuse (api.c); may hold stale entries   */
 
     /* scratch for insertion (dd_fill_star also keeps its pending facet
      * pairs in stack)                                                    */
@@ -341,8 +355,28 @@ dd_status dd_reserve_star(dd_tri *t);
 void dd_fill_star(dd_tri *t, uint32_t v);
 
 /* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
- * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
+ * 3D triangulation by Bowyer-Watson, starting the walk at t->hint
+ * (dd_insert_vertex) or at cell `start` (dd_insert_vertex_at).           */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
+
+/* ---- location for queries and new points (locate.c) ---------------------- */
+
+/* Makes t->grid fit the vertices now (made once, remade when their number
+ * has doubled or halved), O(nvid) when it is made, else O(1).            */
+dd_status dd_grid_ready(dd_tri *t);
+/* Records vertex v, just inserted, in its box (if the grid exists).      */
+void dd_grid_note(dd_tri *t, uint32_t v);
+void dd_grid_free(dd_grid *g);
+/* A live cell near p to start a walk from: the cell of a vertex of p's
+ * box or a box next to it, else t->hint, else the infinite cell.        */
+uint32_t dd_start_near(dd_tri *t, const double *p);
+/* The cells incident to vertex v, in out (reset first), O(star).        */
+dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
+/* A vertex nearest to p (exactly; any one of ties), by greedy descent
+ * over the Delaunay edges from the vertices of cell c.  Uses t->conflict
+ * as scratch.                                                            */
+dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest);
 /* The same for construction, whose cells are mostly out of cache: the
  * conflict search fetches the next cells ahead.                          */
 dd_status dd_build_insert(dd_tri *t, uint32_t v);
