@@ -139,6 +139,23 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
     return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
 }
 
+/* The cost model of dd_delete_set: deleting k of the n vertices one at a
+ * time costs about k * SET_DELETE_UNIT, rebuilding DT of the n - k left
+ * about (n - k) * SET_BUILD_UNIT; the cheaper course is taken.  The units
+ * are the measured time of one deletion along the insertion order and of
+ * inserting one point in construction, relative to each other (dtdel
+ * seq-bench and dtdel build-bench measure them).                        */
+#define SET_DELETE_UNIT 1.0
+#define SET_BUILD_UNIT 1.0
+
+static int rebuild_is_cheaper(const dd_tri *t, size_t k)
+{
+#ifdef DD_TEST_BUILD
+    if (t->testctl[DD_TEST_SET_COURSE]) return t->testctl[DD_TEST_SET_COURSE] == 2;
+#endif
+    return (double)k * SET_DELETE_UNIT > (double)(t->nvert - k) * SET_BUILD_UNIT;
+}
+
 /* A set of deletions.  The result, DT of the points left, does not depend
  * on the order (the perturbed DT is unique), so they go in vertex id
  * order: the insertion order, BRIO rounds along a Hilbert curve, so that
@@ -170,6 +187,12 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
         s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
                     t->nvert, t->nvert - (uint32_t)n);
     if (s == DD_OK) s = check_left(t, ids, n);
+    if (s == DD_OK && rebuild_is_cheaper(t, n)) {
+        s = dd_rebuild_without(t, ids, n);
+        for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
+        free(ids);
+        return s;
+    }
     size_t done = 0;
     for (; done < n && s == DD_OK; done++) {
 #ifdef DD_TEST_BUILD
@@ -294,13 +317,6 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
-static dd_status grow_u32(uint32_t **a, size_t n)
-{
-    uint32_t *b = realloc(*a, n * sizeof **a);
-    if (!b) return DD_ERR_NOMEM;
-    *a = b;
-    return DD_OK;
-}
 
 /* A vertex id for a new point: a deleted one to reuse (*reused = 1), or
  * the next unused one, the vertex arrays grown if needed.               */
@@ -315,19 +331,8 @@ static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
         }
     }
     *reused = 0;
-    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8) return dd_fail(t, DD_ERR_NOMEM, "too many points");
-    if (t->nvid == t->cap_v) {
-        size_t cap = (size_t)t->cap_v * 2;
-        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
-        if (!xyz) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->xyz = xyz;
-        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_v = (uint32_t)cap;
-    }
-    if (t->np == t->cap_in) {
-        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_in *= 2;
-    }
+    dd_status s = dd_reserve_vertex(t);
+    if (s != DD_OK) return dd_fail(t, s, s == DD_ERR_NOMEM ? "out of memory" : "too many points");
     *v = t->nvid;
     t->vcell[*v] = DD_NONE;
     t->v2in[*v] = t->np;

@@ -149,6 +149,16 @@ dd_status dd_delete(dd_tri *t, uint32_t v, const char *variant);
  * on any failure the triangulation is unchanged.                         */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
+/* Moves input vertex v to p; v keeps its index.  The result is DT of the
+ * moved point set, identical to CGAL's.  DD_ERR_DUPLICATE if p is the
+ * point of another vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p,
+ * DD_ERR_DIMENSION if only coplanar points would remain; on any failure
+ * nothing changes.  Moving v onto its own point changes nothing.
+ * Cost: O(degree) when no cell changes (an exact relocation filter: the
+ * star's cells stay positive and its facets locally Delaunay); else an
+ * insertion walked from v's old star plus a deletion.                    */
+dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
+
 /* Inserts a new point; *index receives its input index.  As CGAL reuses
  * a removed vertex's storage, the index (and storage) of a deleted vertex
  * is reused when there is one, else the index is dd_num_input() before

@@ -37,6 +37,8 @@ struct Base {
     virtual ~Base() {}
     virtual int insert(const double p[3], uint32_t index) = 0;
     virtual int remove(uint32_t index) = 0;
+    virtual int move(uint32_t index, const double p[3]) = 0;
+    virtual int remove_set(const uint32_t *idx, size_t k) = 0;
     virtual void locate(const double p[3], int32_t cell[4]) const = 0;
     virtual int64_t nearest(const double p[3]) const = 0;
     virtual void canonical(std::vector<std::array<int32_t, 4>> &out) const = 0;
@@ -76,6 +78,27 @@ template <class Dt> struct Q : Base {
         if (last == vh[index]) last = typename Dt::Vertex_handle();
         dt.remove(vh[index]);
         vh[index] = typename Dt::Vertex_handle();
+        return 0;
+    }
+    int move(uint32_t index, const double p[3]) override
+    {
+        if (index >= vh.size() || vh[index] == typename Dt::Vertex_handle()) return 1;
+        typename Dt::Vertex_handle v = dt.move_if_no_collision(vh[index], Point(p[0], p[1], p[2]));
+        if (v != vh[index] && v->info() != index) return 1;   /* collided with another vertex */
+        vh[index] = v;
+        return 0;
+    }
+    int remove_set(const uint32_t *idx, size_t k) override
+    {
+        std::vector<typename Dt::Vertex_handle> vs;
+        vs.reserve(k);
+        for (size_t i = 0; i < k; i++) {
+            if (idx[i] >= vh.size() || vh[idx[i]] == typename Dt::Vertex_handle()) return 1;
+            vs.push_back(vh[idx[i]]);
+        }
+        if (dt.remove(vs.begin(), vs.end()) != k) return 1;
+        for (size_t i = 0; i < k; i++) vh[idx[i]] = typename Dt::Vertex_handle();
+        last = typename Dt::Vertex_handle();
         return 0;
     }
     void locate(const double p[3], int32_t cell[4]) const override
@@ -149,6 +172,24 @@ int dd_cgalq_remove(dd_cgalq *c, uint32_t index)
 {
     try {
         return c->q->remove(index);
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgalq_move(dd_cgalq *c, uint32_t index, const double p[3])
+{
+    try {
+        return c->q->move(index, p);
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgalq_remove_set(dd_cgalq *c, const uint32_t *idx, size_t k)
+{
+    try {
+        return c->q->remove_set(idx, k);
     } catch (...) {
         return 1;
     }

@@ -26,6 +26,11 @@ void dd_cgalq_free(dd_cgalq *c);
 int dd_cgalq_insert(dd_cgalq *c, const double p[3], uint32_t index);
 /* Removes the vertex of input index `index` (CGAL's remove()).          */
 int dd_cgalq_remove(dd_cgalq *c, uint32_t index);
+/* move_if_no_collision of the vertex of input index `index` to p; 1 if
+ * p is another vertex's point (nothing moved).                          */
+int dd_cgalq_move(dd_cgalq *c, uint32_t index, const double p[3]);
+/* remove(first, last) of the vertices of the k input indices idx.       */
+int dd_cgalq_remove_set(dd_cgalq *c, const uint32_t *idx, size_t k);
 /* locate(p): the four vertices' indices of the cell found, -1 for the
  * infinite vertex.                                                      */
 int dd_cgalq_locate(const dd_cgalq *c, const double p[3], int32_t cell[4]);

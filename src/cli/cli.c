@@ -337,6 +337,16 @@ static const command commands[] = {
      "d', the input indices of a cell whose closure holds it (-1: the infinite\n"
      "vertex, for a point outside the hull: a hull facet it sees), then\n"
      "'nearest: v', a vertex nearest to it.  Exact.", cmd_locate},
+    {"move", "move FILE --vertex I --to X,Y,Z",
+     "Moves vertex I to (X, Y, Z) and writes the canonical form of the new\n"
+     "triangulation (as delete does); exit 1 if the point is another\n"
+     "vertex's or the move would leave only coplanar points.", cmd_move},
+    {"edit-bench", "edit-bench [N] [--passes P] [--set M] [--seed S]",
+     "Against CGAL, each result compared: smoothing, every vertex of N\n"
+     "uniform points (default 100000) moved by a random step of 5% of the\n"
+     "mean spacing, P passes (default 2), with dd_move and CGAL's\n"
+     "move_if_no_collision; then dd_delete_set of a random 10%, 50% and 90%\n"
+     "of M uniform points (default 200000) and CGAL's remove(first, last).", cmd_edit_bench},
     {"query-bench", "query-bench [N] [--inserts M] [--queries Q] [--live L] [--rounds R] [--seed S]",
      "Against CGAL (its default location and Fast_location): inserting M new\n"
      "points one at a time into DT of N uniform points (default 200000,\n"

@@ -71,6 +71,8 @@ void dd_get_counters(const dd_tri *t, dd_counters *c)
 #endif
     c->tets_created = t->tets_created;
     c->walk_steps = t->walk_steps;
+    c->moves_kept = t->moves_kept;
+    c->moves_redone = t->moves_redone;
 }
 
 void dd_reset_counters(dd_tri *t)
@@ -81,6 +83,7 @@ void dd_reset_counters(dd_tri *t)
     t->pred.perturbed = 0;
 #endif
     t->tets_created = t->walk_steps = 0;
+    t->moves_kept = t->moves_redone = 0;
 }
 
 static void sort4(int32_t *a)

@@ -759,3 +759,31 @@ dd_status dd_build_insert(dd_tri *t, uint32_t v)
 {
     return insert_vertex(t, v, t->hint, 1);
 }
+
+/* ---- vertex storage ------------------------------------------------------- */
+
+static dd_status grow_u32(uint32_t **a, size_t n)
+{
+    uint32_t *b = realloc(*a, n * sizeof **a);
+    if (!b) return DD_ERR_NOMEM;
+    *a = b;
+    return DD_OK;
+}
+
+dd_status dd_reserve_vertex(dd_tri *t)
+{
+    if (t->np >= UINT32_MAX - 8 || t->nvid >= UINT32_MAX - 8) return DD_ERR_NOMEM;
+    if (t->nvid == t->cap_v) {
+        size_t cap = (size_t)t->cap_v * 2;
+        double *xyz = realloc(t->xyz, 3 * cap * sizeof *xyz);
+        if (!xyz) return DD_ERR_NOMEM;
+        t->xyz = xyz;
+        if (grow_u32(&t->vcell, cap) || grow_u32(&t->v2in, cap)) return DD_ERR_NOMEM;
+        t->cap_v = (uint32_t)cap;
+    }
+    if (t->np == t->cap_in) {
+        if (grow_u32(&t->in2v, (size_t)t->cap_in * 2)) return DD_ERR_NOMEM;
+        t->cap_in *= 2;
+    }
+    return DD_OK;
+}

@@ -198,6 +198,7 @@ struct dd_tri {
     uint64_t rng;             /* xorshift state for walks                */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
+    uint64_t moves_kept, moves_redone;   /* dd_move: by the filter, or redone */
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
     dd_grid grid;             /* location starts (locate.c), lazily made */
@@ -377,6 +378,13 @@ dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
  * over the Delaunay edges from the vertices of cell c.  Uses t->conflict
  * as scratch.                                                            */
 dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest);
+
+/* ---- the relocation filter (relocate.c) ---------------------------------- */
+
+/* Whether moving vertex v to p changes no cell (exactly, perturbation
+ * included): then v's point is p on return; else it is unchanged.  O(star),
+ * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) if that cannot grow. */
+int dd_relocation_keeps(dd_tri *t, uint32_t v, const double p[3], dd_status *err);
 /* The same for construction, whose cells are mostly out of cache: the
  * conflict search fetches the next cells ahead.                          */
 dd_status dd_build_insert(dd_tri *t, uint32_t v);
@@ -389,6 +397,14 @@ void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
  * DD_ERR_TOO_FEW, DD_ERR_COLLINEAR or DD_ERR_COPLANAR (with a message)
  * when there are none.                                                   */
 dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n);
+
+/* Replaces the cells of t by DT of its vertices but the vertex ids
+ * ids[0..n) (sorted ascending), which leave it (vcell DD_NONE): the kept
+ * ones inserted in id order into a scratch triangulation whose cells are
+ * then swapped in, so a failure (out of memory, or DD_ERR_COPLANAR when
+ * the kept points are: the caller checks that first) changes nothing.
+ * O(kept log kept) expected, as construction.                           */
+dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n);
 
 /* Empties the cell arrays (keeps their capacity), O(1). */
 void dd_clear_cells(dd_tri *t);
@@ -413,6 +429,10 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out);
 /* Frees t's own arrays and t; its deletion context (t->del) must have
  * been freed already (dd_free, src/api.c).                               */
 void dd_tri_destroy(dd_tri *t);
+
+/* Room for one more vertex id (t->nvid < cap_v) and input index (t->np <
+ * cap_in), the arrays doubled if needed: DD_ERR_NOMEM if they cannot.  */
+dd_status dd_reserve_vertex(dd_tri *t);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
