@@ -51,6 +51,7 @@ typedef struct dd_counters {
     uint64_t tets_created;
     uint64_t walk_steps;
     uint64_t moves_kept;           /* dd_move: the filter kept the cells     */
+    uint64_t moves_flipped;        /* dd_move: repaired by flips             */
     uint64_t moves_redone;         /* dd_move: inserted again, then deleted  */
 } dd_counters;
 void dd_get_counters(const dd_tri *t, dd_counters *c);

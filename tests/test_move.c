@@ -51,7 +51,7 @@ static void move_sequence(tl_state *st, const char *name, double *pts, uint32_t 
         return;
     }
     uint64_t x = seed | 1;
-    long bad = 0, kept = 0;
+    long bad = 0, kept = 0, flipped = 0;
     char why[200] = "";
     for (uint32_t i = 0; i < k && !bad; i++) {
         const uint32_t v = (uint32_t)(step(&x) % n);
@@ -76,14 +76,15 @@ static void move_sequence(tl_state *st, const char *name, double *pts, uint32_t 
         }
         if (!dup) memcpy(q, p, sizeof p);
         kept += c1.moves_kept > c0.moves_kept;
+        flipped += c1.moves_flipped > c0.moves_flipped;
         if (!same_as_cgal(t, pts, n) || dd_check(t) != DD_OK) {
             snprintf(why, sizeof why, "move %u of vertex %u (%s): differs from CGAL or invalid", i, v,
-                     c1.moves_kept > c0.moves_kept ? "filtered" : "redone");
+                     c1.moves_kept > c0.moves_kept ? "filtered" : c1.moves_flipped > c0.moves_flipped ? "flipped" : "redone");
             bad++;
         }
     }
     tl_check(st, bad == 0, tn, "%s", why);
-    printf("# %s: %u moves, %ld kept by the filter\n", tn, k, kept);
+    printf("# %s: %u moves, %ld kept by the filter, %ld by flips\n", tn, k, kept, flipped);
     dd_free(t);
 }
 

@@ -89,6 +89,7 @@ void dd_tri_destroy(dd_tri *t)
     free(t->etab);
     dd_grid_free(&t->grid);
     dd_vec_free(&t->vfree);
+    for (int k = 0; k < 5; k++) dd_vec_free(&t->flip[k]);
     dd_pred_clear(&t->pred);
     free(t);
 }
@@ -352,23 +353,6 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
     return dd_points_conflict(&t->pred, q, k, kd, p);
 }
 
-/* dd_cell_conflict with the filter inlined for finite cells (the hot
- * test of the conflict search).  Inlining dd_insphere itself everywhere
- * (pred.h) measured 3% slower construction: only this call site does.    */
-static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
-{
-    const uint32_t *v = dd_tv(t, c);
-    if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
-        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
-        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
-        int f = dd_insphere_filter(&t->pred, a, b, d, e, p);
-        if (f == DD_FILTER_UNSURE) f = dd_insphere_unfiltered(&t->pred, a, b, d, e, p);
-        if (f == 0) f = dd_insphere_symbolic(&t->pred, a, b, d, e, p);
-        return f > 0;
-    }
-    return dd_cell_conflict(t, c, p);
-}
-
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
 static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
 {
@@ -544,7 +528,7 @@ __attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t,
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
             uint32_t nb = dd_tn(t, c)[i] >> 2;
             if (t->stamp[nb] == ep) continue;
-            if (t->stamp[nb] != tested && cell_conflict_fast(t, nb, p)) {
+            if (t->stamp[nb] != tested && dd_cell_conflict_fast(t, nb, p)) {
                 t->stamp[nb] = ep;
                 if (ahead) prefetch_neighbours(t, nb);
                 s = dd_vec_push(&t->stack, nb);

@@ -198,10 +198,11 @@ struct dd_tri {
     uint64_t rng;             /* xorshift state for walks                */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
-    uint64_t moves_kept, moves_redone;   /* dd_move: by the filter, or redone */
+    uint64_t moves_kept, moves_flipped, moves_redone;   /* dd_move's courses */
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
     dd_grid grid;             /* location starts (locate.c), lazily made */
+    dd_vec flip[5];           /* dd_move_by_flips' scratch (flip.c)       */
     dd_vec vfree;             /* ids of deleted vertices, for dd_insert to
                                  reuse (api.c); may hold stale entries   */
 
@@ -335,6 +336,23 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
  * two other vertices swapped (paper 4.1: (a,b,c,q_d) is tested as the
  * ordinary cell (b,a,c,q)).                                               */
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+/* dd_cell_conflict with the filter inlined for finite cells (the hot
+ * tests of the conflict search and of the flips): only these sites
+ * inline the filter, which elsewhere would grow the code for no gain.   */
+static inline int dd_cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
+{
+    const uint32_t *v = dd_tv(t, c);
+    if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
+        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
+        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
+        int f = dd_insphere_filter(&t->pred, a, b, d, e, p);
+        if (f == DD_FILTER_UNSURE) f = dd_insphere_unfiltered(&t->pred, a, b, d, e, p);
+        if (f == 0) f = dd_insphere_symbolic(&t->pred, a, b, d, e, p);
+        return f > 0;
+    }
+    return dd_cell_conflict(t, c, p);
+}
+
 /* The same rule on the cell's points q[0..3] (q[k] ignored: k is the
  * infinite vertex's position or -1; kd the dummy vertex's or -1, with
  * q[kd] = q's point).  q is permuted.                                    */
@@ -379,12 +397,16 @@ dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
  * as scratch.                                                            */
 dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest);
 
-/* ---- the relocation filter (relocate.c) ---------------------------------- */
+/* ---- moving a vertex in place (flip.c) ---------------------------------- */
 
-/* Whether moving vertex v to p changes no cell (exactly, perturbation
- * included): then v's point is p on return; else it is unchanged.  O(star),
- * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) if that cannot grow. */
-int dd_relocation_keeps(dd_tri *t, uint32_t v, const double p[3], dd_status *err);
+/* Moves vertex v to p and repairs the mesh by 2-3 and 3-2 flips: 1 when
+ * that yields the DT of the moved set (*flips of them; 0 flips: v's star
+ * stayed positive and locally Delaunay, the relocation filter), else 0
+ * with the mesh and v's point unchanged (an inverted star cell, a hull
+ * facet or a flat configuration in the way, an unflippable facet, or too
+ * many flips).  Exact, perturbation included.  O(star) plus O(1) a flip;
+ * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of memory. */
+int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_status *err);
 /* The same for construction, whose cells are mostly out of cache: the
  * conflict search fetches the next cells ahead.                          */
 dd_status dd_build_insert(dd_tri *t, uint32_t v);
