@@ -38,9 +38,11 @@ LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
 DATA_SRC = datasets/datasets.c
-SHIM_SRC = src/cgal/cgal_shim.cpp
+SHIM_SRC = src/cgal/cgal_shim.cpp src/cgal/cgal_query.cpp
+# The CGAL reference objects, compiled once in the release build (see below).
+SHIM_OBJ = $(SHIM_SRC:%.cpp=$(B)/obj/%.o)
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h datasets/datasets.h
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h datasets/datasets.h
 
 B = build
 A = build/asan
@@ -71,12 +73,12 @@ $(B)/obj/%.o: %.cpp $(HDRS)
 $(B)/libdtdel.a: $(LIB_OBJ_R)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
+$(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
 $(A)/obj/%.o: %.c $(HDRS)
@@ -85,12 +87,12 @@ $(A)/obj/%.o: %.c $(HDRS)
 $(A)/libdtdel.a: $(LIB_OBJ_A)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
+$(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
 $(K)/obj/%.o: %.c $(HDRS)
@@ -99,7 +101,7 @@ $(K)/obj/%.o: %.c $(HDRS)
 $(K)/libdtdel.a: $(LIB_OBJ_K)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(SHIM_OBJ) $(K)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------

@@ -55,6 +55,12 @@ build/dtdel seq-bench "$ns" --fraction 0.1 >results/sequence.txt || rc=$?
 echo >>results/sequence.txt
 build/dtdel seq-bench "$ng" --dataset grid --fraction 0.5 >>results/sequence.txt || rc=$?
 cat results/sequence.txt
+# insertion of new points, location and nearest-vertex queries against
+# CGAL (with and without Fast_location), and memory under churn
+nq=200000 kq=50000 lq=100000
+[ "$mode" = quick ] && nq=50000 kq=10000 lq=20000
+build/dtdel query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq" >results/queries.txt || rc=$?
+cat results/queries.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
 sh scripts/plots.sh results

@@ -23,7 +23,12 @@ rank() {   # rank of the layer of object path $1 (relative to $obj)
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-(cd "$obj" && find src variants -name '*.o' | sort) >"$tmp/objs"
+# the objects of the sources there are now (a build dir may keep objects
+# of files since moved or removed)
+top=$(cd "$(dirname "$0")/.." && pwd)
+(cd "$top" && find src variants -name '*.c' | sed 's/\.c$/.o/' | sort) | while read -r o; do
+    [ -f "$obj/$o" ] && echo "$o"
+done >"$tmp/objs"
 while read -r o; do
     r=$(rank "$o")
     nm --defined-only -g "$obj/$o" | awk -v r="$r" -v o="$o" '$2 ~ /[TDBRC]/ { print $3, r, o }'

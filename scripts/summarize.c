@@ -1201,6 +1201,46 @@ static void readme_construction(const ctx *c, FILE *out)
     fclose(f);
 }
 
+/* The rows of OUTDIR/queries.txt (dtdel query-bench's output) as a table
+ * of their own: insertion of new points, locate and nearest vertex
+ * against CGAL with and without Fast_location, then the churn line;
+ * nothing without the file.                                             */
+static void readme_queries(const ctx *c, FILE *out)
+{
+    char path[4096], what[64], ok[8], b[40];
+    snprintf(path, sizeof path, "%s/queries.txt", c->outdir);
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    char *line = NULL;
+    size_t cap = 0;
+    long long n = 0, k;
+    double ours, cgal, rc, fast, rf, rss;
+    int any = 0;
+    while (read_line(f, &line, &cap) == 1) {
+        if (sscanf(line, "dataset uniform, n = %lld", &n) == 1) continue;
+        if (sscanf(line, "%63[^:]: %lld: dtdel %lf us, CGAL %lf us (%lfx), CGAL Fast_location %lf us (%lfx); %*[^:]: %7s",
+                   what, &k, &ours, &cgal, &rc, &fast, &rf, ok) == 8) {
+            if (!any)
+                fprintf(out, "\n| uniform, n = %s | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |\n"
+                             "|---|---:|---:|---:|---:|---:|\n", fmt_int(n, b));
+            any = 1;
+            fprintf(out, "| %s (%s) | %.2f | %.2f | %.1f× | %.2f | %.1f× |\n",
+                    !strcmp(what, "insert") ? "insert a new point" : !strcmp(what, "locate") ? "locate" : "nearest vertex",
+                    strcmp(ok, "yes") ? "**differs from CGAL**" : "same as CGAL", ours, cgal, rc, fast, rf);
+        } else if (sscanf(line, "churn: %lld live vertices, %lld rounds", &n, &k) == 2) {
+            const char *x = strstr(line, "RSS ");
+            double r2, rl;
+            long long last;
+            if (x && sscanf(x, "RSS %lf MiB after round 2, %lf MiB after round %lld (%lfx)", &r2, &rl, &last, &rss) == 4)
+                fprintf(out, "\nUnder churn (`dtdel query-bench`: %lld rounds of deleting half of %s vertices and "
+                             "inserting as many), resident memory after the last round is %.2f× that after round 2.\n",
+                        k, fmt_int(n, b), rss);
+        }
+    }
+    free(line);
+    fclose(f);
+}
+
 static int write_readme_table(ctx *c)
 {
     char path[4096];
@@ -1254,6 +1294,7 @@ static int write_readme_table(ctx *c)
             *cores ? cores : "?", *cgal ? cgal : "?");
     readme_construction(c, out);
     fputc('\n', out);
+    readme_queries(c, out);
     free(col);
     free(idx);
     free(sizes);

@@ -48,6 +48,28 @@ const char *dd_variant_description(size_t i)
     return dd_variant_table[i]->description;
 }
 
+/* Records deleted vertex q for dd_insert to reuse.  Entries of vertices
+ * re-inserted since are stale and skipped; when stale entries make the
+ * list longer than the vertex ids, it is compacted (amortised O(1)).  A
+ * failed push only forgoes the reuse.                                    */
+static void note_deleted(dd_tri *t, uint32_t q)
+{
+    dd_vec *f = &t->vfree;
+    if (f->n >= t->nvid && f->n > 64) {
+        size_t m = 0;
+        for (size_t k = 0; k < f->n; k++) {
+            uint32_t v = f->a[k];
+            if (t->vcell[v] == DD_NONE) {
+                t->vcell[v] = DD_DEAD;       /* mark: keep once */
+                f->a[m++] = v;
+            }
+        }
+        for (size_t k = 0; k < m; k++) t->vcell[f->a[k]] = DD_NONE;
+        f->n = m;
+    }
+    (void)dd_vec_push(f, q);
+}
+
 /* The strategy named `variant` (NULL: the default) in *var, clearing the
  * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
 static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
@@ -64,8 +86,9 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
     uint32_t q = 0;
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
-    if (s != DD_OK) return s;
-    return dd_del_vertex(t, q, var);
+    if (s == DD_OK) s = dd_del_vertex(t, q, var);
+    if (s == DD_OK) note_deleted(t, q);
+    return s;
 }
 
 #ifdef DD_TEST_BUILD
@@ -117,6 +140,23 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
     return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
 }
 
+/* The cost model of dd_delete_set: deleting k of the n vertices one at a
+ * time costs about k * SET_DELETE_UNIT, rebuilding DT of the n - k left
+ * about (n - k) * SET_BUILD_UNIT; the cheaper course is taken.  The units
+ * are the measured time of one deletion along the insertion order and of
+ * inserting one point in construction, relative to each other (dtdel
+ * seq-bench and dtdel build-bench measure them).                        */
+#define SET_DELETE_UNIT 1.0
+#define SET_BUILD_UNIT 1.0
+
+static int rebuild_is_cheaper(const dd_tri *t, size_t k)
+{
+#ifdef DD_TEST_BUILD
+    if (t->testctl[DD_TEST_SET_COURSE]) return t->testctl[DD_TEST_SET_COURSE] == 2;
+#endif
+    return (double)k * SET_DELETE_UNIT > (double)(t->nvert - k) * SET_BUILD_UNIT;
+}
+
 /* A set of deletions.  The result, DT of the points left, does not depend
  * on the order (the perturbed DT is unique), so they go in vertex id
  * order: the insertion order, BRIO rounds along a Hilbert curve, so that
@@ -148,6 +188,12 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
         s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
                     t->nvert, t->nvert - (uint32_t)n);
     if (s == DD_OK) s = check_left(t, ids, n);
+    if (s == DD_OK && rebuild_is_cheaper(t, n)) {
+        s = dd_rebuild_without(t, ids, n);
+        for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
+        free(ids);
+        return s;
+    }
     size_t done = 0;
     for (; done < n && s == DD_OK; done++) {
 #ifdef DD_TEST_BUILD
@@ -168,6 +214,7 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
         }
         memcpy(t->err, why, sizeof why);
     }
+    for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     free(ids);
     return s;
 }
@@ -251,6 +298,29 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
+
+/* A vertex id for a new point: a deleted one to reuse (*reused = 1), or
+ * the next unused one, the vertex arrays grown if needed.               */
+static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
+{
+    while (t->vfree.n > 0) {
+        const uint32_t x = t->vfree.a[--t->vfree.n];
+        if (t->vcell[x] == DD_NONE) {
+            *v = x;
+            *reused = 1;
+            return DD_OK;
+        }
+    }
+    *reused = 0;
+    dd_status s = dd_reserve_vertex(t);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory or too many points");
+    *v = t->nvid;
+    t->vcell[*v] = DD_NONE;
+    t->v2in[*v] = t->np;
+    t->in2v[t->np] = *v;
+    return DD_OK;
+}
+
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
     t->err[0] = 0;
@@ -258,29 +328,26 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
     }
-    if (t->np == UINT32_MAX - 8 || t->nvid == UINT32_MAX - 8)
-        return dd_fail(t, DD_ERR_NOMEM, "too many points");
-    if (t->nvid == t->cap_v) {
-        size_t cap = (size_t)t->cap_v * 2;
-        if (dd_grow(&t->xyz, 3 * cap, sizeof *t->xyz) || dd_grow(&t->vcell, cap, sizeof *t->vcell) ||
-            dd_grow(&t->v2in, cap, sizeof *t->v2in))
-            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_v = (uint32_t)cap;
+    uint32_t v = 0;
+    int reused = 0;
+    dd_status s = dd_grid_ready(t);
+    if (s != DD_OK) return dd_fail(t, s, "out of memory");
+    if ((s = new_vertex_id(t, &v, &reused)) != DD_OK) return s;
+    double old[3];                                   /* a reused slot's point, kept */
+    memcpy(old, t->xyz + 3 * (size_t)v, sizeof old);
+    memcpy(t->xyz + 3 * (size_t)v, p, sizeof old);
+    s = dd_insert_vertex_at(t, v, dd_start_near(t, p));
+    if (s != DD_OK) {                                /* nothing changes */
+        memcpy(t->xyz + 3 * (size_t)v, old, sizeof old);
+        if (reused) (void)dd_vec_push(&t->vfree, v);
+        return s;
     }
-    if (t->np == t->cap_in) {
-        if (dd_grow(&t->in2v, (size_t)t->cap_in * 2, sizeof *t->in2v))
-            return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        t->cap_in *= 2;
+    dd_grid_note(t, v);
+    if (!reused) {
+        t->nvid++;
+        t->np++;
     }
-    uint32_t v = t->nvid;
-    memcpy(t->xyz + 3 * (size_t)v, p, 3 * sizeof *p);
-    t->vcell[v] = DD_NONE;
-    t->v2in[v] = t->np;
-    t->in2v[t->np] = v;
-    dd_status s = dd_insert_vertex(t, v);
-    if (s != DD_OK) return s;   /* nvid, np unchanged: the slot is unused */
-    t->nvid++;
-    *index = t->np++;
+    *index = t->v2in[v];
     return DD_OK;
 }
 

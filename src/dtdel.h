@@ -97,6 +97,40 @@ uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets);
  * of finite cells, and the perturbed empty-sphere test on every facet.   */
 dd_status dd_check(dd_tri *t);
 
+/* ---- reading the mesh and locating points ------------------------------ */
+
+/* Coordinates of input vertex v.  DD_ERR_UNKNOWN_VERTEX if v is not a
+ * vertex now.  O(1).                                                     */
+dd_status dd_point(const dd_tri *t, uint32_t v, double p[3]);
+/* Snapshot of all cells, finite and infinite, in two malloc'd arrays of
+ * 4 * *ncells ints (the caller frees both):
+ *   verts[4c+i] = input index of vertex i of cell c (-1 = infinite);
+ *   nbrs[4c+i]  = the cell across the facet opposite verts[4c+i].
+ * Finite cells are positively oriented (CGAL's orientation sign); an
+ * infinite cell is oriented as if -1 were a point beyond its hull facet.
+ * O(cells).                                                              */
+dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *ncells);
+/* The cells incident to input vertex v, as their four vertices (input
+ * indices, -1 = infinite), at most max written; returns their number, 0
+ * if v is not a vertex.  O(number of cells).                             */
+uint32_t dd_incident_cells(dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max);
+/* The four vertices (input indices, -1 = infinite) of a cell whose
+ * closure holds p, or, when p is outside the convex hull, of an infinite
+ * cell whose hull facet p sees (p on its outer side or in its plane).
+ * Exact, degenerate positions included.  DD_ERR_NAN / DD_ERR_INFINITE
+ * for a bad p.  Expected O(1) cells walked on evenly spread points: the
+ * walk starts at a vertex near p (a grid over the vertices, made at the
+ * first query or insertion in O(n), remade as the size doubles or
+ * halves).                                                               */
+dd_status dd_locate(dd_tri *t, const double p[3], int32_t cell[4]);
+/* An input index of a vertex nearest to p in Euclidean distance (any one
+ * of ties), exact.  UINT32_MAX (and dd_errmsg says why) for a NaN or
+ * infinite p.  dd_locate's cost, then a greedy descent over Delaunay
+ * edges: O(degree) a step, a few steps.                                  */
+uint32_t dd_nearest_vertex(dd_tri *t, const double p[3]);
+/* 1 if the vertex index v is the infinite vertex (-1 in the arrays). */
+static inline int dd_is_infinite(int32_t v) { return v < 0; }
+
 /* ---- deletion (paper: DELETEVERTEX) ------------------------------------ */
 
 /* Deletes input vertex v with the named strategy (NULL = the default, the
@@ -116,8 +150,25 @@ dd_status dd_delete(dd_tri *t, uint32_t v, const char *variant);
  * on any failure the triangulation is unchanged.                         */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
-/* Inserts a new point; *index receives its input index (dd_num_input()
- * before the call).  DD_ERR_DUPLICATE if it equals a vertex.             */
+/* Moves input vertex v to p; v keeps its index.  The result is DT of the
+ * moved point set, identical to CGAL's.  DD_ERR_DUPLICATE if p is the
+ * point of another vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p,
+ * DD_ERR_DIMENSION if only coplanar points would remain; on any failure
+ * nothing changes.  Moving v onto its own point changes nothing.
+ * Cost: O(degree) when no cell changes (an exact relocation filter: the
+ * star's cells stay positive and its facets locally Delaunay); else an
+ * insertion walked from v's old star plus a deletion.                    */
+dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
+
+/* Inserts a new point; *index receives its input index.  As CGAL reuses
+ * a removed vertex's storage, the index (and storage) of a deleted vertex
+ * is reused when there is one, else the index is dd_num_input() before
+ * the call; so memory stays bounded by the live size under churn, and an
+ * index deleted before a dd_insert may name the new point after it
+ * (dd_reinsert of it then fails).  DD_ERR_DUPLICATE if p equals a
+ * vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p; on failure nothing
+ * changes.  The walk starts near p (as dd_locate): expected O(1) cells
+ * on evenly spread points, plus the O(degree) update.                    */
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
 /* Puts back input vertex v after dd_delete (same index, same point). */
 dd_status dd_reinsert(dd_tri *t, uint32_t v);

@@ -50,6 +50,9 @@ typedef struct dd_counters {
     uint64_t perturbed;            /* exact zeros resolved by perturbation */
     uint64_t tets_created;
     uint64_t walk_steps;
+    uint64_t moves_kept;           /* dd_move: the filter kept the cells     */
+    uint64_t moves_flipped;        /* dd_move: repaired by flips             */
+    uint64_t moves_redone;         /* dd_move: inserted again, then deleted  */
 } dd_counters;
 void dd_get_counters(const dd_tri *t, dd_counters *c);
 void dd_reset_counters(dd_tri *t);
@@ -73,6 +76,8 @@ typedef enum dd_test_ctl {
                              them runs                                    */
     DD_TEST_SET_FAIL_AT,  /* k + 1: dd_delete_set fails at its deletion
                              number k as out of memory would (0: never)   */
+    DD_TEST_SET_COURSE,   /* dd_delete_set's course: 1 one at a time, 2 a
+                             rebuild of the points left (0: the cheaper) */
     DD_TEST_EXP_PLAIN,    /* 1: the exact stages take their plain
                              TWO-PRODUCT, not FMA (process-wide)          */
     DD_TEST_NCTL

@@ -238,7 +238,18 @@ uniform,100000,3,15,0,auto,8,,,,,,1
 uniform,100000,4,16,0,auto,1,,,,,,0
 uniform,100000,1,12,0,zeta-x,16,,,,,,1
 EOF2
+mkdir -p "$tmp/rd"
+cat >"$tmp/rd/queries.txt" <<'EOQ'
+dataset uniform, n = 200000; new points and queries uniform in the same cube (seed 1)
+insert: 50000: dtdel 4.00 us, CGAL 40.00 us (10.0x), CGAL Fast_location 30.00 us (7.5x); identical to CGAL: yes
+locate: 50000: dtdel 1.00 us, CGAL 20.00 us (20.0x), CGAL Fast_location 5.00 us (5.0x); same cells as CGAL: NO
+churn: 1000 live vertices, 12 rounds of deleting half and inserting as many: RSS 10.0 MiB after round 2, 11.0 MiB after round 12 (1.10x); arrays 5.0 MiB, 5.0 MiB (1.00x); valid: yes
+EOQ
 expect readme-runs 0 "" "$SUM" "$tmp/rd" "$tmp/moment.csv" "$tmp/helix.csv" "$tmp/uniform.csv"
+has readme-queries-header "$tmp/rd/readme-table.md" "| uniform, n = 200 000 | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |"
+has readme-queries-insert "$tmp/rd/readme-table.md" "| insert a new point (same as CGAL) | 4.00 | 40.00 | 10.0× | 30.00 | 7.5× |"
+has readme-queries-differ "$tmp/rd/readme-table.md" "| locate (**differs from CGAL**) | 1.00 | 20.00 | 20.0× | 5.00 | 5.0× |"
+has readme-queries-churn "$tmp/rd/readme-table.md" "Under churn (\`dtdel query-bench\`: 12 rounds of deleting half of 1000 vertices and inserting as many), resident memory after the last round is 1.10× that after round 2."
 rt=$tmp/rd/readme-table.md
 has readme-header "$rt" "| dataset | degree | deletions | CGAL µs | auto | gift-wrap | zeta-x | cgal-rnd |"
 has readme-moment-64 "$rt" "| moment, n = 64 | 64 | 2 | 2000 | 100× | 125× | — | 2.00× |"
@@ -248,7 +259,7 @@ has readme-uniform "$rt" "| uniform, n = 100 000 | 12–15 | 3 | 40.0 | 10.0× |
 has readme-missing "$rt" "Not in this run: moment n = 1024; helix n = 64 000; sphere, degree 4–7; sphere, degree 8–11; bunny, degree 12–15; grid, degree 12–15; cosphere, degree 16–23."
 has readme-mismatches "$rt" "**mismatches: 1** (results that differ from CGAL's triangulation: a bug; summary.md lists them)"
 has readme-run "$rt" "Run: commit abc1234, 2026-01-01T00:00Z, mode full (scale 1); testbox, 2 cores; CGAL 9.9. Construction of DT(S) (\`dtdel build-bench\`): 2.07× CGAL's speed on uniform, n = 1 000 000; 4.24× on helix, n = 16 000."
-nrows=$(grep -c '^| [a-z]*, n = ' "$rt")
+nrows=$(grep -c '^| [a-z]*, n = [0-9 ]* | [0-9~]' "$rt")   # the deletion table's rows
 if [ "$nrows" -eq 4 ]; then ok readme-rows; else bad readme-rows "$nrows rows, expected 4"; fi
 # no mismatch, no meta.txt, no build.txt
 mkdir "$tmp/rd2"

@@ -339,6 +339,29 @@ static const command commands[] = {
      "itself is no variant here); --sequence deletes them one after another\n"
      "without re-inserting.  Prints matched/total per variant; exit 1 on any\n"
      "mismatch.", cmd_check},
+    {"locate", "locate FILE X Y Z",
+     "Locates the point (X, Y, Z) in DT of FILE's points: prints 'cell: a b c\n"
+     "d', the input indices of a cell whose closure holds it (-1: the infinite\n"
+     "vertex, for a point outside the hull: a hull facet it sees), then\n"
+     "'nearest: v', a vertex nearest to it.  Exact.", cmd_locate},
+    {"move", "move FILE --vertex I --to X,Y,Z",
+     "Moves vertex I to (X, Y, Z) and writes the canonical form of the new\n"
+     "triangulation (as delete does); exit 1 if the point is another\n"
+     "vertex's or the move would leave only coplanar points.", cmd_move},
+    {"edit-bench", "edit-bench [N] [--passes P] [--set M] [--seed S]",
+     "Against CGAL, each result compared: smoothing, every vertex of N\n"
+     "uniform points (default 100000) moved by a random step of 5% of the\n"
+     "mean spacing, P passes (default 2), with dd_move and CGAL's\n"
+     "move_if_no_collision; then dd_delete_set of a random 10%, 50% and 90%\n"
+     "of M uniform points (default 200000) and CGAL's remove(first, last).", cmd_edit_bench},
+    {"query-bench", "query-bench [N] [--inserts M] [--queries Q] [--live L] [--rounds R] [--seed S]",
+     "Against CGAL (its default location and Fast_location): inserting M new\n"
+     "points one at a time into DT of N uniform points (default 200000,\n"
+     "50000), then Q locate and Q nearest-vertex queries; checks the\n"
+     "insertions' result equals CGAL's and every answer agrees.  Then churn:\n"
+     "R rounds (default 12) of deleting a random half of L live vertices\n"
+     "(default 100000) and inserting as many new points; exit 1 if the\n"
+     "resident memory after the last round passes 1.3 times round 2's.", cmd_query_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",

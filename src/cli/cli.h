@@ -92,6 +92,10 @@ int cmd_time(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_seq_bench(int argc, char **argv);
+int cmd_locate(int argc, char **argv);
+int cmd_move(int argc, char **argv);
+int cmd_edit_bench(int argc, char **argv);
+int cmd_query_bench(int argc, char **argv);
 
 
 #endif

@@ -423,3 +423,38 @@ int dd_inf_conflict(dd_pred *ctx, const double *const v[4], int k,
     if (o != 0) return o;
     return dd_incircle_coplanar_perturbed(ctx, a, b, c, p);
 }
+
+/* ---- distances ------------------------------------------------------------ */
+
+/* Filter: each |p - x|^2 is a sum of three squares of rounded differences,
+ * within 6u of its value (u = 2^-53: the difference, the square and two
+ * additions each add at most u relative to positive terms); their
+ * difference adds u |d|.  So |d - exact| <= 8u (A + B) with A, B the
+ * computed sums, while A + B lies in [1e-290, 1e300]: no overflow, and
+ * an underflowed term is far below the bound.                           */
+int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const double *b)
+{
+    double A = 0, B = 0;
+    for (int c = 0; c < 3; c++) {
+        double x = p[c] - a[c], y = p[c] - b[c];
+        A += x * x;
+        B += y * y;
+    }
+    double d = A - B, err = 8.8817841970012523e-16 * (A + B);
+    if (A + B >= 1e-290 && A + B <= 1e300) {
+        if (d > err) return 1;
+        if (d < -err) return -1;
+    }
+    const double *pts[3] = {p, a, b};
+    load_points(ctx, pts, 3);
+    mpz_ptr z[DD_PRED_SCRATCH];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    mpz_set_ui(z[9], 0);                       /* A - B, summed exactly */
+    for (int c = 0; c < 3; c++) {
+        mpz_sub(z[10], z[c], z[3 + c]);
+        mpz_addmul(z[9], z[10], z[10]);
+        mpz_sub(z[10], z[c], z[6 + c]);
+        mpz_submul(z[9], z[10], z[10]);
+    }
+    return mpz_sgn(z[9]);
+}

@@ -209,6 +209,10 @@ int dd_incircle_coplanar_perturbed(dd_pred *ctx, const double *p0,
  * v[k] is ignored, the other three are the hull facet.  +1 when p is in
  * conflict with the cell (beyond the facet, or in its plane and inside its
  * perturbed circle), -1 otherwise.                                        */
+/* sign(|p - a|^2 - |p - b|^2), exactly: +1 when b is nearer p than a,
+ * -1 when a is, 0 at equal distances.  Filtered, then GMP.               */
+int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const double *b);
+
 int dd_inf_conflict(dd_pred *ctx, const double *const v[4], int k,
                     const double *p);
 

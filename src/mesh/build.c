@@ -303,3 +303,62 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     *out = t;
     return DD_OK;
 }
+
+/* ---- rebuilding without a set of vertices ----------------------------- */
+
+/* The vertex ids now in t but not in the sorted ids[0..n), in id order:
+ * the construction's BRIO + Hilbert order, a good insertion order still. */
+static uint32_t kept_vertices(const dd_tri *t, const uint32_t *ids, size_t n, uint32_t *kept)
+{
+    uint32_t m = 0;
+    size_t k = 0;
+    for (uint32_t v = 0; v < t->nvid; v++) {
+        while (k < n && ids[k] < v) k++;
+        if (t->vcell[v] != DD_NONE && !(k < n && ids[k] == v)) kept[m++] = v;
+    }
+    return m;
+}
+
+/* Gives t the cells of s (and s t's old ones, for dd_tri_destroy). */
+static void swap_cells(dd_tri *t, dd_tri *s)
+{
+#define SWAP(f) do { __typeof__(t->f) x_ = t->f; t->f = s->f; s->f = x_; } while (0)
+    SWAP(cell); SWAP(cell_block); SWAP(stamp); SWAP(ncell); SWAP(cap_c); SWAP(nlive); SWAP(nfinite);
+    SWAP(free_head); SWAP(nfree); SWAP(epoch); SWAP(inf_cell); SWAP(hint);
+#undef SWAP
+}
+
+dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n)
+{
+    dd_tri *s;
+    uint32_t *kept = malloc(((size_t)t->nvid + 1) * sizeof *kept), *vcell = malloc((size_t)t->cap_v * sizeof *vcell);
+    dd_status st = kept && vcell ? dd_tri_alloc_borrowed(&s) : DD_ERR_NOMEM;
+    if (st != DD_OK) {
+        free(kept), free(vcell);
+        return dd_fail(t, st, "out of memory");
+    }
+    s->xyz = t->xyz;
+    s->v2in = t->v2in;
+    s->vcell = vcell;
+    s->nvid = t->nvid;
+    const uint32_t m = kept_vertices(t, ids, n, kept);
+    for (uint32_t v = 0; v < t->nvid; v++) vcell[v] = DD_NONE;
+    st = dd_pick_simplex(s, t->xyz, kept, m);
+    if (st == DD_OK) st = dd_reserve_cells(s, m < 8 ? 64 : 7 * m);
+    if (st == DD_OK) {
+        dd_make_first_cells(s, kept);
+        for (uint32_t k = 4; k < m && st == DD_OK; k++) st = dd_build_insert(s, kept[k]);
+    }
+    if (st == DD_OK) {
+        swap_cells(t, s);
+        memcpy(t->vcell, vcell, (size_t)t->nvid * sizeof *vcell);
+        t->nvert = m;
+        t->tets_created += s->tets_created;
+        dd_shrink_cells(t);
+    } else {
+        dd_fail(t, st, "%s", st == DD_ERR_NOMEM ? "out of memory" : s->err);
+    }
+    dd_tri_destroy(s);
+    free(kept), free(vcell);
+    return st;
+}

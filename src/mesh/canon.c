@@ -46,11 +46,13 @@ size_t dd_memory_bytes(const dd_tri *t)
 {
     /* cells: records (plus the alignment slack), stamp; vertices: xyz,
      * vcell, v2in; inputs: in2v; insertion scratch: the three vectors,
-     * the edge hash and table                                            */
+     * the edge hash and table; the location grid and the reusable ids   */
     return (size_t)t->cap_c * (DD_CELL_WORDS * sizeof(uint32_t) + sizeof(dd_mark)) + (t->cell_block ? 64 : 0)
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
          + (size_t)t->cap_in * sizeof(uint32_t)
-         + (t->stack.cap + t->conflict.cap + t->boundary.cap) * sizeof(uint32_t)
+         + (t->stack.cap + t->conflict.cap + t->boundary.cap + t->vfree.cap) * sizeof(uint32_t)
+         + (t->flip[0].cap + t->flip[1].cap + t->flip[2].cap + t->flip[3].cap + t->flip[4].cap) * sizeof(uint32_t)
+         + t->grid.cap * sizeof(uint32_t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0);
 }
@@ -71,6 +73,9 @@ void dd_get_counters(const dd_tri *t, dd_counters *c)
 #endif
     c->tets_created = t->tets_created;
     c->walk_steps = t->walk_steps;
+    c->moves_kept = t->moves_kept;
+    c->moves_flipped = t->moves_flipped;
+    c->moves_redone = t->moves_redone;
 }
 
 void dd_reset_counters(dd_tri *t)
@@ -81,6 +86,7 @@ void dd_reset_counters(dd_tri *t)
     t->pred.perturbed = 0;
 #endif
     t->tets_created = t->walk_steps = 0;
+    t->moves_kept = t->moves_flipped = t->moves_redone = 0;
 }
 
 static void sort4(int32_t *a)

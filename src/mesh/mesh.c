@@ -7,7 +7,10 @@
  * walk, the conflict search and the star re-filling of the cavity.  Insertion is all-or-nothing: every allocation happens before
  * the first write to the mesh, so a failed insertion leaves it unchanged.
  */
+#define _DEFAULT_SOURCE 1   /* madvise advice names (huge_pages) */
 #include "mesh/mesh.h"
+
+#include <sys/mman.h>
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -94,6 +97,9 @@ void dd_tri_destroy(dd_tri *t)
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     free(t->ehash);
     free(t->etab);
+    dd_grid_free(&t->grid);
+    dd_vec_free(&t->vfree);
+    for (int k = 0; k < 5; k++) dd_vec_free(&t->flip[k]);
     dd_pred_clear(&t->pred);
     free(t);
 }
@@ -192,6 +198,22 @@ void dd_trihash_free(dd_trihash *h)
  * cache line, none straddling two): after a realloc that moved the block
  * to another offset, they are moved back into line.                     */
 #define CELL_ALIGN 64
+
+/* Asks the kernel for transparent huge pages under the 2 MiB-aligned part
+ * of block b: the walks and conflict searches of random insertions and
+ * queries jump across the cell array, where 4 KiB pages miss the TLB at
+ * nearly every cell.  Advice only: ignored where unsupported.           */
+static void huge_pages(void *b, size_t len)
+{
+#ifdef MADV_HUGEPAGE
+    const uintptr_t page = (uintptr_t)2 << 20, lo = ((uintptr_t)b + page - 1) & ~(page - 1),
+                    hi = ((uintptr_t)b + len) & ~(page - 1);
+    if (hi > lo) (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
+#else
+    (void)b, (void)len;
+#endif
+}
+
 static dd_status resize_cells(dd_tri *t, uint32_t cap)
 {
     int grow = cap > t->cap_c;
@@ -203,6 +225,7 @@ static dd_status resize_cells(dd_tri *t, uint32_t cap)
         if (off != old_off) memmove(b + off, b + old_off, keep * rec);
         t->cell_block = b;
         t->cell = (uint32_t *)(void *)(b + off);
+        huge_pages(b, (size_t)cap * rec + CELL_ALIGN);
     } else if (grow) {
         return DD_ERR_NOMEM;
     }
@@ -338,24 +361,6 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
         else q[i] = dd_pt(t, v[i]);
     }
     return dd_points_conflict(&t->pred, q, k, kd, p);
-}
-
-/* dd_cell_conflict with the filter inlined for finite cells (the hot
- * test of the conflict search).  Only this call site inlines it:
- * inlining dd_insphere everywhere (pred.h) slows construction down
- * (`build/dtdel build-bench`).                                          */
-static inline int cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
-{
-    const uint32_t *v = dd_tv(t, c);
-    if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
-        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
-        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
-        int f = dd_insphere_filter(&t->pred, a, b, d, e, p);
-        if (f == DD_FILTER_UNSURE) f = dd_insphere_unfiltered(&t->pred, a, b, d, e, p);
-        if (f == 0) f = dd_insphere_symbolic(&t->pred, a, b, d, e, p);
-        return f > 0;
-    }
-    return dd_cell_conflict(t, c, p);
 }
 
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
@@ -533,7 +538,7 @@ __attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t,
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
             uint32_t nb = dd_tn(t, c)[i] >> 2;
             if (t->stamp[nb] == ep) continue;
-            if (t->stamp[nb] != tested && cell_conflict_fast(t, nb, p)) {
+            if (t->stamp[nb] != tested && dd_cell_conflict_fast(t, nb, p)) {
                 t->stamp[nb] = ep;
                 if (ahead) prefetch_neighbours(t, nb);
                 s = dd_vec_push(&t->stack, nb);
@@ -713,12 +718,12 @@ void dd_clear_cells(dd_tri *t)
     t->inf_cell = t->hint = DD_NONE;
 }
 
-/* dd_insert_vertex (ahead = 0) and dd_build_insert (ahead = 1): locate,
- * refuse a duplicate, find the conflict region, reserve, fill the star. */
-static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
+/* dd_insert_vertex, dd_insert_vertex_at (from `start`) and dd_build_insert
+ * (ahead = 1: the conflict search fetches cells ahead): locate, refuse a
+ * duplicate, find the conflict region, reserve, fill the star.          */
+static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead)
 {
     const double *p = dd_pt(t, v);
-    uint32_t start = t->hint;
     if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
     dd_status s = dd_walk_locate(t, p, start, &c0);
@@ -739,10 +744,34 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, const int ahead)
 
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, 0);
+    return insert_vertex(t, v, t->hint, 0);
+}
+
+dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start)
+{
+    return insert_vertex(t, v, start, 1);
 }
 
 dd_status dd_build_insert(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, 1);
+    return insert_vertex(t, v, t->hint, 1);
+}
+
+/* ---- vertex storage ------------------------------------------------------- */
+
+dd_status dd_reserve_vertex(dd_tri *t)
+{
+    if (t->np >= UINT32_MAX - 8 || t->nvid >= UINT32_MAX - 8) return DD_ERR_NOMEM;
+    if (t->nvid == t->cap_v) {
+        size_t cap = (size_t)t->cap_v * 2;
+        if (dd_grow(&t->xyz, 3 * cap, sizeof *t->xyz) || dd_grow(&t->vcell, cap, sizeof *t->vcell) ||
+            dd_grow(&t->v2in, cap, sizeof *t->v2in))
+            return DD_ERR_NOMEM;
+        t->cap_v = (uint32_t)cap;
+    }
+    if (t->np == t->cap_in) {
+        if (dd_grow(&t->in2v, (size_t)t->cap_in * 2, sizeof *t->in2v)) return DD_ERR_NOMEM;
+        t->cap_in *= 2;
+    }
+    return DD_OK;
 }

@@ -174,6 +174,17 @@ static inline dd_status dd_vec_push(dd_vec *v, uint32_t x)
 }
 void dd_vec_free(dd_vec *v);
 
+/* Where point location starts for a query or a new point (locate.c): per
+ * box of a grid over the vertices' bounding box, one vertex id or
+ * DD_NONE.  Empty (box NULL) until first needed.                        */
+typedef struct dd_grid {
+    uint32_t *box;
+    size_t nbox, cap;
+    uint32_t dim[3];
+    double lo[3], inv[3];     /* box of x: (x - lo) * inv, per axis       */
+    uint32_t made_for;        /* t->nvert when it was made                */
+} dd_grid;
+
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
@@ -202,8 +213,13 @@ struct dd_tri {
     uint64_t rng;             /* dd_xorshift state for walks             */
     dd_pred pred;
     uint64_t tets_created, walk_steps;
+    uint64_t moves_kept, moves_flipped, moves_redone;   /* dd_move's courses */
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
+    dd_grid grid;             /* location starts (locate.c), lazily made */
+    dd_vec flip[5];           /* dd_move_by_flips' scratch (flip.c)       */
+    dd_vec vfree;             /* ids of deleted vertices, for dd_insert to
+                                 reuse (api.c); may hold stale entries   */
 
     /* scratch for insertion (dd_fill_star also keeps its pending facet
      * pairs in stack)                                                    */
@@ -345,6 +361,23 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
  * two other vertices swapped (paper 4.1: (a,b,c,q_d) is tested as the
  * ordinary cell (b,a,c,q)).                                               */
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+/* dd_cell_conflict with the filter inlined for finite cells (the hot
+ * tests of the conflict search and of the flips): only these sites
+ * inline the filter, which elsewhere would grow the code for no gain.   */
+static inline int dd_cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
+{
+    const uint32_t *v = dd_tv(t, c);
+    if ((v[0] < DD_QD) & (v[1] < DD_QD) & (v[2] < DD_QD) & (v[3] < DD_QD)) {
+        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
+        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
+        int f = dd_insphere_filter(&t->pred, a, b, d, e, p);
+        if (f == DD_FILTER_UNSURE) f = dd_insphere_unfiltered(&t->pred, a, b, d, e, p);
+        if (f == 0) f = dd_insphere_symbolic(&t->pred, a, b, d, e, p);
+        return f > 0;
+    }
+    return dd_cell_conflict(t, c, p);
+}
+
 /* The same rule on the cell's points q[0..3] (q[k] ignored: k is the
  * infinite vertex's position or -1; kd the dummy vertex's or -1, with
  * q[kd] = q's point).  q is permuted.                                    */
@@ -366,8 +399,39 @@ dd_status dd_reserve_star(dd_tri *t);
 void dd_fill_star(dd_tri *t, uint32_t v);
 
 /* Inserts vertex v (its point already in xyz, vcell[v] == DD_NONE) into a
- * 3D triangulation by Bowyer-Watson, starting the walk at t->hint.       */
+ * 3D triangulation by Bowyer-Watson, starting the walk at t->hint
+ * (dd_insert_vertex) or at cell `start` (dd_insert_vertex_at).           */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
+dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
+
+/* ---- location for queries and new points (locate.c) ---------------------- */
+
+/* Makes t->grid fit the vertices now (made once, remade when their number
+ * has doubled or halved), O(nvid) when it is made, else O(1).            */
+dd_status dd_grid_ready(dd_tri *t);
+/* Records vertex v, just inserted, in its box (if the grid exists).      */
+void dd_grid_note(dd_tri *t, uint32_t v);
+void dd_grid_free(dd_grid *g);
+/* A live cell near p to start a walk from: the cell of a vertex of p's
+ * box or a box next to it, else t->hint, else the infinite cell.        */
+uint32_t dd_start_near(dd_tri *t, const double *p);
+/* The cells incident to vertex v, in out (reset first), O(star).        */
+dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
+/* A vertex nearest to p (exactly; any one of ties), by greedy descent
+ * over the Delaunay edges from the vertices of cell c.  Uses t->conflict
+ * as scratch.                                                            */
+dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest);
+
+/* ---- moving a vertex in place (flip.c) ---------------------------------- */
+
+/* Moves vertex v to p and repairs the mesh by 2-3 and 3-2 flips: 1 when
+ * that yields the DT of the moved set (*flips of them; 0 flips: v's star
+ * stayed positive and locally Delaunay, the relocation filter), else 0
+ * with the mesh and v's point unchanged (an inverted star cell, a hull
+ * facet or a flat configuration in the way, an unflippable facet, or too
+ * many flips).  Exact, perturbation included.  O(star) plus O(1) a flip;
+ * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of memory. */
+int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_status *err);
 /* The same for construction, whose cells are mostly out of cache: the
  * conflict search fetches the next cells ahead.                          */
 dd_status dd_build_insert(dd_tri *t, uint32_t v);
@@ -384,6 +448,14 @@ dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_
 /* The same for construction: DD_ERR_TOO_FEW when n < 4, and a message
  * in t->err on every failure.                                          */
 dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t n);
+
+/* Replaces the cells of t by DT of its vertices but the vertex ids
+ * ids[0..n) (sorted ascending), which leave it (vcell DD_NONE): the kept
+ * ones inserted in id order into a scratch triangulation whose cells are
+ * then swapped in, so a failure (out of memory, or DD_ERR_COPLANAR when
+ * the kept points are: the caller checks that first) changes nothing.
+ * O(kept log kept) expected, as construction.                           */
+dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n);
 
 /* Empties the cell arrays (keeps their capacity), O(1). */
 void dd_clear_cells(dd_tri *t);
@@ -415,6 +487,10 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out);
 /* Frees t's own arrays and t; its deletion context (t->del) must have
  * been freed already (dd_free, src/api.c).                               */
 void dd_tri_destroy(dd_tri *t);
+
+/* Room for one more vertex id (t->nvid < cap_v) and input index (t->np <
+ * cap_in), the arrays doubled if needed: DD_ERR_NOMEM if they cannot.  */
+dd_status dd_reserve_vertex(dd_tri *t);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);

@@ -1,0 +1,152 @@
+/*
+ * cli_edit_bench.c -- `dtdel edit-bench`: the edits mesh generators and
+ * smoothers run most, against CGAL, each result compared with CGAL's
+ * simplex for simplex.  What make bench writes to results/edits.txt:
+ *  - smoothing: every vertex of N uniform points moved by a random step
+ *    of 5% of the mean spacing, P passes, the same moves in the same
+ *    order for dd_move and CGAL's move_if_no_collision;
+ *  - set deletion: a random 10%, 50% and 90% of M uniform points deleted
+ *    by dd_delete_set and by CGAL's remove(first, last).
+ */
+#include "cli/cli.h"
+#include "cgal/cgal_query.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct eb_opts {
+    uint64_t n, passes, m, seed;
+} eb_opts;
+
+static int parse_opts(int argc, char **argv, eb_opts *o)
+{
+    *o = (eb_opts){100000, 2, 200000, 1};
+    for (int i = 1; i < argc; i++) {
+        uint64_t *dst = !strcmp(argv[i], "--passes") ? &o->passes
+                        : !strcmp(argv[i], "--set")  ? &o->m
+                        : !strcmp(argv[i], "--seed") ? &o->seed
+                        : argv[i][0] != '-'          ? &o->n
+                                                     : NULL;
+        const char *val = dst == &o->n ? argv[i] : i + 1 < argc ? argv[++i] : NULL;
+        if (!dst) return usage_error("edit-bench", "unknown option '%s'", argv[i]);
+        if (!val || parse_u64(val, dst) || *dst > 50000000)
+            return usage_error("edit-bench", "bad number for '%s'", argv[i]);
+    }
+    if (o->n < 8 || o->m < 8) return usage_error("edit-bench", "N and --set must be at least %s", "8");
+    return 0;
+}
+
+static int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
+{
+    int32_t *a = NULL, *b = NULL;
+    size_t na = 0, nb = 0;
+    int same = dd_canonical(t, &a, &na) == DD_OK && !dd_cgalq_canonical(g, &b, &nb) && na == nb &&
+               !memcmp(a, b, 4 * na * sizeof *a);
+    free(a);
+    free(b);
+    return same;
+}
+
+/* The smoothing workload: the moves (vertex, new point) drawn first, then
+ * replayed on both sides.                                               */
+static int smoothing(const eb_opts *o)
+{
+    double *p = NULL;
+    uint32_t np;
+    if (gen_points("edit-bench", "uniform", o->n, o->seed, &p, &np)) return 1;
+    const uint64_t k = o->passes * np;
+    uint32_t *who = malloc(k * sizeof *who);
+    double *to = malloc(3 * k * sizeof *to), *cur = malloc(3 * (size_t)np * sizeof *cur);
+    dd_tri *t = NULL;
+    char msg[256];
+    dd_cgalq *g = dd_cgalq_build(p, np, 0);
+    int rc = !who || !to || !cur || !g || dd_create(&t, p, np, msg, sizeof msg) != DD_OK;
+    const double h = 0.05 * cbrt(1.0 / np);                    /* 5% of the mean spacing */
+    uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
+    for (uint64_t i = 0; !rc && i < 3 * (uint64_t)np; i++) cur[i] = p[i];
+    for (uint64_t i = 0; !rc && i < k; i++) {
+        const uint32_t v = (uint32_t)(i % np);
+        who[i] = v;
+        for (int c = 0; c < 3; c++) {
+            cur[3 * v + c] += h * (2.0 * rand_below(&x, 1u << 30) / (1u << 30) - 1);
+            to[3 * i + c] = cur[3 * v + c];
+        }
+    }
+    double ours = 0, theirs = 0;
+    long bad = 0;
+    dd_counters c0, c1;
+    if (!rc) {
+        dd_reset_counters(t);
+        dd_get_counters(t, &c0);
+        double t0 = now_seconds();
+        for (uint64_t i = 0; i < k; i++) bad += dd_move(t, who[i], to + 3 * i) != DD_OK;
+        double t1 = now_seconds();
+        for (uint64_t i = 0; i < k; i++) bad += dd_cgalq_move(g, who[i], to + 3 * i) != 0;
+        double t2 = now_seconds();
+        dd_get_counters(t, &c1);
+        ours = (t1 - t0) / (double)k, theirs = (t2 - t1) / (double)k;
+        bad += !same_as_cgalq(t, g);
+        printf("smoothing: %u uniform points, %llu passes of a random step of 5%% of the mean spacing: dtdel %.2f "
+               "us, CGAL move_if_no_collision %.2f us (%.1fx); kept by the filter %.1f%%; identical to CGAL: %s\n",
+               np, (unsigned long long)o->passes, 1e6 * ours, 1e6 * theirs, theirs / ours,
+               100.0 * (double)(c1.moves_kept - c0.moves_kept) / (double)k, bad ? "NO" : "yes");
+    }
+    dd_free(t);
+    dd_cgalq_free(g);
+    free(p), free(who), free(to), free(cur);
+    return rc || bad;
+}
+
+/* A random `fraction` of m uniform points deleted as a set. */
+static int set_deletion(const eb_opts *o, double fraction)
+{
+    double *p = NULL;
+    uint32_t np;
+    if (gen_points("edit-bench", "uniform", o->m, o->seed + 3, &p, &np)) return 1;
+    uint32_t *vs = malloc((size_t)np * sizeof *vs), k = 0;
+    dd_tri *t = NULL;
+    char msg[256];
+    dd_cgalq *g = dd_cgalq_build(p, np, 0);
+    int rc = !vs || !g || dd_create(&t, p, np, msg, sizeof msg) != DD_OK;
+    uint64_t x = o->seed * 0xD1B54A32D192ED03ull | 1;
+    for (uint32_t i = 0; !rc && i < np; i++)
+        if (dd_is_vertex(t, i) && rand_below(&x, 1u << 30) < fraction * (1u << 30)) vs[k++] = i;
+    for (uint32_t i = k; !rc && i > 1; i--) {   /* a random order: the caller's */
+        uint32_t j = rand_below(&x, i), s = vs[i - 1];
+        vs[i - 1] = vs[j], vs[j] = s;
+    }
+    if (!rc) {
+        double t0 = now_seconds();
+        rc |= dd_delete_set(t, vs, k, NULL) != DD_OK;
+        double t1 = now_seconds();
+        rc |= dd_cgalq_remove_set(g, vs, k) != 0;
+        double t2 = now_seconds();
+        const int same = !rc && same_as_cgalq(t, g);
+        printf("delete-set %.0f%%: %u of %u uniform points: dtdel %.2f us a vertex, CGAL remove(first, last) %.2f "
+               "us (%.1fx); identical to CGAL: %s\n",
+               100 * fraction, k, np, 1e6 * (t1 - t0) / k, 1e6 * (t2 - t1) / k, (t2 - t1) / (t1 - t0),
+               same ? "yes" : "NO");
+        rc |= !same;
+    }
+    dd_free(t);
+    dd_cgalq_free(g);
+    free(p), free(vs);
+    return rc;
+}
+
+int cmd_edit_bench(int argc, char **argv)
+{
+    if (wants_help(argc, argv)) return print_help("edit-bench");
+    eb_opts o;
+    int rc = parse_opts(argc, argv, &o);
+    if (rc) return rc;
+    rc |= smoothing(&o);
+    fflush(stdout);
+    const double fractions[3] = {0.1, 0.5, 0.9};
+    for (int i = 0; i < 3; i++) {
+        rc |= set_deletion(&o, fractions[i]);
+        fflush(stdout);
+    }
+    return rc ? EXIT_INPUT : 0;
+}
