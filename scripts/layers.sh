@@ -38,6 +38,15 @@ while read -r o; do
     nm -u "$obj/$o" | awk -v r="$r" -v o="$o" '{ print $2, r, o }'
 done <"$tmp/objs" | sort >"$tmp/uses"
 join "$tmp/uses" "$tmp/defs" | awk '$2 < $4 && $3 != $5 { printf "  %s -> %s (defined in %s)\n", $3, $1, $5 }' >"$tmp/up"
+# and the headers: a file may include only headers of its layer or below
+(cd "$top" && grep -n '^#include "[a-z]*/' $(find src variants -name '*.[ch]' | sort)) | while IFS= read -r line; do
+    file=${line%%:*}
+    inc=$(echo "$line" | sed 's/.*#include "\([a-z]*\)\/.*/\1/')
+    from=$(rank "$file")
+    to=$(rank "src/$inc/x.o")
+    [ "$inc" = datasets ] && to=6
+    [ "$to" -gt "$from" ] && echo "  $file includes $inc/ (a layer above)"
+done >>"$tmp/up"
 if [ -s "$tmp/up" ]; then
     echo "FAIL layers: upward calls between src/ folders (docs/architecture.md)"
     cat "$tmp/up"

@@ -91,6 +91,39 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
     return s;
 }
 
+/* The predicate counters of t and of its deletions' conflict DT. */
+void dd_get_counters(const dd_tri *t, dd_counters *c)
+{
+    memset(c, 0, sizeof *c);
+#ifdef DD_COUNTERS
+    /* the triangulation's own tests, plus its deletions' conflict DT */
+    const dd_pred *p[2] = {&t->pred, t->del && t->del->qdt ? &t->del->qdt->pred : NULL};
+    for (int i = 0; i < 2 && p[i]; i++) {
+        c->orient_calls += p[i]->orient_calls;
+        c->orient_exact += p[i]->orient_exact;
+        c->insphere_calls += p[i]->insphere_calls;
+        c->insphere_exact += p[i]->insphere_exact;
+        c->perturbed += p[i]->perturbed;
+    }
+#endif
+    c->tets_created = t->tets_created;
+    c->walk_steps = t->walk_steps;
+    c->moves_kept = t->moves_kept;
+    c->moves_flipped = t->moves_flipped;
+    c->moves_redone = t->moves_redone;
+}
+
+void dd_reset_counters(dd_tri *t)
+{
+#ifdef DD_COUNTERS
+    t->pred.orient_calls = t->pred.orient_exact = 0;
+    t->pred.insphere_calls = t->pred.insphere_exact = 0;
+    t->pred.perturbed = 0;
+#endif
+    t->tets_created = t->walk_steps = 0;
+    t->moves_kept = t->moves_flipped = t->moves_redone = 0;
+}
+
 #ifdef DD_TEST_BUILD
 long dd_test_control(dd_tri *t, dd_test_ctl ctl, long value)
 {

@@ -1,14 +1,14 @@
 /*
  * canon.c -- canonical output (its one builder, dd_canonical_of_cells),
- * its hash, status names, counters and the small accessors of the public
- * header (DESIGN 8).
+ * its hash, status names and the small accessors of the public header
+ * (DESIGN 8).
  *
  * Canonical form: each live cell as its four input indices sorted
  * ascending, -1 for the infinite vertex, the list sorted.  It depends only
  * on the triangulation, never on cell storage order, so it is the key for
  * comparing with CGAL.
  */
-#include "delete/delete.h"
+#include "mesh/mesh.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -55,38 +55,6 @@ size_t dd_memory_bytes(const dd_tri *t)
          + t->grid.cap * sizeof(uint32_t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0);
-}
-
-void dd_get_counters(const dd_tri *t, dd_counters *c)
-{
-    memset(c, 0, sizeof *c);
-#ifdef DD_COUNTERS
-    /* the triangulation's own tests, plus its deletions' conflict DT */
-    const dd_pred *p[2] = {&t->pred, t->del && t->del->qdt ? &t->del->qdt->pred : NULL};
-    for (int i = 0; i < 2 && p[i]; i++) {
-        c->orient_calls += p[i]->orient_calls;
-        c->orient_exact += p[i]->orient_exact;
-        c->insphere_calls += p[i]->insphere_calls;
-        c->insphere_exact += p[i]->insphere_exact;
-        c->perturbed += p[i]->perturbed;
-    }
-#endif
-    c->tets_created = t->tets_created;
-    c->walk_steps = t->walk_steps;
-    c->moves_kept = t->moves_kept;
-    c->moves_flipped = t->moves_flipped;
-    c->moves_redone = t->moves_redone;
-}
-
-void dd_reset_counters(dd_tri *t)
-{
-#ifdef DD_COUNTERS
-    t->pred.orient_calls = t->pred.orient_exact = 0;
-    t->pred.insphere_calls = t->pred.insphere_exact = 0;
-    t->pred.perturbed = 0;
-#endif
-    t->tets_created = t->walk_steps = 0;
-    t->moves_kept = t->moves_flipped = t->moves_redone = 0;
 }
 
 static void sort4(int32_t *a)
