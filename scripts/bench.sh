@@ -61,6 +61,12 @@ nq=200000 kq=50000 lq=100000
 [ "$mode" = quick ] && nq=50000 kq=10000 lq=20000
 build/dtdel query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq" >results/queries.txt || rc=$?
 cat results/queries.txt
+# moves (smoothing) against move_if_no_collision, set deletion against
+# remove(first, last)
+ne=100000 me=200000
+[ "$mode" = quick ] && ne=20000 me=40000
+build/dtdel edit-bench "$ne" --set "$me" >results/edits.txt || rc=$?
+cat results/edits.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
 sh scripts/plots.sh results

@@ -1201,44 +1201,68 @@ static void readme_construction(const ctx *c, FILE *out)
     fclose(f);
 }
 
-/* The rows of OUTDIR/queries.txt (dtdel query-bench's output) as a table
- * of their own: insertion of new points, locate and nearest vertex
- * against CGAL with and without Fast_location, then the churn line;
- * nothing without the file.                                             */
+/* One README row of a line of queries.txt or edits.txt (dtdel
+ * query-bench, edit-bench), or none; *header says whether the table's
+ * head was written.                                                     */
+static void readme_extra_row(const char *line, long long nq, FILE *out, int *header)
+{
+    char what[64], ok[8], b[40];
+    long long k, n;
+    double ours, cgal, rc, fast, rf, share, frac;
+    if (!*header) {
+        fputs("\n| beyond deletion (uniform points) | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |\n"
+              "|---|---:|---:|---:|---:|---:|\n", out);
+        *header = 1;
+    }
+    if (sscanf(line, "%63[^:]: %lld: dtdel %lf us, CGAL %lf us (%lfx), CGAL Fast_location %lf us (%lfx); %*[^:]: %7s",
+               what, &k, &ours, &cgal, &rc, &fast, &rf, ok) == 8)
+        fprintf(out, "| %s, %s points%s | %.2f | %.2f | %.1f× | %.2f | %.1f× |\n",
+                !strcmp(what, "insert") ? "insert a new point" : !strcmp(what, "locate") ? "locate" : "nearest vertex",
+                fmt_int(nq, b), strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc, fast, rf);
+    else if (sscanf(line, "smoothing: %lld uniform points, %lld passes of a random step of 5%% of the mean spacing: "
+                          "dtdel %lf us, CGAL move_if_no_collision %lf us (%lfx); kept by the filter %lf%%; "
+                          "identical to CGAL: %7s", &n, &k, &ours, &cgal, &rc, &share, ok) == 7)
+        fprintf(out, "| move (smoothing %s points, %lld passes)%s | %.2f | %.2f | %.1f× | | |\n", fmt_int(n, b), k,
+                strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+    else if (sscanf(line, "delete-set %lf%%: %lld of %lld uniform points: dtdel %lf us a vertex, CGAL remove(first, "
+                          "last) %lf us (%lfx); identical to CGAL: %7s", &frac, &k, &n, &ours, &cgal, &rc, ok) == 7)
+        fprintf(out, "| delete a set, %.0f%% of %s%s | %.2f | %.2f | %.1f× | | |\n", frac, fmt_int(n, b),
+                strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+}
+
+/* The rows of OUTDIR/queries.txt and OUTDIR/edits.txt as a second table:
+ * insertion of new points, locate and nearest vertex against CGAL with
+ * and without Fast_location, moves and set deletion, then the churn
+ * line; nothing without the files.                                      */
 static void readme_queries(const ctx *c, FILE *out)
 {
-    char path[4096], what[64], ok[8], b[40];
-    snprintf(path, sizeof path, "%s/queries.txt", c->outdir);
-    FILE *f = fopen(path, "r");
-    if (!f) return;
-    char *line = NULL;
-    size_t cap = 0;
-    long long n = 0, k;
-    double ours, cgal, rc, fast, rf, rss;
-    int any = 0;
-    while (read_line(f, &line, &cap) == 1) {
-        if (sscanf(line, "dataset uniform, n = %lld", &n) == 1) continue;
-        if (sscanf(line, "%63[^:]: %lld: dtdel %lf us, CGAL %lf us (%lfx), CGAL Fast_location %lf us (%lfx); %*[^:]: %7s",
-                   what, &k, &ours, &cgal, &rc, &fast, &rf, ok) == 8) {
-            if (!any)
-                fprintf(out, "\n| uniform, n = %s | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |\n"
-                             "|---|---:|---:|---:|---:|---:|\n", fmt_int(n, b));
-            any = 1;
-            fprintf(out, "| %s (%s) | %.2f | %.2f | %.1f× | %.2f | %.1f× |\n",
-                    !strcmp(what, "insert") ? "insert a new point" : !strcmp(what, "locate") ? "locate" : "nearest vertex",
-                    strcmp(ok, "yes") ? "**differs from CGAL**" : "same as CGAL", ours, cgal, rc, fast, rf);
-        } else if (sscanf(line, "churn: %lld live vertices, %lld rounds", &n, &k) == 2) {
+    static const char *const files[2] = {"queries.txt", "edits.txt"};
+    char path[4096], churn[512] = "", b[40];
+    int header = 0;
+    for (int i = 0; i < 2; i++) {
+        snprintf(path, sizeof path, "%s/%s", c->outdir, files[i]);
+        FILE *f = fopen(path, "r");
+        if (!f) continue;
+        char *line = NULL;
+        size_t cap = 0;
+        long long n, k, last, nq = 0;
+        double r2, rl, rss;
+        while (read_line(f, &line, &cap) == 1) {
+            if (sscanf(line, "dataset uniform, n = %lld", &nq) == 1) continue;
             const char *x = strstr(line, "RSS ");
-            double r2, rl;
-            long long last;
-            if (x && sscanf(x, "RSS %lf MiB after round 2, %lf MiB after round %lld (%lfx)", &r2, &rl, &last, &rss) == 4)
-                fprintf(out, "\nUnder churn (`dtdel query-bench`: %lld rounds of deleting half of %s vertices and "
-                             "inserting as many), resident memory after the last round is %.2f× that after round 2.\n",
-                        k, fmt_int(n, b), rss);
+            if (sscanf(line, "churn: %lld live vertices, %lld rounds", &n, &k) == 2 && x &&
+                sscanf(x, "RSS %lf MiB after round 2, %lf MiB after round %lld (%lfx)", &r2, &rl, &last, &rss) == 4)
+                snprintf(churn, sizeof churn,
+                         "\nUnder churn (`dtdel query-bench`: %lld rounds of deleting half of %s vertices and "
+                         "inserting as many), resident memory after the last round is %.2f× that after round 2.\n",
+                         k, fmt_int(n, b), rss);
+            else if (strchr(line, ':'))
+                readme_extra_row(line, nq, out, &header);
         }
+        free(line);
+        fclose(f);
     }
-    free(line);
-    fclose(f);
+    fputs(churn, out);
 }
 
 static int write_readme_table(ctx *c)

@@ -245,10 +245,16 @@ insert: 50000: dtdel 4.00 us, CGAL 40.00 us (10.0x), CGAL Fast_location 30.00 us
 locate: 50000: dtdel 1.00 us, CGAL 20.00 us (20.0x), CGAL Fast_location 5.00 us (5.0x); same cells as CGAL: NO
 churn: 1000 live vertices, 12 rounds of deleting half and inserting as many: RSS 10.0 MiB after round 2, 11.0 MiB after round 12 (1.10x); arrays 5.0 MiB, 5.0 MiB (1.00x); valid: yes
 EOQ
+cat >"$tmp/rd/edits.txt" <<'EOQ'
+smoothing: 1000 uniform points, 2 passes of a random step of 5% of the mean spacing: dtdel 2.00 us, CGAL move_if_no_collision 28.00 us (14.0x); kept by the filter 30.0%; identical to CGAL: yes
+delete-set 90%: 1800 of 2000 uniform points: dtdel 1.00 us a vertex, CGAL remove(first, last) 30.00 us (30.0x); identical to CGAL: yes
+EOQ
 expect readme-runs 0 "" "$SUM" "$tmp/rd" "$tmp/moment.csv" "$tmp/helix.csv" "$tmp/uniform.csv"
-has readme-queries-header "$tmp/rd/readme-table.md" "| uniform, n = 200 000 | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |"
-has readme-queries-insert "$tmp/rd/readme-table.md" "| insert a new point (same as CGAL) | 4.00 | 40.00 | 10.0× | 30.00 | 7.5× |"
-has readme-queries-differ "$tmp/rd/readme-table.md" "| locate (**differs from CGAL**) | 1.00 | 20.00 | 20.0× | 5.00 | 5.0× |"
+has readme-queries-header "$tmp/rd/readme-table.md" "| beyond deletion (uniform points) | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |"
+has readme-queries-insert "$tmp/rd/readme-table.md" "| insert a new point, 200 000 points | 4.00 | 40.00 | 10.0× | 30.00 | 7.5× |"
+has readme-queries-differ "$tmp/rd/readme-table.md" "| locate, 200 000 points (**differs from CGAL**) | 1.00 | 20.00 | 20.0× | 5.00 | 5.0× |"
+has readme-edits-move "$tmp/rd/readme-table.md" "| move (smoothing 1000 points, 2 passes) | 2.00 | 28.00 | 14.0× | | |"
+has readme-edits-set "$tmp/rd/readme-table.md" "| delete a set, 90% of 2000 | 1.00 | 30.00 | 30.0× | | |"
 has readme-queries-churn "$tmp/rd/readme-table.md" "Under churn (\`dtdel query-bench\`: 12 rounds of deleting half of 1000 vertices and inserting as many), resident memory after the last round is 1.10× that after round 2."
 rt=$tmp/rd/readme-table.md
 has readme-header "$rt" "| dataset | degree | deletions | CGAL µs | auto | gift-wrap | zeta-x | cgal-rnd |"
