@@ -187,3 +187,28 @@ expect check-cgal-is-reference 2 "cgal is the reference" "$DTDEL" check "$tmp/cs
 out=$("$DTDEL" check "$tmp/cs.xyz" --deletions 60 --sequence --variant dtq-only 2>&1); rc=$?
 if [ $rc -eq 0 ] && echo "$out" | grep -q '60/60 matched'; then echo "ok cli/check-sequence"; else
     echo "FAIL cli/check-sequence: rc $rc: $out"; fi
+# locate and move: the nearest vertex of a vertex's own point is itself, a
+# point far outside lies in an infinite cell; a move equals CGAL's DT of
+# the moved points
+"$DTDEL" gen grid 125 >"$tmp/g5.xyz"
+out=$("$DTDEL" locate "$tmp/g5.xyz" 2 3 4 2>&1); rc=$?
+want=$(awk '$1 == 2 && $2 == 3 && $3 == 4 { print NR - 1 }' "$tmp/g5.xyz")
+if [ $rc -eq 0 ] && echo "$out" | grep -qx "nearest: $want" && echo "$out" | grep -q '^cell: .*'"$want"; then
+    echo "ok cli/locate-vertex"; else echo "FAIL cli/locate-vertex: rc $rc, want $want: $out"; fi
+out=$("$DTDEL" locate "$tmp/g5.xyz" 100 -50 2 2>&1)
+if echo "$out" | grep -q '^cell: .*-1.*(outside the hull)'; then echo "ok cli/locate-outside"; else
+    echo "FAIL cli/locate-outside: $out"; fi
+expect locate-nan 1 "NaN" "$DTDEL" locate "$tmp/g5.xyz" nan 0 0
+expect locate-usage 2 "not a number" "$DTDEL" locate "$tmp/g5.xyz" 1 2 x
+awk 'NR == 8 { $0 = "2.5 2 1" } { print }' "$tmp/g5.xyz" >"$tmp/g5m.xyz"
+if "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 2.5,2,1 >"$tmp/mv.txt" && "$DTDEL" cgal-tets "$tmp/g5m.xyz" >"$tmp/mvc.txt" &&
+   cmp -s "$tmp/mv.txt" "$tmp/mvc.txt"; then echo "ok cli/move-equals-cgal"; else echo "FAIL cli/move-equals-cgal"; fi
+expect move-onto-vertex 1 "another vertex" "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 0,0,0
+expect move-usage 2 "X,Y,Z" "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 1,2
+# the benches beyond deletion: small runs, every answer as CGAL's
+out=$("$DTDEL" query-bench 3000 --inserts 500 --queries 500 --live 2000 --rounds 3 2>&1); rc=$?
+if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ': yes$')" -eq 4 ] && ! echo "$out" | grep -q ': NO'; then
+    echo "ok cli/query-bench"; else echo "FAIL cli/query-bench: rc $rc: $out"; fi
+out=$("$DTDEL" edit-bench 2000 --passes 1 --set 3000 2>&1); rc=$?
+if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c 'identical to CGAL: yes$')" -eq 4 ]; then
+    echo "ok cli/edit-bench"; else echo "FAIL cli/edit-bench: rc $rc: $out"; fi
