@@ -176,11 +176,12 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
 /* The cost model of dd_delete_set: deleting k of the n vertices one at a
  * time costs about k * SET_DELETE_UNIT, rebuilding DT of the n - k left
  * about (n - k) * SET_BUILD_UNIT; the cheaper course is taken.  The units
- * are the measured time of one deletion along the insertion order and of
- * inserting one point in construction, relative to each other (dtdel
- * seq-bench and dtdel build-bench measure them).                        */
+ * are the time of one deletion along the insertion order and of one
+ * point of a rebuild, relative to each other, on uniform points: the
+ * crossover, about a third of the vertices, is where `dtdel edit-bench`
+ * (or a dd_delete_set of each fraction, timed) shows both courses equal. */
 #define SET_DELETE_UNIT 1.0
-#define SET_BUILD_UNIT 1.0
+#define SET_BUILD_UNIT 0.55
 
 static int rebuild_is_cheaper(const dd_tri *t, size_t k)
 {
