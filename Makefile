@@ -37,10 +37,10 @@ LIBS     = -lgmp -lmpfr -lm
 LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
-DATA_SRC = datasets/datasets.c
+DATA_SRC = datasets/datasets.c datasets/readers.c
 SHIM_SRC = src/cgal/cgal_shim.cpp
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h datasets/datasets.h
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h $(wildcard datasets/*.h)
 
 B = build
 A = build/asan
@@ -49,6 +49,9 @@ K = build/count
 LIB_OBJ_R = $(LIB_SRC:%.c=$(B)/obj/%.o)
 LIB_OBJ_A = $(LIB_SRC:%.c=$(A)/obj/%.o)
 LIB_OBJ_K = $(LIB_SRC:%.c=$(K)/obj/%.o)
+DATA_OBJ_B = $(DATA_SRC:%.c=$(B)/obj/%.o)
+DATA_OBJ_A = $(DATA_SRC:%.c=$(A)/obj/%.o)
+DATA_OBJ_K = $(DATA_SRC:%.c=$(K)/obj/%.o)
 
 TESTS_R = $(TEST_C:tests/%.c=$(B)/tests/%)
 TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
@@ -71,12 +74,12 @@ $(B)/obj/%.o: %.cpp $(HDRS)
 $(B)/libdtdel.a: $(LIB_OBJ_R)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(B)/obj/src/cgal/cgal_shim.o $(B)/libdtdel.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
 $(A)/obj/%.o: %.c $(HDRS)
@@ -85,12 +88,12 @@ $(A)/obj/%.o: %.c $(HDRS)
 $(A)/libdtdel.a: $(LIB_OBJ_A)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
+$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(B)/obj/src/cgal/cgal_shim.o $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
 $(K)/obj/%.o: %.c $(HDRS)
@@ -99,7 +102,7 @@ $(K)/obj/%.o: %.c $(HDRS)
 $(K)/libdtdel.a: $(LIB_OBJ_K)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(B)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(B)/obj/src/cgal/cgal_shim.o $(K)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
