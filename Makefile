@@ -140,3 +140,12 @@ install: all
 
 clean:
 	rm -rf build
+
+# ---- soak: a million deletions checked against CGAL (not in make test) ------
+# SOAK_SCALE=0.01 make soak runs in about a minute; the workers (SOAK_JOBS,
+# one per core) split the cases and the last line sums them.
+SOAK_SCALE ?= 1
+SOAK_JOBS  ?= 2
+.PHONY: soak
+soak: deps $(B)/tests/soak
+	@$(B)/tests/soak --jobs $(SOAK_JOBS) --scale $(SOAK_SCALE)
