@@ -149,3 +149,30 @@ SOAK_JOBS  ?= 2
 .PHONY: soak
 soak: deps $(B)/tests/soak
 	@$(B)/tests/soak --jobs $(SOAK_JOBS) --scale $(SOAK_SCALE)
+
+# ---- fuzz: libFuzzer targets (clang; not in make test) ----------------------
+# FUZZ_SECONDS=60 make fuzz.  scripts/fuzz.sh installs clang and its fuzzer
+# runtime with apt-get when they are missing, runs the two targets side by
+# side for FUZZ_SECONDS, prints "fuzz: E executions, C crashes" and copies
+# each crash into tests/fuzz-corpus/, which test_fuzz_replay replays in
+# make test (commit them).
+FUZZ_SECONDS ?= 300
+FUZZ_CC  ?= clang
+F = build/fuzz
+CFLAGS_F = $(CSTD) -g -O1 -ffp-contract=off -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer -DDD_TEST_BUILD
+LIB_OBJ_F  = $(LIB_SRC:%.c=$(F)/obj/%.o)
+DATA_OBJ_F = $(DATA_SRC:%.c=$(F)/obj/%.o)
+.PHONY: fuzz fuzz-build
+# The engine's objects: optimised, and without the comparison tracing that
+# guides the fuzzer through parsers: the interpreter runs about 3x faster.
+$(LIB_OBJ_F): FUZZ_LIB_FLAGS = -O2 -fno-sanitize-coverage=trace-cmp
+$(F)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(CFLAGS_F) $(FUZZ_LIB_FLAGS) -c $< -o $@
+$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F)
+	$(FUZZ_CC) $(CFLAGS_F) -fsanitize=fuzzer $< $(LIB_OBJ_F) $(DATA_OBJ_F) -o $@ $(LIBS)
+fuzz-build: $(F)/fuzz_readers $(F)/fuzz_ops
+fuzz:
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_CC=$(FUZZ_CC) sh scripts/fuzz.sh
+# the replay test includes the fuzz targets' entry points
+$(B)/tests/test_fuzz_replay $(A)/tests/test_fuzz_replay: tests/fuzz/fuzz_entry.h
