@@ -37,12 +37,12 @@ LIBS     = -lgmp -lmpfr -lm
 LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
-DATA_SRC = datasets/datasets.c
+DATA_SRC = datasets/datasets.c datasets/readers.c
 SHIM_SRC = src/cgal/cgal_shim.cpp src/cgal/cgal_query.cpp
 # The CGAL reference objects, compiled once in the release build (see below).
 SHIM_OBJ = $(SHIM_SRC:%.cpp=$(B)/obj/%.o)
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h datasets/datasets.h
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h $(wildcard datasets/*.h)
 
 B = build
 A = build/asan
@@ -51,6 +51,9 @@ K = build/count
 LIB_OBJ_R = $(LIB_SRC:%.c=$(B)/obj/%.o)
 LIB_OBJ_A = $(LIB_SRC:%.c=$(A)/obj/%.o)
 LIB_OBJ_K = $(LIB_SRC:%.c=$(K)/obj/%.o)
+DATA_OBJ_B = $(DATA_SRC:%.c=$(B)/obj/%.o)
+DATA_OBJ_A = $(DATA_SRC:%.c=$(A)/obj/%.o)
+DATA_OBJ_K = $(DATA_SRC:%.c=$(K)/obj/%.o)
 
 TESTS_R = $(TEST_C:tests/%.c=$(B)/tests/%)
 TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
@@ -73,12 +76,12 @@ $(B)/obj/%.o: %.cpp $(HDRS)
 $(B)/libdtdel.a: $(LIB_OBJ_R)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_R) $@.o $(B)/obj/datasets/datasets.o $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
 $(A)/obj/%.o: %.c $(HDRS)
@@ -87,12 +90,12 @@ $(A)/obj/%.o: %.c $(HDRS)
 $(A)/libdtdel.a: $(LIB_OBJ_A)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h
+$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_A) $@.o $(A)/obj/datasets/datasets.o $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
 $(K)/obj/%.o: %.c $(HDRS)
@@ -101,7 +104,7 @@ $(K)/obj/%.o: %.c $(HDRS)
 $(K)/libdtdel.a: $(LIB_OBJ_K)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(K)/obj/datasets/datasets.o $(SHIM_OBJ) $(K)/libdtdel.a
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
@@ -139,3 +142,39 @@ install: all
 
 clean:
 	rm -rf build
+
+# ---- soak: a million deletions checked against CGAL (not in make test) ------
+# SOAK_SCALE=0.01 make soak runs in about a minute; the workers (SOAK_JOBS,
+# one per core) split the cases and the last line sums them.
+SOAK_SCALE ?= 1
+SOAK_JOBS  ?= 2
+.PHONY: soak
+soak: deps $(B)/tests/soak
+	@$(B)/tests/soak --jobs $(SOAK_JOBS) --scale $(SOAK_SCALE)
+
+# ---- fuzz: libFuzzer targets (clang; not in make test) ----------------------
+# FUZZ_SECONDS=60 make fuzz.  scripts/fuzz.sh installs clang and its fuzzer
+# runtime with apt-get when they are missing, runs the two targets side by
+# side for FUZZ_SECONDS, prints "fuzz: E executions, C crashes" and copies
+# each crash into tests/fuzz-corpus/, which test_fuzz_replay replays in
+# make test (commit them).
+FUZZ_SECONDS ?= 300
+FUZZ_CC  ?= clang
+F = build/fuzz
+CFLAGS_F = $(CSTD) -g -O1 -ffp-contract=off -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer -DDD_TEST_BUILD
+LIB_OBJ_F  = $(LIB_SRC:%.c=$(F)/obj/%.o)
+DATA_OBJ_F = $(DATA_SRC:%.c=$(F)/obj/%.o)
+.PHONY: fuzz fuzz-build
+# The engine's objects: optimised, and without the comparison tracing that
+# guides the fuzzer through parsers: the interpreter runs about 3x faster.
+$(LIB_OBJ_F): FUZZ_LIB_FLAGS = -O2 -fno-sanitize-coverage=trace-cmp
+$(F)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(CFLAGS_F) $(FUZZ_LIB_FLAGS) -c $< -o $@
+$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F)
+	$(FUZZ_CC) $(CFLAGS_F) -fsanitize=fuzzer $< $(LIB_OBJ_F) $(DATA_OBJ_F) -o $@ $(LIBS)
+fuzz-build: $(F)/fuzz_readers $(F)/fuzz_ops
+fuzz:
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_CC=$(FUZZ_CC) sh scripts/fuzz.sh
+# the replay test includes the fuzz targets' entry points
+$(B)/tests/test_fuzz_replay $(A)/tests/test_fuzz_replay: tests/fuzz/fuzz_entry.h

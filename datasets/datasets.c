@@ -20,6 +20,7 @@
 #define _POSIX_C_SOURCE 200809L /* getline, popen, pclose */
 
 #include "datasets.h"
+#include "readers.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -703,10 +704,23 @@ dd_status dd_read_points(const char *path, double **xyz, uint32_t *np,
         set_msg(msg, msglen, "cannot open '%s': %s", path, strerror(errno));
         return DD_ERR_IO;
     }
-    dd_status st = parse_file(f, path, has_off_extension(path), xyz, np,
-                              msg, msglen);
+    dd_status st = dd_read_points_stream(f, path, xyz, np, msg, msglen);
     fclose(f);
     return st;
+}
+
+dd_status dd_read_points_stream(FILE *f, const char *name, double **xyz,
+                                uint32_t *np, char *msg, size_t msglen)
+{
+    *xyz = NULL;
+    *np = 0;
+    switch (dd_format_of(name)) {      /* .ply, .obj: readers.c */
+    case DD_FORMAT_PLY: return dd_read_ply(f, name, xyz, np, msg, msglen);
+    case DD_FORMAT_OBJ: return dd_read_obj(f, name, xyz, np, msg, msglen);
+    default:
+        return parse_file(f, name, has_off_extension(name), xyz, np, msg,
+                          msglen);
+    }
 }
 
 /* ---- real models --------------------------------------------------------- */

@@ -1,6 +1,6 @@
 /*
  * datasets.h -- point-set generators (DESIGN section 9) and point-file
- * readers (.xyz, .off).
+ * readers (.xyz, .off; .ply, .obj in readers.c).
  *
  * Generators are deterministic functions of (name, n, seed).  Real models
  * are read from the data archive of Debian's libcgal-dev / libcgal-demo.
@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "../src/dtdel.h"
 
 /* Writes n points of dataset `name` into *xyz (3n doubles).  For real
@@ -23,10 +24,17 @@ dd_status dd_gen(const char *name, uint32_t n, uint64_t seed,
                  double **xyz, uint32_t *np, char *msg, size_t msglen);
 
 /* Reads a .xyz file (x y z per line; blank lines and lines starting with
- * '#' ignored) or an .off file (vertices only), chosen by the extension
- * (.off, else xyz).  Errors name the file and the line: DD_ERR_IO,
- * DD_ERR_PARSE, DD_ERR_NAN, DD_ERR_INFINITE.  No points: DD_OK, *np = 0. */
+ * '#' ignored), an .off file (vertices only), a .ply file (the vertex
+ * element's x, y, z; ascii or binary) or an .obj file (the 'v' lines),
+ * chosen by the extension (.off, .ply, .obj, else xyz; readers.h).
+ * Errors name the file and the line (or byte offset in binary data):
+ * DD_ERR_IO, DD_ERR_PARSE, DD_ERR_NAN, DD_ERR_INFINITE, DD_ERR_NOMEM.
+ * No points: DD_OK, *np = 0.                                             */
 dd_status dd_read_points(const char *path, double **xyz, uint32_t *np,
                          char *msg, size_t msglen);
+/* The same from an open stream; `name` gives the format (its extension)
+ * and names the input in messages.                                       */
+dd_status dd_read_points_stream(FILE *f, const char *name, double **xyz,
+                                uint32_t *np, char *msg, size_t msglen);
 
 #endif

@@ -212,3 +212,26 @@ if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ': yes$')" -eq 4 ] && ! echo "$ou
 out=$("$DTDEL" edit-bench 2000 --passes 1 --set 3000 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c 'identical to CGAL: yes$')" -eq 4 ]; then
     echo "ok cli/edit-bench"; else echo "FAIL cli/edit-bench: rc $rc: $out"; fi
+
+# ---- .ply and .obj input (datasets/readers.c; binary PLY in test_readers) ---
+"$DTDEL" gen bunny 600 >"$tmp/bun.xyz"
+n=$(wc -l <"$tmp/bun.xyz")
+{ printf 'ply\nformat ascii 1.0\nelement vertex %s\nproperty float nx\nproperty double x\n' "$n"
+  printf 'property double y\nproperty double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
+  awk '{ print "0.5", $1, $2, $3 }' "$tmp/bun.xyz"; echo "3 0 1 2"; } >"$tmp/bun.ply"
+{ echo "# bunny"; awk '{ print "v", $1, $2, $3; print "vn 0 0 1" }' "$tmp/bun.xyz"; echo "f 1//1 2//2 3//3"; } >"$tmp/bun.obj"
+"$DTDEL" tets "$tmp/bun.xyz" >"$tmp/bun.ref" 2>/dev/null
+for f in bun.ply bun.obj; do
+    "$DTDEL" tets "$tmp/$f" >"$tmp/a" 2>"$tmp/err"
+    "$DTDEL" cgal-tets "$tmp/$f" >"$tmp/b" 2>/dev/null
+    if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" && cmp -s "$tmp/a" "$tmp/bun.ref"; then echo "ok cli/tets-$f"; else
+        echo "FAIL cli/tets-$f: differs from CGAL or from the .xyz: $(head -c 200 "$tmp/err")"; fi
+done
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\300\177' >"$tmp/nan.ply"
+printf 'ply\nformat binary_big_endian 1.0\nelement vertex 2\nproperty double x\nproperty double y\nproperty double z\nend_header\n\0\0\0' >"$tmp/short.ply"
+printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty int x\nproperty int y\nproperty int z\nend_header\n1 2 3\n40 50\n' >"$tmp/line.ply"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 1 2\nv 0 0 inf\n' >"$tmp/inf.obj"
+expect tets-ply-nan 1 "nan.ply: byte 135: vertex 1: coordinate z is NaN" "$DTDEL" tets "$tmp/nan.ply"
+expect tets-ply-truncated 1 "short.ply:3: .*need at least 48 bytes" "$DTDEL" tets "$tmp/short.ply"
+expect tets-ply-line 1 "line.ply:9: element 'vertex' 1: expected 3 values" "$DTDEL" tets "$tmp/line.ply"
+expect tets-obj-inf 1 "inf.obj:5: vertex 3: coordinate z is infinite" "$DTDEL" tets "$tmp/inf.obj"

@@ -91,7 +91,7 @@ static dd_status brio_fill(dd_del *d)
     size_t nrem;
     const uint32_t *remv = dd_grr_remaining(g, &nrem);
     size_t ncur = nrem, nseq = 0, nrounds = 0;
-    memcpy(b->cur, remv, nrem * sizeof *b->cur);
+    if (nrem > 0) memcpy(b->cur, remv, nrem * sizeof *b->cur);   /* an empty list may have no array */
 
     DD_PHASE_BEGIN(d);
     while (ncur > 0 && s == DD_OK && nrounds < 64) {

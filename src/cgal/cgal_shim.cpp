@@ -13,6 +13,8 @@
  *  - vh[i] is non-null iff input point i is a vertex; then vh[i]->info()==i.
  *  - first[i] is 1 iff point i is the first occurrence of its coordinates
  *    (only such indices are ever vertices).
+ *    A point added by dd_cgal_insert counts as a first occurrence (it was
+ *    no vertex's equal when inserted).
  *  - dt.dimension() == 3 always: removals that would lower it are refused.
  *  - A refused or failed call leaves the triangulation exactly as it was
  *    (except on out-of-memory inside CGAL's own remove/insert, which CGAL
@@ -526,6 +528,44 @@ int dd_cgal_reinsert(dd_cgal *c, uint32_t v)
     } catch (...) {
         return 1;
     }
+}
+
+int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index)
+{
+    if (c == NULL || p == NULL || index != c->pts.size() || index == UINT32_MAX)
+        return 1;
+    for (int k = 0; k < 3; k++)
+        if (!std::isfinite(p[k]))
+            return 1;
+    try {
+        const Point pt = to_point(p);
+        const std::size_t before = c->dt.number_of_vertices();
+        Main_dt::Locate_type lt;
+        int li, lj;
+        const Cell_handle loc = c->dt.locate(pt, lt, li, lj);
+        if (lt == Main_dt::VERTEX)
+            return 2;                  /* equal to a vertex: no index taken */
+        c->pts.push_back(pt);
+        c->vh.push_back(Vertex_handle());
+        c->first.push_back(1);
+        const Vertex_handle h = c->dt.insert(pt, lt, loc, li, lj);
+        if (c->dt.number_of_vertices() != before + 1) {
+            c->pts.pop_back();
+            c->vh.pop_back();
+            c->first.pop_back();
+            return 1;
+        }
+        h->info() = index;
+        c->vh[index] = h;
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
+uint32_t dd_cgal_num_input(const dd_cgal *c)
+{
+    return c == NULL ? 0 : static_cast<uint32_t>(c->pts.size());
 }
 
 /* Predicates.  On an exception (out of memory in the exact fallback) they

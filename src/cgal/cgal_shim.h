@@ -46,6 +46,13 @@ int dd_cgal_remove(dd_cgal *c, uint32_t v);
 int dd_cgal_remove_rnd(dd_cgal *c, uint32_t v, uint64_t seed);
 /* Re-inserts input point v (which must have been removed) as vertex v. */
 int dd_cgal_reinsert(dd_cgal *c, uint32_t v);
+/* Inserts a new point p as input index `index`, which must be the next
+ * one (the number of points given so far, as dd_insert numbers them).
+ * Returns 0 when inserted, 2 when p equals a vertex (nothing changes, no
+ * index taken: dd_insert's DD_ERR_DUPLICATE), 1 on any other failure.  */
+int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index);
+/* Number of input points so far (given to dd_cgal_build, then inserted). */
+uint32_t dd_cgal_num_input(const dd_cgal *c);
 
 /* CGAL's predicates, for the tests.  Signs as CGAL returns them:
  * orientation: +1 positive, -1 negative, 0 coplanar.

@@ -1,0 +1,373 @@
+/*
+ * fuzz_entry.h -- the entry points of the fuzz targets, shared by the
+ * libFuzzer drivers (tests/fuzz/fuzz_*.c, `make fuzz`) and the replay
+ * test (tests/test_fuzz_replay.c, `make test`), so that every input the
+ * fuzzer kept or crashed on runs the same code in the normal and the
+ * sanitizer builds.
+ *
+ *   dd_fuzz_readers(data, n): data[0] % 4 picks .xyz, .off, .ply or .obj;
+ *     the rest is the file, read from memory (dd_read_points_stream).
+ *     On success the points must be finite and *xyz not NULL; on failure
+ *     *xyz NULL, no points, a known status and a message naming the input.
+ *   dd_fuzz_ops(data, n): an interpreter of operations on points of the
+ *     integer grid {0..4}^3, degenerate on purpose: create, delete,
+ *     insert (reusing deleted indices), move, delete_set, reinsert, test
+ *     controls.  After each operation
+ *     dd_check must pass and the canonical form must equal that of a
+ *     dd_create from scratch of the vertices left (indices mapped back);
+ *     a refused operation must leave the canonical form unchanged, and
+ *     only the refusals the API documents are allowed.
+ *
+ * Both return 0, or 1 after printing what broke to stderr (the drivers
+ * abort then, so libFuzzer saves the input).  Header-only, all static:
+ * each program includes it once.
+ */
+#ifndef DD_FUZZ_ENTRY_H
+#define DD_FUZZ_ENTRY_H
+
+#include "dtdel.h"
+#include "dtdel_stats.h"
+#include "datasets/datasets.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- readers ------------------------------------------------------------- */
+
+static int dd_fuzz_readers(const uint8_t *data, size_t n)
+{
+    static const char *const names[4] = {"fuzz.xyz", "fuzz.off", "fuzz.ply", "fuzz.obj"};
+    if (n == 0) return 0;
+    const char *name = names[data[0] % 4];
+    /* fmemopen wants a non-empty writable-looking buffer: copy */
+    size_t len = n - 1;
+    char *copy = malloc(len ? len : 1);
+    if (!copy) return 0;
+    if (len) memcpy(copy, data + 1, len);
+    else copy[0] = '\n';
+    FILE *f = fmemopen(copy, len ? len : 1, "r");
+    if (!f) {
+        free(copy);
+        return 0;
+    }
+    double *xyz = (double *)&name;      /* must be overwritten */
+    uint32_t np = 12345;
+    char msg[512] = "";
+    dd_status st = dd_read_points_stream(f, name, &xyz, &np, msg, sizeof msg);
+    fclose(f);
+    free(copy);
+    int bad = 0;
+    if (st == DD_OK) {
+        if (xyz == NULL) {
+            fprintf(stderr, "fuzz readers %s: DD_OK with no array\n", name);
+            bad = 1;
+        }
+        for (size_t i = 0; !bad && i < 3 * (size_t)np; i++)
+            if (!isfinite(xyz[i])) {
+                fprintf(stderr, "fuzz readers %s: DD_OK with a coordinate %g\n", name, xyz[i]);
+                bad = 1;
+            }
+        if (!bad) free(xyz);
+    } else {
+        int known = st == DD_ERR_PARSE || st == DD_ERR_NAN || st == DD_ERR_INFINITE || st == DD_ERR_IO
+                    || st == DD_ERR_NOMEM;
+        if (xyz != NULL || np != 0 || !known || strncmp(msg, name, strlen(name)) != 0) {
+            fprintf(stderr, "fuzz readers %s: failure %s with array %p, %u points, message '%s'\n", name,
+                    dd_status_name(st), (void *)xyz, np, msg);
+            bad = 1;
+        }
+    }
+    return bad;
+}
+
+/* ---- the operation interpreter ---------------------------------------------- */
+
+#define FZ_GRID 5          /* coordinates 0..4 */
+#define FZ_MAX_OPS 48
+#define FZ_MAX_POINTS 256
+
+typedef struct fz_in {
+    const uint8_t *p;
+    size_t n, at;
+} fz_in;
+
+static int fz_more(const fz_in *in) { return in->at < in->n; }
+static unsigned fz_byte(fz_in *in) { return in->at < in->n ? in->p[in->at++] : 0; }
+
+static void fz_point(fz_in *in, double q[3])
+{
+    for (int k = 0; k < 3; k++) q[k] = (double)(fz_byte(in) % FZ_GRID);
+}
+
+typedef struct fz_state {
+    dd_tri *t;
+    double xyz[3 * FZ_MAX_POINTS];   /* the point of each input index */
+    uint32_t np;                     /* input indices so far */
+} fz_state;
+
+static int fz_cmp4(const void *a, const void *b)
+{
+    const int32_t *x = a, *y = b;
+    for (int i = 0; i < 4; i++)
+        if (x[i] != y[i]) return x[i] < y[i] ? -1 : 1;
+    return 0;
+}
+
+/* The canonical form of a dd_create of the vertices of s->t from scratch,
+ * its indices mapped back to s->t's; *out malloc'd.  0, or 1 on a bug.  */
+static int fz_scratch(const fz_state *s, int32_t **out, size_t *nout)
+{
+    uint32_t map[FZ_MAX_POINTS], m = 0;
+    double pts[3 * FZ_MAX_POINTS];
+    for (uint32_t i = 0; i < s->np; i++)
+        if (dd_is_vertex(s->t, i)) {
+            map[m] = i;
+            memcpy(pts + 3 * m, s->xyz + 3 * i, 3 * sizeof *pts);
+            m++;
+        }
+    dd_tri *r = NULL;
+    char msg[256];
+    dd_status st = dd_create(&r, pts, m, msg, sizeof msg);
+    if (st != DD_OK) {
+        fprintf(stderr, "fuzz ops: the %u vertices left do not build from scratch: %s\n", m, msg);
+        return 1;
+    }
+    int32_t *c = NULL;
+    size_t nc = 0;
+    if (dd_canonical(r, &c, &nc) != DD_OK) {
+        dd_free(r);
+        return 1;
+    }
+    dd_free(r);
+    for (size_t i = 0; i < 4 * nc; i++)
+        if (c[i] >= 0) c[i] = (int32_t)map[c[i]];
+    for (size_t i = 0; i < nc; i++) {            /* sort each cell again */
+        int32_t *o = c + 4 * i;
+        for (int x = 1; x < 4; x++)
+            for (int y = x; y > 0 && o[y - 1] > o[y]; y--) {
+                int32_t tmp = o[y];
+                o[y] = o[y - 1];
+                o[y - 1] = tmp;
+            }
+    }
+    qsort(c, nc, 4 * sizeof *c, fz_cmp4);
+    *out = c;
+    *nout = nc;
+    return 0;
+}
+
+/* dd_check, then the canonical form against the one from scratch. */
+static int fz_verify(const fz_state *s, const char *after)
+{
+    dd_status st = dd_check(s->t);
+    if (st != DD_OK) {
+        fprintf(stderr, "fuzz ops: dd_check after %s: %s: %s\n", after, dd_status_name(st), dd_errmsg(s->t));
+        return 1;
+    }
+    int32_t *a = NULL, *b = NULL;
+    size_t na = 0, nb = 0;
+    if (dd_canonical(s->t, &a, &na) != DD_OK || fz_scratch(s, &b, &nb)) {
+        free(a);
+        free(b);
+        return 1;
+    }
+    int same = na == nb && !memcmp(a, b, 4 * na * sizeof *a);
+    free(a);
+    free(b);
+    if (!same) fprintf(stderr, "fuzz ops: after %s: %zu cells, from scratch %zu or different cells\n", after, na, nb);
+    return !same;
+}
+
+static uint64_t fz_hash(dd_tri *t)
+{
+    int32_t *a = NULL;
+    size_t na = 0;
+    if (dd_canonical(t, &a, &na) != DD_OK) return 0;
+    uint64_t h = dd_canonical_hash(a, na);
+    free(a);
+    return h;
+}
+
+/* A refused operation leaves the triangulation as it was. */
+static int fz_unchanged(const fz_state *s, uint64_t before, const char *what, dd_status st)
+{
+    if (fz_hash(s->t) == before) return 0;
+    fprintf(stderr, "fuzz ops: %s was refused (%s) but changed the triangulation\n", what, dd_status_name(st));
+    return 1;
+}
+
+/* 1 if q equals the point of a vertex of t. */
+static int fz_is_vertex_point(const fz_state *s, const double q[3])
+{
+    for (uint32_t i = 0; i < s->np; i++)
+        if (dd_is_vertex(s->t, i) && !memcmp(s->xyz + 3 * i, q, 3 * sizeof *q)) return 1;
+    return 0;
+}
+
+/* The k-th vertex (mod their number) of t, or UINT32_MAX if none. */
+static uint32_t fz_vertex(const fz_state *s, unsigned k)
+{
+    uint32_t nv = dd_num_vertices(s->t);
+    if (nv == 0) return UINT32_MAX;
+    k %= nv;
+    for (uint32_t i = 0; i < s->np; i++)
+        if (dd_is_vertex(s->t, i) && k-- == 0) return i;
+    return UINT32_MAX;
+}
+
+static const char *fz_variant(unsigned b)
+{
+    size_t nv = 0;
+    while (dd_variant_name(nv)) nv++;
+    return dd_variant_name(b % nv);
+}
+
+static int dd_fuzz_ops(const uint8_t *data, size_t n)
+{
+    fz_in in = {data, n, 0};
+    fz_state *s = calloc(1, sizeof *s);
+    if (!s) return 0;
+    int bad = 0;
+    char what[96];
+    for (int op = 0; op < FZ_MAX_OPS && fz_more(&in) && !bad; op++) {
+        unsigned code = fz_byte(&in) % 8;
+        if (s->t == NULL) code = 0;                         /* nothing to work on yet */
+        uint64_t before = s->t ? fz_hash(s->t) : 0;
+        dd_status st;
+        switch (code) {
+        case 0: {                                           /* create */
+            uint32_t m = 4 + fz_byte(&in) % 29;
+            double pts[3 * 32];
+            for (uint32_t i = 0; i < m; i++) fz_point(&in, pts + 3 * i);
+            dd_tri *t = NULL;
+            char msg[256];
+            st = dd_create(&t, pts, m, msg, sizeof msg);
+            if (st == DD_OK) {
+                dd_free(s->t);
+                s->t = t;
+                memcpy(s->xyz, pts, 3 * m * sizeof *pts);
+                s->np = m;
+                snprintf(what, sizeof what, "create of %u points", m);
+                bad = fz_verify(s, what);
+            } else if (st != DD_ERR_TOO_FEW && st != DD_ERR_COLLINEAR && st != DD_ERR_COPLANAR) {
+                fprintf(stderr, "fuzz ops: create of %u grid points: %s: %s\n", m, dd_status_name(st), msg);
+                bad = 1;
+            }
+            break;
+        }
+        case 1: case 2: {                                   /* delete */
+            uint32_t v = fz_vertex(s, fz_byte(&in));
+            const char *var = fz_variant(fz_byte(&in));
+            snprintf(what, sizeof what, "delete of %u with %s", v, var);
+            st = dd_delete(s->t, v, var);
+            if (st == DD_OK) bad = fz_verify(s, what);
+            else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
+            else {
+                fprintf(stderr, "fuzz ops: %s: %s: %s\n", what, dd_status_name(st), dd_errmsg(s->t));
+                bad = 1;
+            }
+            break;
+        }
+        case 3: {                                           /* insert */
+            double q[3];
+            uint32_t idx = UINT32_MAX;
+            fz_point(&in, q);
+            if (s->np == FZ_MAX_POINTS) break;
+            int dup = fz_is_vertex_point(s, q);
+            snprintf(what, sizeof what, "insert of (%g, %g, %g)", q[0], q[1], q[2]);
+            st = dd_insert(s->t, q, &idx);
+            /* a new index, or the index of a deleted vertex, reused */
+            const int fresh = idx == s->np || (idx < s->np && dd_alias(s->t, idx) == idx);
+            if (st == DD_OK && !dup && fresh) {
+                memcpy(s->xyz + 3 * idx, q, sizeof q);
+                if (idx == s->np) s->np++;
+                bad = fz_verify(s, what);
+            } else if (st == DD_ERR_DUPLICATE && dup) {
+                bad = fz_unchanged(s, before, what, st) || dd_num_input(s->t) != s->np;
+            } else {
+                fprintf(stderr, "fuzz ops: %s: %s (a vertex's point: %d), index %u of %u\n", what,
+                        dd_status_name(st), dup, idx, s->np);
+                bad = 1;
+            }
+            break;
+        }
+        case 4: {                                           /* move a vertex */
+            uint32_t v = fz_vertex(s, fz_byte(&in));
+            double q[3];
+            fz_point(&in, q);
+            if (v == UINT32_MAX) break;
+            int dup = fz_is_vertex_point(s, q) && memcmp(s->xyz + 3 * v, q, sizeof q);
+            snprintf(what, sizeof what, "move of %u to (%g, %g, %g)", v, q[0], q[1], q[2]);
+            st = dd_move(s->t, v, q);
+            if (st == DD_OK && !dup) {
+                memcpy(s->xyz + 3 * v, q, sizeof q);
+                bad = fz_verify(s, what);
+            } else if ((st == DD_ERR_DUPLICATE && dup) || st == DD_ERR_DIMENSION) {
+                bad = fz_unchanged(s, before, what, st);
+            } else {
+                fprintf(stderr, "fuzz ops: %s: %s (a vertex's point: %d): %s\n", what, dd_status_name(st), dup,
+                        dd_errmsg(s->t));
+                bad = 1;
+            }
+            break;
+        }
+        case 5: {                                           /* delete_set */
+            uint32_t m = 1 + fz_byte(&in) % 6, vs[6], k = 0;
+            for (uint32_t i = 0; i < m; i++) {
+                uint32_t v = fz_vertex(s, fz_byte(&in)), again = 0;
+                for (uint32_t j = 0; j < k; j++) again |= vs[j] == v;
+                if (!again && v != UINT32_MAX) vs[k++] = v;
+            }
+            const char *var = fz_variant(fz_byte(&in));
+            snprintf(what, sizeof what, "delete_set of %u vertices with %s", k, var);
+            st = dd_delete_set(s->t, vs, k, var);
+            if (st == DD_OK) bad = fz_verify(s, what);
+            else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
+            else {
+                fprintf(stderr, "fuzz ops: %s: %s: %s\n", what, dd_status_name(st), dd_errmsg(s->t));
+                bad = 1;
+            }
+            break;
+        }
+        case 6: {                                           /* reinsert a deleted point */
+            uint32_t k = fz_byte(&in), v = UINT32_MAX;
+            for (uint32_t i = 0; i < s->np; i++) {
+                uint32_t j = (k + i) % s->np;
+                if (!dd_is_vertex(s->t, j) && dd_alias(s->t, j) == j) { v = j; break; }
+            }
+            if (v == UINT32_MAX) break;
+            int dup = fz_is_vertex_point(s, s->xyz + 3 * v);
+            snprintf(what, sizeof what, "reinsert of %u", v);
+            st = dd_reinsert(s->t, v);
+            if (st == DD_OK && !dup) bad = fz_verify(s, what);
+            else if (st == DD_ERR_DUPLICATE && dup) bad = fz_unchanged(s, before, what, st);
+            else {
+                fprintf(stderr, "fuzz ops: %s: %s (a vertex's point: %d): %s\n", what, dd_status_name(st), dup,
+                        dd_errmsg(s->t));
+                bad = 1;
+            }
+            break;
+        }
+        default: {                                          /* test controls */
+            unsigned b = fz_byte(&in);
+#ifdef DD_TEST_BUILD
+            dd_test_control(s->t, DD_TEST_SCALAR, b & 1);
+            dd_test_control(s->t, DD_TEST_NO_SINGLE, b >> 1 & 1);
+            dd_test_control(s->t, DD_TEST_SPOIL_SINGLE, b >> 2 & 1);
+            dd_test_control(s->t, DD_TEST_NARROWER, b >> 3 & 1);
+#else
+            (void)b;
+#endif
+            break;
+        }
+        }
+    }
+    dd_free(s->t);
+    free(s);
+    return bad;
+}
+
+#endif

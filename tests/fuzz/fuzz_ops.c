@@ -1,0 +1,16 @@
+/*
+ * fuzz_ops.c -- libFuzzer driver of the operation interpreter (`make
+ * fuzz`): create / delete / insert / delete_set / reinsert on integer
+ * grid points, each step validated and compared with a build from
+ * scratch.  The entry point is in fuzz_entry.h, which test_fuzz_replay.c
+ * replays in `make test`.
+ */
+#include "fuzz_entry.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t n);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t n)
+{
+    if (dd_fuzz_ops(data, n)) abort();
+    return 0;
+}
