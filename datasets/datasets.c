@@ -810,6 +810,11 @@ static const dataset datasets[] = {
 };
 #define NUM_DATASETS (sizeof datasets / sizeof *datasets)
 
+const char *dd_dataset_name(size_t i)
+{
+    return i < NUM_DATASETS ? datasets[i].name : NULL;
+}
+
 dd_status dd_gen(const char *name, uint32_t n, uint64_t seed,
                  double **xyz, uint32_t *np, char *msg, size_t msglen)
 {

@@ -17,6 +17,9 @@
 #include <stdio.h>
 #include "../src/dtdel.h"
 
+/* The name of dataset i in dd_gen's table (i = 0, 1, ...), NULL past it. */
+const char *dd_dataset_name(size_t i);
+
 /* Writes n points of dataset `name` into *xyz (3n doubles).  For real
  * models n is a maximum (0 = all vertices) and *np receives the count.
  * Unknown name: DD_ERR_PARSE; missing model archive: DD_ERR_IO.          */

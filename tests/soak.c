@@ -103,7 +103,7 @@ typedef struct soak_case {
 static size_t num_datasets(void)
 {
     size_t n = 0;
-    while (dd_dataset_names[n]) n++;
+    while (dd_dataset_name(n)) n++;
     return n;
 }
 
@@ -116,7 +116,7 @@ static soak_case make_case(size_t k, double scale, uint64_t seed)
     size_t nd = num_datasets();
     soak_case c;
     c.index = (int)k;
-    c.dataset = dd_dataset_names[k % nd];
+    c.dataset = dd_dataset_name(k % nd);
     c.mode = (soak_mode)(k / nd % NUM_MODES);
     c.tf = (soak_tf)(k / nd / NUM_MODES % NUM_TF);
     c.seed = seed * 1000003u + k;
@@ -222,8 +222,8 @@ static int is_model(const char *name)
 
 static int load_models(soak *s)
 {
-    for (size_t i = 0; dd_dataset_names[i]; i++) {
-        const char *name = dd_dataset_names[i];
+    for (size_t i = 0; dd_dataset_name(i); i++) {
+        const char *name = dd_dataset_name(i);
         if (!is_model(name) || s->nmodels == 32) continue;
         char msg[256];
         double *xyz;
@@ -533,9 +533,11 @@ static int pair_insert(soak *s, pair *p, const double q[3])
     char what[160];
     snprintf(what, sizeof what, "inserting (%.17g, %.17g, %.17g) as input %u", q[0], q[1], q[2], next);
     dd_status st = dd_insert(p->t, q, &idx);
-    int rc = dd_cgal_insert(p->c, q, next);
+    /* a new index, or a deleted vertex's (dd_insert reuses them) */
+    const int fresh = idx == next || (idx < next && (idx >= p->npos || p->pos[idx] == UINT32_MAX));
+    int rc = dd_cgal_insert(p->c, q, st == DD_OK && fresh ? idx : next);
     if (st == DD_ERR_DUPLICATE && rc == 2) return 1;
-    if (st != DD_OK || rc != 0 || idx != next) {
+    if (st != DD_OK || rc != 0 || !fresh) {
         mismatch(s, "%s: engine %s (%s) index %u, CGAL %s", what, dd_status_name(st), dd_errmsg(p->t), idx,
                  rc == 2 ? "found it equal to a vertex" : rc ? "failed" : "inserted it");
         return -1;

@@ -532,7 +532,10 @@ int dd_cgal_reinsert(dd_cgal *c, uint32_t v)
 
 int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index)
 {
-    if (c == NULL || p == NULL || index != c->pts.size() || index == UINT32_MAX)
+    if (c == NULL || p == NULL || index > c->pts.size() || index == UINT32_MAX)
+        return 1;
+    const bool reuse = index < c->pts.size();   /* a removed vertex's index */
+    if (reuse && (has_vertex(c, index) || !c->first[index]))
         return 1;
     for (int k = 0; k < 3; k++)
         if (!std::isfinite(p[k]))
@@ -545,14 +548,23 @@ int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index)
         const Cell_handle loc = c->dt.locate(pt, lt, li, lj);
         if (lt == Main_dt::VERTEX)
             return 2;                  /* equal to a vertex: no index taken */
-        c->pts.push_back(pt);
-        c->vh.push_back(Vertex_handle());
-        c->first.push_back(1);
+        const Point old = reuse ? c->pts[index] : pt;
+        if (reuse) {
+            c->pts[index] = pt;
+        } else {
+            c->pts.push_back(pt);
+            c->vh.push_back(Vertex_handle());
+            c->first.push_back(1);
+        }
         const Vertex_handle h = c->dt.insert(pt, lt, loc, li, lj);
         if (c->dt.number_of_vertices() != before + 1) {
-            c->pts.pop_back();
-            c->vh.pop_back();
-            c->first.pop_back();
+            if (reuse) {
+                c->pts[index] = old;
+            } else {
+                c->pts.pop_back();
+                c->vh.pop_back();
+                c->first.pop_back();
+            }
             return 1;
         }
         h->info() = index;

@@ -46,8 +46,9 @@ int dd_cgal_remove(dd_cgal *c, uint32_t v);
 int dd_cgal_remove_rnd(dd_cgal *c, uint32_t v, uint64_t seed);
 /* Re-inserts input point v (which must have been removed) as vertex v. */
 int dd_cgal_reinsert(dd_cgal *c, uint32_t v);
-/* Inserts a new point p as input index `index`, which must be the next
- * one (the number of points given so far, as dd_insert numbers them).
+/* Inserts a new point p as input index `index`: the next one (the number
+ * of points given so far), or the index of a removed vertex, reused (as
+ * dd_insert numbers them).
  * Returns 0 when inserted, 2 when p equals a vertex (nothing changes, no
  * index taken: dd_insert's DD_ERR_DUPLICATE), 1 on any other failure.  */
 int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index);
