@@ -1,18 +1,18 @@
 /*
- * qsmall.c -- the compact conflict DT (see qsmall.h).
+ * qsmall.c -- the compact conflict DT (see qsmall.h; paper 4.1).
  *
  * Owns: struct dd_qs (kept in d's scratch across deletions, so the hot path does
  * not allocate once warm), its cell storage, CREATEQCONFLICTDT and
  * QCONFLICTDTINSERT on it, the scan location, and the export of the fill.
  *
- * Conventions are mesh.h's (orientation, dd_facet, 4c+i neighbours, the
- * dummy-cell swap of dd_cell_conflict), with 8-bit vertices and 16-bit
- * neighbour references.
+ * Invariant: every conflict answer is dd_cell_conflict's on the same cell
+ * (a lifted-filter sign certified by lift.h, else pred.c's predicates);
+ * the free cells form a list through n[0]; the edge table is empty
+ * between two stars.  Conventions are mesh.h's (orientation, dd_facet,
+ * 4c+i neighbours, the dummy-cell swap of dd_cell_conflict), with 8-bit
+ * vertices and 16-bit neighbour references.
  */
 #include "delete/qsmall.h"
-#include "geom/expansion.h"
-
-#include <math.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -31,8 +31,8 @@ typedef struct qs_cell {
 
 struct dd_qs {
     double pt[64][3];             /* local vertex -> point (QS_QD: q)   */
-    double lift[64][4];           /* (x - q, |x - q|^2), rounded; QS_QD: 0 */
-    double lift_err;              /* the filter's error bound (+inf: off) */
+    double lift[64][4];           /* dd_lift_row of x relative to q; QS_QD: 0 */
+    double lift_err;              /* the in-sphere bound (0: exact, +inf: off) */
     double lift_m;                /* max |x_k - q_k| over the cavity      */
     uint32_t nlift, nexact;       /* points lifted; exact tests so far    */
     int shifted;                  /* the shifted lifts were tried         */
@@ -140,37 +140,6 @@ static inline int qs_has(const qs_cell *c, uint32_t x)
     return c->v[0] == x || c->v[1] == x || c->v[2] == x || c->v[3] == x;
 }
 
-/* The filter.  For a cell with rows v0..v3 (dd_cell_conflict's order)
- * and a point p, the in-sphere determinant equals
- *     det4( lift[vi] - lift[p] ),  i = 0..3,
- * exactly, when the lifts are exact: lift[x] = (x - q, |x - q|^2) moves
- * every point by -q and adds to the fourth column a combination of the
- * first three, which changes no determinant.  Computed in doubles, with
- * m = max |x_k - q_k| over the points of the cavity: the entries are at
- * most 2m (columns 0-2) and 3m^2 (column 3) with absolute errors at most
- * 2u*2m and 12u*3m^2 (u = 2^-53; the lifts are rounded once per point),
- * so the determinant's error from its entries is at most
- * 24 * (2m)^3 * 3m^2 * 18u, and its evaluation (10 roundings on any
- * product path) adds at most gamma_10 * 576 m^5: in all below
- * 1.8e-12 m^5.  The filter answers only when |det| > 1e-11 m^5, and only
- * when 1e-55 <= m <= 1e55 (no overflow; underflow errors negligible);
- * otherwise the exact perturbed predicate decides.  A filter answer is the
- * sign of the exact determinant, hence the predicate's (det4 < 0: p
- * inside the sphere of the positively oriented v0..v3).                   */
-static double det4_rows(const double *r[4], const double *p)
-{
-    double a[4][4];
-    for (int i = 0; i < 4; i++)
-        for (int k = 0; k < 4; k++) a[i][k] = r[i][k] - p[k];
-    double m01 = a[0][0] * a[1][1] - a[1][0] * a[0][1], m02 = a[0][0] * a[2][1] - a[2][0] * a[0][1];
-    double m03 = a[0][0] * a[3][1] - a[3][0] * a[0][1], m12 = a[1][0] * a[2][1] - a[2][0] * a[1][1];
-    double m13 = a[1][0] * a[3][1] - a[3][0] * a[1][1], m23 = a[2][0] * a[3][1] - a[3][0] * a[2][1];
-    double n01 = a[0][2] * a[1][3] - a[1][2] * a[0][3], n02 = a[0][2] * a[2][3] - a[2][2] * a[0][3];
-    double n03 = a[0][2] * a[3][3] - a[3][2] * a[0][3], n12 = a[1][2] * a[2][3] - a[2][2] * a[1][3];
-    double n13 = a[1][2] * a[3][3] - a[3][2] * a[1][3], n23 = a[2][2] * a[3][3] - a[3][2] * a[2][3];
-    return ((m01 * n23 - m02 * n13) + (m03 * n12 + m12 * n03)) - (m13 * n02 - m23 * n01);
-}
-
 /* The exact test: dd_cell_conflict's rule on the cell's points. */
 static int qs_conflict_exact(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
 {
@@ -193,46 +162,8 @@ static inline uint32_t qs_outer_bytes(uint32_t w)
     return (y - 0x01010101u) & ~y & 0x80808080u;
 }
 
-/* Shifted lifts, for nearly cospherical cavities (points sampled on a
- * sphere), where every determinant is tiny next to m^5 and the plain
- * filter always abstains.  Replacing the fourth column by
- *     w'[x] = |x - q|^2 - 2 (x - q).C
- * for any fixed C subtracts multiples of the first three columns: the
- * determinant is unchanged.  With C the centre (relative to q) of the
- * sphere through q and points 0, 1, 2, w' is about the distance of x from
- * that sphere, far below m^2.  Each w' is computed from its exact
- * expansion within 4u |w'|, so with M = max |w'| the entries of column 3
- * are at most 2M with errors at most 10u M; with the 6u of columns 0-2
- * and the 10u of the evaluation, the error is below
- *     21u * 24 * (2m)^3 * 2M < 9e-13 m^3 M,
- * and the filter answers only when |det| > 5e-12 m^3 M (and that bound
- * is at least 1e-290: underflow negligible).  Kept only when it is
- * tighter than the plain bound.  Tried once per deletion, after the
- * fourth exact fallback, and only with at least DD_SHIFT_FROM (finite)
- * points: it costs an exact expansion a point, which the few tests left
- * below that do not pay back.  Measured on the sphere dataset (hull
- * vertices: one neighbour is infinite), warm deletions with and without
- * shifting: degree 6 1.98 vs 1.53 us, 7 2.68 vs 2.65, 8 3.15 vs 4.29,
- * 9 3.63 vs 6.20.                                                        */
-double dd_shift_lifts(const double *const *pts, uint32_t n, const double *q, const double *a, const double *b,
-                      const double *c, double m, double err, double *w)
-{
-    double bc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
-    double ca[3] = {c[1] * a[2] - c[2] * a[1], c[2] * a[0] - c[0] * a[2], c[0] * a[1] - c[1] * a[0]};
-    double ab[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]), C[3], M = 0;
-    for (int i = 0; i < 3; i++) {
-        C[i] = (a[3] * bc[i] + b[3] * ca[i] + c[3] * ab[i]) / den;
-        if (!(fabs(C[i]) <= 1e50)) return 0;       /* also NaN, inf */
-    }
-    for (uint32_t k = 0; k < n; k++) {
-        w[k] = dd_exp_shifted_lift(pts[k], q, C);
-        if (fabs(w[k]) > M) M = fabs(w[k]);
-    }
-    double e = 5e-12 * m * m * m * M;
-    return e >= 1e-290 && e < err ? e : 0;
-}
-
+/* Shifted lifts (lift.h) once the plain filter has left four tests to the
+ * exact predicates: nearly cospherical cavities, where it abstains on most. */
 static void qs_shift(struct dd_qs *s)
 {
     s->shifted = 1;
@@ -246,7 +177,8 @@ static void qs_shift(struct dd_qs *s)
     s->lift_err = err;
 }
 
-/* dd_cell_conflict on a compact cell: the filter above, else the same
+/* dd_cell_conflict on a compact cell: the lifted filter (dd_lift_det4 of
+ * the cell's lifts and x's: negative when x is inside), else the same
  * predicates on the same points in the same order, so the same answer.
  * A dummy cell (a,b,c,QD) is tested as (b,a,c,q): one row swap, so the
  * determinant of the stored order with lift[QD] = lift[q] = 0, negated. */
@@ -262,34 +194,29 @@ static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
         sign = -1;
     }
     const double *l[4] = {s->lift[v[0]], s->lift[v[1]], s->lift[v[2]], s->lift[v[3]]};
-    double det = sign * det4_rows(l, s->lift[x]);
+    double det = sign * dd_lift_det4(l, s->lift[x]);
     if (det < -s->lift_err) return 1;      /* negative: inside */
     if (det > s->lift_err) return 0;
     if (++s->nexact == 4 && !s->shifted && s->nlift >= DD_SHIFT_FROM) qs_shift(s);
     return qs_conflict_exact(s, pr, c, x);
 }
 
-/* Lifts the points 0..n-1 and q, and sets the filter's bound. */
+/* Lifts the points 0..n-1 relative to q and sets the filter's bound:
+ * lift.h's for the frame, 0 with integer lifts (then no shift).          */
 static void qs_lift(struct dd_qs *s, uint32_t n)
 {
     const double *q = s->pt[QS_QD];
     double m = 0;
-    for (uint32_t k = 0; k < n; k++) {
-        double *l = s->lift[k];
-        for (int i = 0; i < 3; i++) {
-            l[i] = s->pt[k][i] - q[i];
-            double a = l[i] < 0 ? -l[i] : l[i];
-            if (a > m) m = a;
-        }
-        l[3] = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
-    }
+    for (uint32_t k = 0; k < n; k++) m = dd_lift_max(m, dd_lift_row(s->lift[k], s->pt[k], q));
+    int integral = m <= DD_LIFT_INT_O && dd_lift_is_int3(q);   /* beyond the largest limit no mode holds */
+    for (uint32_t k = 0; k < n && integral; k++) integral = dd_lift_is_int3(s->pt[k]);
     memset(s->lift[QS_QD], 0, sizeof s->lift[QS_QD]);
-    /* Outside the range (or NaN): +inf, so the filter never answers. */
-    s->lift_err = dd_lift_err(m);
+    dd_lift_frame f = dd_lift_classify(integral, m);
+    s->lift_err = f.ierr;
     s->lift_m = m;
     s->nlift = n;
     s->nexact = 0;
-    s->shifted = s->lift_err == 1.0 / 0.0;
+    s->shifted = !(f.ierr > 0 && f.ierr < 1.0 / 0.0);   /* nothing to shift for */
 }
 
 /* The star of local vertex x over the boundary facets s->boundary[0..nb)

@@ -2,7 +2,7 @@
  * qsmall.h -- the compact conflict DT: DT(x)_q(P) for cavities of at most
  * DD_QS_MAXV neighbours, in storage sized for them (paper 4.1, DESIGN 6).
  *
- * The same algorithm as the generic conflict DT of delete.c
+ * The same algorithm as the generic conflict DT of qdt.c
  * (CREATEQCONFLICTDT, then QCONFLICTDTINSERT of each point located by
  * scanning the dummy cells), in a representation built for a cavity of a
  * few dozen points, so that the whole structure stays in L1 cache:
@@ -14,10 +14,10 @@
  *  - the star of a new point is glued through a direct edge table indexed
  *    by the two local vertex numbers (no hashing), left empty after each
  *    star since every edge of a cavity boundary is met exactly twice;
- *  - the conflict test for a non-dummy cell goes through a filter on a
- *    per-cell cached lifted hyperplane (see qsmall.c) and falls back to
- *    the exact perturbed predicates of pred.c, so every answer equals
- *    dd_cell_conflict's on the same cell.
+ *  - the conflict test for a non-dummy cell goes through the lifted
+ *    filter of src/geom/lift.h (points lifted relative to q once per
+ *    deletion) and falls back to the exact perturbed predicates of
+ *    pred.c, so every answer equals dd_cell_conflict's on the same cell.
  * When the structure is complete its fill cells (the non-dummy ones) are
  * exported into d->qdt / d->fill with vertex ids, for the framework's sew.
  */
@@ -25,6 +25,7 @@
 #define DD_QSMALL_H
 
 #include "delete/delete.h"
+#include "geom/lift.h"   /* the lifted filter, which the wrap takes from here too */
 
 #define DD_QS_MAXV 62     /* neighbours handled: local numbers 0..61     */
 
@@ -35,29 +36,10 @@
 dd_status dd_qs_fill(dd_del *d);
 
 /* Sorts d->order (at most DD_QS_MAXV entries) by increasing distance to q
- * (rounded squared distances; ties keep their order).  An insertion order
+ * (rounded squared distances; ties keep their order): an insertion order
  * for the compact conflict DT that builds fewer cells than a random one
- * on the bench's inputs (auto.c).                                        */
+ * (auto.c).                                                              */
 void dd_qs_order_nearest(dd_del *d);
-
-/* The lifted in-sphere filter of qsmall.c (and wrap.c): the error bound
- * of a determinant of lifted differences for points within m of q in
- * each coordinate (derivation above det4_rows in qsmall.c); +inf outside
- * 1e-55 <= m <= 1e55, where the filter must not answer.                 */
-static inline double dd_lift_err(double m)
-{
-    return m >= 1e-55 && m <= 1e55 ? 1e-11 * m * m * m * m * m : 1.0 / 0.0;
-}
-
-/* Shifted lifts for nearly cospherical cavities (qsmall.c): for the points
- * pts[0..n), within m of q, and the plain lifts a, b, c ((x - q,
- * |x - q|^2)) of three of them, writes the shifted fourth coordinates to
- * w[0..n) and returns their filter bound; 0 when the centre is not finite
- * or the bound is not below err.  Worth trying from DD_SHIFT_FROM points
- * on.                                                                    */
-#define DD_SHIFT_FROM 7
-double dd_shift_lifts(const double *const *pts, uint32_t n, const double *q, const double *a, const double *b,
-                      const double *c, double m, double err, double *w);
 
 struct dd_qs;
 void dd_qs_free(struct dd_qs *s);

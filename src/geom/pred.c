@@ -15,10 +15,12 @@
  *     exponent they are integers and every sum and product is exact.  GMP
  *     works for all finite doubles (1e-300 and 1e300 included).
  * The perturbation (Devillers & Teillaud 2011, as CGAL implements it) is
- * applied on top, only when the exact sign is zero.
+ * applied on top, only when the exact sign is zero; its 3D rule is
+ * lift.h's dd_lift_symbolic_top, on the lexicographic order of the five.
  */
 #include "geom/pred.h"
 #include "geom/expansion.h"
+#include "geom/lift.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -375,22 +377,34 @@ int dd_insphere_perturbed(dd_pred *ctx, const double *p0, const double *p1,
     return s != 0 ? s : dd_insphere_symbolic(ctx, p0, p1, p2, p3, p);
 }
 
+/* The cell and query of dd_insphere_symbolic, for lift.h's rule. */
+typedef struct symbolic_cell {
+    dd_pred *pr;
+    const double *v[4], *p;
+} symbolic_cell;
+
+/* orient3d of the cell with its vertex k replaced by the query: the
+ * rule's orientations (dd_lift_orient_fn, inlined where it is used).    */
+static int orient_replaced(void *ctx, int k)
+{
+    const symbolic_cell *c = ctx;
+    const double *v[4] = {c->v[0], c->v[1], c->v[2], c->v[3]};
+    v[k] = c->p;
+    return dd_orient3d(c->pr, v[0], v[1], v[2], v[3]);
+}
+
 int dd_insphere_symbolic(dd_pred *ctx, const double *p0, const double *p1,
                          const double *p2, const double *p3,
                          const double *p)
 {
     DD_COUNT(ctx, perturbed);
+    symbolic_cell c = {ctx, {p0, p1, p2, p3}, p};
     const double *pts[5] = {p0, p1, p2, p3, p};
-    lex_sort(pts, 5);
-    for (int i = 4; i > 2; --i) {
-        int o;
-        if (pts[i] == p) return -1;
-        if (pts[i] == p3 && (o = dd_orient3d(ctx, p0, p1, p2, p)) != 0) return o;
-        if (pts[i] == p2 && (o = dd_orient3d(ctx, p0, p1, p, p3)) != 0) return o;
-        if (pts[i] == p1 && (o = dd_orient3d(ctx, p0, p, p2, p3)) != 0) return o;
-        if (pts[i] == p0 && (o = dd_orient3d(ctx, p, p1, p2, p3)) != 0) return o;
-    }
-    return -1;   /* unreachable for distinct points (CGAL asserts) */
+    int t0 = 0, t1;                       /* the two largest by dd_lex_cmp */
+    for (int i = 1; i < 5; i++) t0 = dd_lex_cmp(pts[i], pts[t0]) > 0 ? i : t0;
+    t1 = t0 == 0;
+    for (int i = t1 + 1; i < 5; i++) t1 = i != t0 && dd_lex_cmp(pts[i], pts[t1]) > 0 ? i : t1;
+    return dd_lift_symbolic_top(t0, t1, 0, orient_replaced, &c);
 }
 
 int dd_incircle_coplanar_perturbed(dd_pred *ctx, const double *p0,

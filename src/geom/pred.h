@@ -196,7 +196,8 @@ static inline int dd_lex_cmp(const double *a, const double *b)
 int dd_insphere_perturbed(dd_pred *ctx, const double *p0, const double *p1,
                           const double *p2, const double *p3,
                           const double *p);
-/* Its perturbation alone, when dd_insphere(p0..p3, p) is exactly 0. */
+/* Its perturbation alone, when dd_insphere(p0..p3, p) is exactly 0: the
+ * rule of lift.h's dd_lift_symbolic_top on the five points' own order.  */
 int dd_insphere_symbolic(dd_pred *ctx, const double *p0, const double *p1,
                          const double *p2, const double *p3,
                          const double *p);
