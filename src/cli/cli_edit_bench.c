@@ -48,13 +48,31 @@ static int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
     return same;
 }
 
+/* Interleaves the low 21 bits of x, y, z (a Morton code). */
+static uint64_t morton(const double *p)
+{
+    uint64_t k = 0;
+    for (int b = 20; b >= 0; b--)
+        for (int c = 0; c < 3; c++) k = k << 1 | ((uint64_t)(p[c] * 2097152.0) >> b & 1);
+    return k;
+}
+
+static int by_morton(const void *a, const void *b)
+{
+    const uint64_t x = morton(a), y = morton(b);
+    return (x > y) - (x < y);
+}
+
 /* The smoothing workload: the moves (vertex, new point) drawn first, then
- * replayed on both sides.                                               */
+ * replayed on both sides.  The points are numbered along a Morton curve,
+ * as a mesh's vertices are stored, and each pass visits them in that
+ * order, as a smoother sweeps its mesh.                                 */
 static int smoothing(const eb_opts *o)
 {
     double *p = NULL;
     uint32_t np;
     if (gen_points("edit-bench", "uniform", o->n, o->seed, &p, &np)) return 1;
+    qsort(p, np, 3 * sizeof *p, by_morton);
     const uint64_t k = o->passes * np;
     uint32_t *who = malloc(k * sizeof *who);
     double *to = malloc(3 * k * sizeof *to), *cur = malloc(3 * (size_t)np * sizeof *cur);
