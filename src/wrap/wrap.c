@@ -20,63 +20,12 @@
  * no point beyond it becomes a hull facet, and a facet through the
  * infinite vertex is wrapped around its hull edge (wrap_scan_inf).
  */
-#include "wrap/wrap.h"
-#include "delete/qsmall.h"
+#include "wrap/wrap_int.h"
 
-#include <math.h>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
-#include <stdlib.h>
-#include <string.h>
 
-#define W_NONE UINT32_MAX
-#define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
-#define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
-#define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
-#define W_BEHIND (UINT32_MAX - 4) /* single precision: every point behind     */
 
-/* On degenerate cavities the filters abstain on most tests and a wrap
- * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
- * ~1 us each), where the conflict DT makes far fewer: from 40 neighbours
- * on, wrapping declines once its exact tests pass 2n (then, warm,
- * cosphere degree [48,64): 719 us wrapping against 383 us for
- * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
- * The budget counts the tests of a guess's proof too, but what it counts
- * is their cost (w_spent): a test the wrap's own filters leave to the
- * predicates is mostly settled by the predicates' filters, at about a
- * sixteenth of the cost of their exact stages.  So w_spent counts the
- * tests past the predicates' filters, and the others one in 16.  On the
- * moment curve, n = 2048, the proof leaves 6 200-7 400 tests to the
- * predicates and 1 600-2 300 of them reach the exact stages: counted
- * whole, they declined every deletion (to GRR: 2.9-4.8 ms), where the
- * wrap takes 1.2-2.6 ms; at n = 1024, 1 700 tests, 95 past the filters.
- * From 40 neighbours on, a refuted guess declines too, without the scans:
- * such cavities are nearly degenerate, where the scans make O(n) exact
- * tests a cell (moment n = 272: refuted after ~140 exact tests, then
- * about 400 more, ~1 us each, before the budget declined anyway: 370-540
- * us against 200-250 us declining at once).  Neither holds for wholly
- * cospherical neighbours (w_cospherical): their in-sphere tests are the
- * perturbation's alone, cheap and not counted.                          */
-#define W_EXACT_FROM 40
 
-/* The narrow guesses (w_guess_narrow), only where the link has a hub:
- * each point keeps up to W_ADJ_CAP known neighbours; one with more is a
- * hub (W_ADJ_FULL), whose list is not kept.  A hub has W_ADJ_CAP + 1
- * link neighbours, so there are none below W_NARROW_FROM neighbours.
- * On uniform points (bunny, degree 24-64) the link has no hub and the
- * fill's new edges are many: narrow guesses taken there regardless were
- * refuted for half the deletions, 2.4 -> 5.3 times a re-insertion.     */
-#define W_ADJ_CAP 32
-#define W_ADJ_FULL (W_ADJ_CAP + 1)
-#define W_NARROW_FROM (W_ADJ_CAP + 2)
 
-/* The lean wide guess from this many neighbours on (w_guess_lean_avx2). */
-#define W_LEAN_FROM 24
-
-/* wrap_guess's *unsure when it did not count: the lean guess, and the
- * single-precision one (whose point is not yet known beyond the facet). */
-enum { W_UNCOUNTED = -1, W_SINGLE = -2 };
 
 /* The single-precision guess (w_guess_f32_avx2) abstains when a point
  * other than the facet's corners lies within W_F32_BAND max|N_i| of its
@@ -84,88 +33,6 @@ enum { W_UNCOUNTED = -1, W_SINGLE = -2 };
  * the floats (about 1e-7 of o's terms) could move o past 0.            */
 #define W_F32_BAND 1e-6f
 
-struct dd_wrap {
-    uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
-    const double **pt;            /* local -> point                       */
-    double *lift[4];              /* lift[i][k]: coordinate i of
-                                     (x_k - q, |x_k - q|^2), rounded      */
-    double *o;                    /* scan scratch, per local number       */
-    uint32_t *tmp;                /* w_lex_ranks' scratch                 */
-    uint32_t *lexr;               /* lexicographic rank, per local number */
-    int lex_ok;                   /* lexr made for this deletion          */
-    double ierr, oerr;            /* the filters' error bounds (+inf: off) */
-    double m;                     /* max |x_k - q_k| over the neighbours  */
-    const double *q;
-    int shifted;                  /* the shifted lifts were tried         */
-    int cosph;                    /* every neighbour on one sphere (the
-                                     scans' in-sphere tests are all 0)   */
-    int exact;                    /* integer lifts: every evaluation of
-                                     the scans is exact (see w_lift)     */
-    int oexact;                   /* every orientation o is exact         */
-    int kexact;                   /* the cofactors K are exact integers
-                                     (w_sign_kp)                          */
-    int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
-    int has_fma;                  /* the CPU has FMA (w_guess_f32_avx2)     */
-    int lean;                     /* the wide guess is the lean one       */
-    int flift_ok;                 /* the float lifts may be used
-                                     (w_flift): the lean guess and the hull
-                                     step are made in single precision first */
-    int f32;                      /* the lean guess is (w_guess_f32): off
-                                     after a refuted guess                */
-    float *flift[4];              /* the lifts in units of m (m^2 for the
-                                     lift), rounded to floats             */
-    double f32_sn, f32_st, f32_st3;   /* the scales of N, of T (xyz) and
-                                     of T (lift) to those units           */
-    uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
-                                     and abstained (made in doubles)      */
-    uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
-                                     made in doubles (wrap_scan_inf)      */
-    int f32_ready;                /* flift made for this deletion (w_flift) */
-#ifdef DD_TEST_BUILD
-    int f32_spoil;                /* answer a wrong point (tests)         */
-#endif
-    uint32_t nexact;              /* tests the filters left to the exact
-                                     predicates, this deletion            */
-    uint64_t unf0;                /* the predicates' count of tests past
-                                     their filters when the wrap began   */
-    uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
-                                     this deletion's neighbours only      */
-    /* the facet table (w_fslot_of): triangle -> its facet record        */
-    struct w_fslot *fs;
-    uint32_t fs_alloc, fs_mask, fs_gen, fs_shift;
-    uint64_t *code;               /* code[k]: local number k's word (w_fkey),
-                                     made for k < ncode                   */
-    uint32_t ncode;
-    const uint64_t *kword;        /* the keys' words (w_fkey): w_bit_words,
-                                     or code from 64 neighbours on        */
-    uint32_t gf[3];               /* alpha^ncode, alpha^3ncode, alpha^5ncode */
-    /* facet records */
-    uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
-    uint32_t *own;                /* fill facet 4k+j (facet j of the k-th
-                                     fill cell) on the other side, or
-                                     W_NONE for a link triangle           */
-    uint32_t *out;                /* a link triangle's mesh facet outside
-                                     the cavity                           */
-    uint8_t *closed;
-    uint32_t *stack, nrec, cap_rec;
-    uint32_t *lcell, cap_lcell;   /* the k-th fill cell's local numbers,
-                                     4k..4k+3                             */
-    uint32_t ncell0;              /* d->t->ncell when the wrap began      */
-    uint32_t *keep;               /* the star's cells as they were, 8
-                                     words each (w_keep_star)             */
-    size_t cap_keep;
-    /* the narrow guesses (w_guess_narrow) */
-    int narrow;                   /* DD_GUESS_*: where this guess's
-                                     candidates come from                 */
-    uint32_t *adj;                /* adj[W_ADJ_CAP k ..]: known neighbours
-                                     of k, in DT(S \ q)                   */
-    uint8_t *nadj;                /* their number; W_ADJ_FULL: a hub      */
-    uint32_t *seen, stamp;        /* seen[k] == stamp: k is a candidate   */
-    uint32_t *cand;               /* the candidates of one facet          */
-    int hub_last;                 /* the last link asked had a hub        */
-    uint32_t lead;                /* local number of the least vertex id  */
-    int narrower;                 /* test build: shortest lists only      */
-};
 
 void dd_wrap_free(struct dd_wrap *w)
 {
@@ -179,7 +46,7 @@ void dd_wrap_free(struct dd_wrap *w)
     free(w);
 }
 
-static int grow(void **p, size_t n, size_t size)
+int w_grow(void **p, size_t n, size_t size)
 {
     void *q = realloc(*p, n * size);
     if (!q) return 0;
@@ -193,23 +60,23 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
     if (n > w->cap_n) {
         uint32_t cap = w->cap_n ? w->cap_n : 64;
         while (cap < n) cap *= 2;
-        if (!grow((void **)&w->pt, cap, sizeof *w->pt) || !grow((void **)&w->o, cap, sizeof *w->o) ||
-            !grow((void **)&w->tmp, cap, sizeof *w->tmp) || !grow((void **)&w->lexr, cap, sizeof *w->lexr))
+        if (!w_grow((void **)&w->pt, cap, sizeof *w->pt) || !w_grow((void **)&w->o, cap, sizeof *w->o) ||
+            !w_grow((void **)&w->tmp, cap, sizeof *w->tmp) || !w_grow((void **)&w->lexr, cap, sizeof *w->lexr))
             return DD_ERR_NOMEM;
         for (int i = 0; i < 4; i++)
-            if (!grow((void **)&w->lift[i], cap, sizeof *w->lift[i]) ||
-                !grow((void **)&w->flift[i], cap, sizeof *w->flift[i]))
+            if (!w_grow((void **)&w->lift[i], cap, sizeof *w->lift[i]) ||
+                !w_grow((void **)&w->flift[i], cap, sizeof *w->flift[i]))
                 return DD_ERR_NOMEM;
-        if (!grow((void **)&w->adj, (size_t)cap * W_ADJ_CAP, sizeof *w->adj) ||
-            !grow((void **)&w->nadj, cap, sizeof *w->nadj) || !grow((void **)&w->seen, cap, sizeof *w->seen) ||
-            !grow((void **)&w->cand, cap, sizeof *w->cand))
+        if (!w_grow((void **)&w->adj, (size_t)cap * W_ADJ_CAP, sizeof *w->adj) ||
+            !w_grow((void **)&w->nadj, cap, sizeof *w->nadj) || !w_grow((void **)&w->seen, cap, sizeof *w->seen) ||
+            !w_grow((void **)&w->cand, cap, sizeof *w->cand))
             return DD_ERR_NOMEM;
         memset(w->seen, 0, cap * sizeof *w->seen);
         w->stamp = 0;
         w->cap_n = cap;
     }
     if (nv > w->cap_loc) {
-        if (!grow((void **)&w->loc, nv, sizeof *w->loc)) return DD_ERR_NOMEM;
+        if (!w_grow((void **)&w->loc, nv, sizeof *w->loc)) return DD_ERR_NOMEM;
         w->cap_loc = nv;
     }
     return DD_OK;
@@ -243,10 +110,6 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
  * either) took 0.9% more instructions than sorting on the helix; the
  * same table probed with one branch (& for &&), a quarter full, took
  * more instructions and ran no faster.                                 */
-struct w_fslot {
-    uint64_t key;
-    uint32_t rec, gen;            /* used iff gen == w->fs_gen            */
-};
 
 #define W_CODE_M 21
 #define W_CODE_POLY ((1u << W_CODE_M) | (1u << 2) | 1u)   /* x^21 + x^2 + 1 */
@@ -280,7 +143,7 @@ void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t 
 static dd_status w_code_reserve(struct dd_wrap *w, uint32_t count)
 {
     if (count <= w->ncode) return DD_OK;
-    if (!grow((void **)&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
+    if (!w_grow((void **)&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
     if (w->ncode == 0) w->gf[0] = w->gf[1] = w->gf[2] = 1;
     dd_wrap_code_words(w->code, w->ncode, count, w->gf);
     w->ncode = count;
@@ -296,17 +159,6 @@ static const uint64_t w_bit_words[64] = {
 #undef W_B4
 };
 
-static inline uint64_t w_fkey(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
-{
-    return w->kword[a] ^ w->kword[b] ^ w->kword[c];
-}
-
-static inline struct w_fslot *w_fprobe(const struct dd_wrap *w, uint64_t key)
-{
-    uint32_t i = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> w->fs_shift);   /* the top bits */
-    while (w->fs[i].gen == w->fs_gen && w->fs[i].key != key) i = (i + 1) & w->fs_mask;
-    return &w->fs[i];
-}
 
 /* Empties the table, sized for about `expect` records. */
 static dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
@@ -330,25 +182,15 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
     return s;
 }
 
-/* The entry of the triangle of key `key` (w_fkey): *found = 1 and its
- * record, or a new entry (*found = 0) that w_open fills.  The table has
- * room (w_reserve_recs).                                                */
-static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
-{
-    struct w_fslot *e = w_fprobe(w, key);
-    *found = e->gen == w->fs_gen;
-    if (!*found) *e = (struct w_fslot){key, W_NONE, w->fs_gen};
-    return &e->rec;
-}
 
-static dd_status w_grow_recs(struct dd_wrap *w, size_t more)
+dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
     if (w->nrec + more > w->cap_rec) {
         uint32_t cap = w->cap_rec ? w->cap_rec : 256;
         while (cap < w->nrec + more) cap *= 2;
-        if (!grow((void **)&w->tri, cap, sizeof *w->tri) || !grow((void **)&w->own, cap, sizeof *w->own) ||
-            !grow((void **)&w->out, cap, sizeof *w->out) || !grow((void **)&w->closed, cap, sizeof *w->closed) ||
-            !grow((void **)&w->stack, cap, sizeof *w->stack))
+        if (!w_grow((void **)&w->tri, cap, sizeof *w->tri) || !w_grow((void **)&w->own, cap, sizeof *w->own) ||
+            !w_grow((void **)&w->out, cap, sizeof *w->out) || !w_grow((void **)&w->closed, cap, sizeof *w->closed) ||
+            !w_grow((void **)&w->stack, cap, sizeof *w->stack))
             return DD_ERR_NOMEM;
         w->cap_rec = cap;
     }
@@ -357,25 +199,6 @@ static dd_status w_grow_recs(struct dd_wrap *w, size_t more)
     return s;
 }
 
-/* Room for `more` more facet records, in the arrays and in the table
- * (inline, the growth apart: w_run asks once a cell, for its three new
- * facets, where asking at each facet, table and records apart, cost 10
- * instructions a facet).                                                 */
-static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
-{
-    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
-}
-
-/* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
- * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
-static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
-{
-    uint32_t r = w->nrec++;
-    w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
-    w->own[r] = own;
-    w->closed[r] = 0;
-    *val = r;
-}
 
 /* Lifts the neighbours relative to q and sets the filters' bounds.
  *
@@ -477,7 +300,7 @@ static void w_lift(struct dd_wrap *w, const double *q)
  * to the same units: N's entries are at most 8m^2, T's are O(m^5) (xyz)
  * and O(m^4) (lift), so that o and t are O(1) or less there.  Only for
  * 1e-50 <= m <= 1e50 (dd_wrap_fill): no overflow of the scales.        */
-static void w_lift_f32(struct dd_wrap *w)
+void w_lift_f32(struct dd_wrap *w)
 {
     const double s = 1.0 / w->m, s2 = s * s;
     w->f32_sn = s2;                                  /* N: at most 8m^2    */
@@ -492,16 +315,6 @@ static void w_lift_f32(struct dd_wrap *w)
     }
 }
 
-/* The float lifts, made at their first use in a deletion: links where
- * the narrow guesses hold and no hull step is taken never pay for them. */
-static inline float *const *w_flift(struct dd_wrap *w)
-{
-    if (!w->f32_ready) {
-        w_lift_f32(w);
-        w->f32_ready = 1;
-    }
-    return w->flift;
-}
 
 /* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
  * wrap_scan have the same entries and at most as many roundings), for
@@ -526,165 +339,6 @@ static int w_shift(struct dd_wrap *w)
     return 1;
 }
 
-/* The fill cell on the positive side of open facet (a, b, c): the point p
- * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
- * other such point (perturbed as CGAL does).  The spheres through a, b, c
- * are ordered along their pencil, so the point is a minimum; W_NONE if no
- * point is surely on the positive side (and none on abc's plane); if
- * none is beyond but some lie on the plane, what w_flat_hull says.
- *
- * With rows B = L[b]-L[a], C = L[c]-L[a] (see w_lift) and P = L[p]-L[a],
- * w(X, P) = det4(B, C, X, P) is the in-sphere determinant of a, b, c, x, p
- * (negative: p inside the sphere of the positively oriented a, b, c, x).
- * Its cofactors along the last row, K(X), give w(X, P) = K(X) . P; they
- * are made from the six 2x2 minors mij of B and C, whose three first
- * ones also give orient3d(a, b, c, p) = o(P) = n . P, n = (m12, -m02,
- * m01).  The form w is antisymmetric with kernel span(B, C), so with
- * N = (n, 0) and t(P) = K(N) . P,
- *     w(X, P) |n|^2 = o(X) t(P) - t(X) o(P),
- * and for x, p on the positive side, p is inside the sphere of a, b, c, x
- * iff t(p)/o(p) < t(x)/o(x): the fill cell's point minimises t/o.      */
-#ifdef __SSE2__
-/* w_cofactors of X = (x01, x23), in registers: the same products, sums
- * and signs (bit for bit) two at a time.  w_run makes K and T for each
- * cell, scalar these took 5% of a deletion at uniform degree 48-63
- * (callgrind).                                                         */
-static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const double m[6])
-{
-    enum { M01, M02, M03, M12, M13, M23 };
-    const __m128d neg0 = _mm_set_pd(0.0, -0.0);
-    __m128d a = _mm_mul_pd(_mm_shuffle_pd(x01, x01, 1), _mm_set1_pd(m[M23]));
-    __m128d b = _mm_mul_pd(_mm_unpacklo_pd(x23, x23), _mm_setr_pd(m[M13], m[M03]));
-    __m128d c = _mm_mul_pd(_mm_unpackhi_pd(x23, x23), _mm_setr_pd(m[M12], m[M02]));
-    _mm_storeu_pd(K, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
-    a = _mm_mul_pd(_mm_unpacklo_pd(x01, x01), _mm_setr_pd(m[M13], m[M12]));
-    b = _mm_mul_pd(_mm_unpackhi_pd(x01, x01), _mm_setr_pd(m[M03], m[M02]));
-    c = _mm_mul_pd(_mm_shuffle_pd(x23, x23, 1), _mm_set1_pd(m[M01]));
-    _mm_storeu_pd(K + 2, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
-}
-#endif
-
-static inline void w_cofactors(double K[4], const double X[4], const double m[6])
-{
-#ifdef __SSE2__
-    w_cofactors_v(K, _mm_loadu_pd(X), _mm_loadu_pd(X + 2), m);
-#else
-    enum { M01, M02, M03, M12, M13, M23 };
-    K[0] = -(X[1] * m[M23] - X[2] * m[M13] + X[3] * m[M12]);
-    K[1] = X[0] * m[M23] - X[2] * m[M03] + X[3] * m[M02];
-    K[2] = -(X[0] * m[M13] - X[1] * m[M03] + X[3] * m[M01]);
-    K[3] = X[0] * m[M12] - X[1] * m[M02] + X[2] * m[M01];
-#endif
-}
-
-/* The six 2x2 minors of rows B and C, in w_cofactors' order.           */
-static inline void w_minors(double m[6], const double B[4], const double C[4])
-{
-#ifdef __SSE2__
-    /* two at a time, as w_cofactors: the same products and differences */
-    const __m128d b01 = _mm_loadu_pd(B), b23 = _mm_loadu_pd(B + 2), c01 = _mm_loadu_pd(C), c23 = _mm_loadu_pd(C + 2);
-    const __m128d b12 = _mm_shuffle_pd(b01, b23, 1), c12 = _mm_shuffle_pd(c01, c23, 1);
-    _mm_storeu_pd(m, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(b01, b01), c12),
-                                _mm_mul_pd(b12, _mm_unpacklo_pd(c01, c01))));
-    _mm_storeu_pd(m + 2, _mm_sub_pd(_mm_mul_pd(b01, _mm_shuffle_pd(c23, c23, 1)),
-                                    _mm_mul_pd(_mm_shuffle_pd(b23, b23, 1), c01)));
-    _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)),
-                                    _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
-#else
-    m[0] = B[0] * C[1] - B[1] * C[0];
-    m[1] = B[0] * C[2] - B[2] * C[0];
-    m[2] = B[0] * C[3] - B[3] * C[0];
-    m[3] = B[1] * C[2] - B[2] * C[1];
-    m[4] = B[1] * C[3] - B[3] * C[1];
-    m[5] = B[2] * C[3] - B[3] * C[2];
-#endif
-}
-
-/* The normal N of the minors' plane: o(P) = N . P is orient3d.        */
-static inline void w_normal_of(const double m[6], double N[4])
-{
-    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
-}
-
-/* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
- * and its orientation o(P) = N . P: the one evaluation of o that every
- * scan uses, so that the orientation filter's bound (w_lift) covers each
- * (the AVX2 guess repeats these operations lane by lane).                */
-static inline double w_row_o(double *const *L, uint32_t k, const double A[4], const double N[4], double P[4])
-{
-    for (int i = 0; i < 4; i++) P[i] = L[i][k] - A[i];
-    return P[0] * N[0] + P[1] * N[1] + P[2] * N[2];
-}
-
-/* t(P) = T . P (see w_cofactors).                                       */
-static inline double w_t(const double P[4], const double T[4])
-{
-    return P[0] * T[0] + P[1] * T[1] + P[2] * T[2] + P[3] * T[3];
-}
-
-/* Facet (a, b, c)'s pencil: minors m of B, C, the normal N (o(P) = N . P)
- * and T (t(P) = T . P), with rows taken from a.                         */
-static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double m[6],
-                            double N[4], double T[4])
-{
-    double *const *L = w->lift;
-    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
-    double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
-    double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
-    w_minors(m, B, C);
-#ifdef __SSE2__
-    /* N in registers: written in scalars (w_normal_of) and read back in
-     * pairs by w_cofactors, a read the store buffer cannot forward from
-     * two writes, which waited for them to commit.  In the bench
-     * (scripts/abbench.sh, uniform, degree >= 32, 2 x 12 runs) deletion /
-     * re-insertion fell by 0.04-0.06, ~3%; the rows B, C and the new
-     * cell's X made in registers as well took it back up by 0.026.      */
-    const __m128d m01 = _mm_loadu_pd(m), m23 = _mm_loadu_pd(m + 2);
-    const __m128d n01 = _mm_xor_pd(_mm_shuffle_pd(m23, m01, 3), _mm_set_pd(-0.0, 0.0));   /* (m3, -m1) */
-    const __m128d n23 = _mm_unpacklo_pd(m01, _mm_setzero_pd());                             /* (m0, 0)   */
-    _mm_storeu_pd(N, n01);
-    _mm_storeu_pd(N + 2, n23);
-    w_cofactors_v(T, n01, n23, m);
-#else
-    w_normal_of(m, N);
-    w_cofactors(T, N, m);
-#endif
-}
-
-/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
- * (the lift column left out: N does not use it).                       */
-static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
-{
-    double *const *L = w->lift;
-    const double B[3] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a]};
-    const double C[3] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a]};
-    /* w_minors' m[3], m[1], m[0] (w_normal_of), alone: the others unused */
-    N[0] = B[1] * C[2] - B[2] * C[1];
-    N[1] = -(B[0] * C[2] - B[2] * C[0]);
-    N[2] = B[0] * C[1] - B[1] * C[0];
-    N[3] = 0;
-}
-
-/* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
- * filter's answer, else 0 with integer orientations (o is exact), else
- * the exact predicate.                                                    */
-static inline int w_sign_o(const struct dd_wrap *w, dd_pred *pr, double o, uint32_t a, uint32_t b, uint32_t c,
-                           uint32_t k)
-{
-    if (o > w->oerr) return 1;
-    if (o < -w->oerr) return -1;
-    return w->oexact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
-}
-
-/* orient3d(a, b, c, k), N being w_normal(a, b, c) (w_sign_o).           */
-static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                           const double N[4], uint32_t k)
-{
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    double P[4];
-    return w_sign_o(w, pr, w_row_o(L, k, A, N, P), a, b, c, k);
-}
 
 /* Lexicographic ranks of the neighbours (w->lexr), made the first time
  * the perturbation is asked this deletion: index sort by dd_lex_cmp,
@@ -771,7 +425,7 @@ static int w_sign_kp(const double K[4], const double P[4])
  * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
  * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
  * check, else the exact perturbed test.                               */
-static __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4],
+__attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4],
                                                        const double K[4], const double P[4], uint32_t y)
 {
     const double *const *pt = w->pt;
@@ -783,17 +437,6 @@ static __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred
     return dd_insphere_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
 }
 
-/* (inline: the filter's answer; the rest in w_conflicts_near) */
-static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
-{
-    double *const *L = w->lift;
-    const uint32_t a = lv[0];
-    const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
-    double det = w_t(P, K);
-    if (det > w->ierr) return 0;
-    if (det < -w->ierr) return 1;
-    return w_conflicts_near(w, pr, lv, K, P, y);
-}
 
 /* Whether finite facet (a, b, c), with no point beyond it but some in its
  * plane, is a facet of the hull: no point of its plane in the perturbed
@@ -812,7 +455,6 @@ static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t
     return W_NONE;
 }
 
-static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure);
 
 /* The exact scan: one pass keeping the best point so far, each test
  * filtered (bounds of w_lift) and else decided by the exact perturbed
@@ -1016,8 +658,7 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
  * o and t, ran 5% slower (perf, the guess's time over the re-insertions'
  * find_conflicts in one run: 6.30 -> 6.66): the loop's other operations
  * bound it, not the division.                                           */
-#if defined(__GNUC__) && defined(__x86_64__)
-#define W_AVX2 1
+#ifdef W_AVX2
 #include <immintrin.h>
 
 __attribute__((target("avx2"), always_inline)) static inline uint32_t
@@ -1194,7 +835,7 @@ __attribute__((target("avx2"))) static inline __m256d w_o4_avx2(double *const *L
 /* w_next with AVX2: four points at a time, o as w_row_o has it (the
  * same operations, bit for bit); a lane of the NaN padding past n is
  * never unsure, never behind, and is returned as n.                     */
-__attribute__((target("avx2"))) static uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a,
+__attribute__((target("avx2"))) uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a,
                                                             const double N[4], double oerr, uint32_t from,
                                                             int unsure)
 {
@@ -1218,34 +859,6 @@ __attribute__((target("avx2"))) static uint32_t w_next_avx2(double *const *L, ui
 }
 #endif
 
-/* The first point k >= from whose orientation to the plane of normal N
- * through a (o evaluated as in the scans) is, with `unsure`, within the
- * filter's bound (|o| <= oerr), else not surely behind (o not below
- * -oerr); n if none.  The passes over points nearly all surely on one
- * side look only at those: w_all_behind and the Jarvis pass of
- * wrap_scan_inf (helix n = 4000, degree [64,128): those two scalar
- * passes were 16% of a deletion, callgrind, 38 instructions a point),
- * and the guess's exact pass over the unsure points (moment n = 1024,
- * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
-static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from,
-                                 uint32_t end, int unsure)
-{
-#ifdef W_AVX2
-    if (w->avx2) return w_next_avx2(w->lift, end, a, N, w->oerr, from, unsure);   /* lanes past end: end */
-#endif
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    for (uint32_t k = from; k < end; k++) {
-        double P[4], o = w_row_o(L, k, A, N, P);
-        if (unsure ? !(o > w->oerr) && !(o < -w->oerr) : !(o < -w->oerr)) return k;
-    }
-    return end;
-}
-
-static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
-{
-    return w_next_to(w, a, N, from, w->n, unsure);
-}
 
 /* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
  * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
@@ -1336,24 +949,6 @@ static uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], con
  * known neighbours in a short list, or none once it has more than
  * W_ADJ_CAP (a hub).                                                   */
 
-/* Appends v to k's known neighbours (a hub's list is left as it is).  */
-static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
-{
-    uint8_t c = w->nadj[k];
-    if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
-    w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
-}
-
-/* The known neighbours that link triangle tr gives: each corner the next
- * one, between finite vertices (inf: the infinite vertex's number; read
- * from w->n it cost 0.9% of a deletion on the moment curve, n = 1024).  */
-static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
-{
-    for (int j = 0; j < 3; j++) {
-        uint32_t u = tr[j == 2 ? 0 : j + 1];
-        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
-    }
-}
 
 /* Whether v is among k's known neighbours (k not a hub).                */
 static inline int w_adj_has(const struct dd_wrap *w, uint32_t k, uint32_t v)
@@ -1726,7 +1321,7 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
     if (s == DD_OK) s = dd_vec_reserve(&d->fill, room);
     if (s == DD_OK) s = dd_vec_reserve(&d->sew_out, 4 * room);
     if (s == DD_OK && 4 * room > w->cap_lcell) {
-        if (!grow((void **)&w->lcell, 4 * room, sizeof *w->lcell)) return DD_ERR_NOMEM;
+        if (!w_grow((void **)&w->lcell, 4 * room, sizeof *w->lcell)) return DD_ERR_NOMEM;
         w->cap_lcell = (uint32_t)(4 * room);
     }
     return s;
@@ -1738,7 +1333,7 @@ static dd_status w_keep_star(dd_del *d, struct dd_wrap *w)
 {
     const size_t words = DD_CELL_WORDS * d->star.n;
     if (words > w->cap_keep) {
-        if (!grow((void **)&w->keep, words, sizeof *w->keep)) return DD_ERR_NOMEM;
+        if (!w_grow((void **)&w->keep, words, sizeof *w->keep)) return DD_ERR_NOMEM;
         w->cap_keep = words;
     }
     for (size_t k = 0; k < d->star.n; k++)
@@ -1863,20 +1458,7 @@ static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
     return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
 }
 
-/* The predicates' tests past their filters so far (pred.h).             */
-static inline uint64_t w_unfiltered(const dd_pred *pr)
-{
-    return pr->orient_exact + pr->insphere_exact;
-}
 
-/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
- * the predicates' filters, and one in 16 of the others left to them.   */
-static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
-{
-    return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
-}
-
-enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
 
 /* The wrap from record `start`: each open facet gives the cell on its
  * open side, found by wrap_scan (wrap_scan_inf through the infinite
