@@ -160,7 +160,14 @@ enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
 /* realloc *p to n elements of `size` bytes; 0 (and *p as it was) when out of memory. */
 int w_grow(void **p, size_t n, size_t size);
 
+/* ftab.c: the facet table */
+/* Makes the code words of local numbers below count (< DD_WRAP_CODE_LEN), once. */
+dd_status w_code_reserve(struct dd_wrap *w, uint32_t count);
+/* Empties the facet table, sized for about `expect` records; picks the keys' words. */
+dd_status w_ftab_reset(struct dd_wrap *w, size_t expect);
+/* Room for `more` more facet records, in the arrays and in the table. */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more);
+
 void w_lift_f32(struct dd_wrap *w);
 #ifdef W_AVX2
 uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], double oerr, uint32_t from,
@@ -404,7 +411,7 @@ static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
 
 /* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
  * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
-static void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
+static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
 {
     uint32_t r = w->nrec++;
     w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
