@@ -168,7 +168,14 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect);
 /* Room for `more` more facet records, in the arrays and in the table. */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more);
 
+/* lift.c: lifts and filter bounds */
+/* Lifts the neighbours relative to q and sets the filters' bounds and integer modes. */
+void w_lift(struct dd_wrap *w, const double *q);
+/* Makes the float lifts and their scales (w_flift). */
 void w_lift_f32(struct dd_wrap *w);
+/* Switches to the shifted lifts when their bound is tighter (1), else keeps the lifts (0). */
+int w_shift(struct dd_wrap *w);
+
 #ifdef W_AVX2
 uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], double oerr, uint32_t from,
                      int unsure);
