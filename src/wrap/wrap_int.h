@@ -177,9 +177,25 @@ void w_lift_f32(struct dd_wrap *w);
 int w_shift(struct dd_wrap *w);
 
 #ifdef W_AVX2
+/* simd.c: the AVX2 passes (called only when w->avx2) */
+/* The wide guess over the n lifts: least t/o beyond the facet, W_TIE, W_NONE; *unsure as wrap_guess. */
+uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4], double oerr,
+                      int *unsure);
+/* The wide guess without the count of unsure orientations (w->lean). */
+uint32_t w_guess_lean_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4],
+                           double oerr);
+/* The lean guess in single precision: a point, W_BEHIND, or W_NONE (abstains). */
+uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4]);
+/* w_next_to with AVX2: the first k >= from, k < n, unsure (or not surely behind); n if none. */
 uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], double oerr, uint32_t from,
                      int unsure);
+/* w_all_behind with AVX2. */
+int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y, uint32_t z, const double N[4],
+                      double oerr);
+/* The hull step's point around edge ab in single precision, or W_NONE (a guess). */
+uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b);
 #endif
+
 int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], const double P[4],
                      uint32_t y);
 
