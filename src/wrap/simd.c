@@ -32,7 +32,7 @@
  * cofactors, dd_wrap_fill).  *unsure: whether points other than a,
  * b, c had unsure orientations, |o| <= oerr (a, b, c themselves always
  * do: o(a) is exactly 0, o(b), o(c) within the bound).  w_run then has
- * wrap_scan_exact decide them exactly and compare those beyond with the
+ * w_scan_exact decide them exactly and compare those beyond with the
  * guess's choice: on nearly degenerate cavities (the helix, the moment
  * curve) a point nearly in a facet's plane can be its apex, and leaving
  * it out refuted the whole guess (helix n = 64000, degree 563: at cell

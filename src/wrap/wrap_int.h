@@ -196,8 +196,17 @@ int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y, ui
 uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b);
 #endif
 
+/* scan.c: the certified scans */
+/* The apex of finite open facet (a, b, c) by the certified scans; the infinite vertex on the hull. */
+uint32_t w_scan_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, int on_hull);
+/* The exact scan from `best` over ks[0..nk) (NULL: 0..nk); unsure_only: those of unsure orientation. */
+uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
+                      uint32_t best, int unsure_only, const uint32_t *ks, uint32_t nk);
+/* w_conflicts where the filter abstains: exact, or the perturbation on local numbers. */
 int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], const double P[4],
                      uint32_t y);
+/* Whether every neighbour lies on one sphere, exactly (the first nlink records: the link). */
+int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink);
 
 /* The fill cell on the positive side of open facet (a, b, c): the point p
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
