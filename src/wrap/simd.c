@@ -309,14 +309,14 @@ __attribute__((target("avx2"))) int w_all_behind_avx2(double *const *L, uint32_t
     return total == corners;
 }
 
-/* Step 1 of wrap_scan_inf in single precision, eight points a vector:
+/* Step 1 of w_scan_inf in single precision, eight points a vector:
  * the point furthest round the hull edge ab, or W_NONE.  Seen along ab
  * (each point's offset from b projected on E1, E2, perpendicular to
  * B = a - b with E1 x E2 a positive multiple of B), the plane of b, a, p
  * has x beyond it iff x is counter-clockwise of p, and the facet's point
  * is the furthest counter-clockwise.  Each lane keeps its furthest, in
  * two sets that take the vectors in turn (w_ccw_take), then the sets and
- * the lanes are compared, vectors again.  Only a guess: wrap_scan_inf
+ * the lanes are compared, vectors again.  Only a guess: w_scan_inf
  * takes it when every other point is surely behind its plane in doubles
  * (w_all_behind), else makes the step in doubles.  The step in doubles
  * restarted its pass at each point beyond (7.6 passes a step on the helix, n = 1000, degree

@@ -106,7 +106,7 @@ struct dd_wrap {
     uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
                                      and abstained (made in doubles)      */
     uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
-                                     made in doubles (wrap_scan_inf)      */
+                                     made in doubles (w_scan_inf)      */
     int f32_ready;                /* flift made for this deletion (w_flift) */
 #ifdef DD_TEST_BUILD
     int f32_spoil;                /* answer a wrong point (tests)         */
@@ -207,6 +207,12 @@ int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const
                      uint32_t y);
 /* Whether every neighbour lies on one sphere, exactly (the first nlink records: the link). */
 int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink);
+
+/* hull.c: the hull step */
+/* The apex of open facet (a, b, INF) (certified), W_NONE, or W_BAIL. */
+uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b);
+/* Whether every point before `end` but x, y, z is surely behind the plane of normal N through y. */
+int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end);
 
 /* The fill cell on the positive side of open facet (a, b, c): the point p
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
@@ -385,7 +391,7 @@ static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[
  * filter's bound (|o| <= oerr), else not surely behind (o not below
  * -oerr); n if none.  The passes over points nearly all surely on one
  * side look only at those: w_all_behind and the Jarvis pass of
- * wrap_scan_inf (helix n = 4000, degree [64,128): those two scalar
+ * w_scan_inf (helix n = 4000, degree [64,128): those two scalar
  * passes were 16% of a deletion, callgrind, 38 instructions a point),
  * and the guess's exact pass over the unsure points (moment n = 1024,
  * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
