@@ -214,6 +214,13 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b);
 /* Whether every point before `end` but x, y, z is surely behind the plane of normal N through y. */
 int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end);
 
+/* guess.c: the guesses */
+/* The guessed apex of finite open facet (a, b, e), pencil m, N, T; *single: chosen in floats. */
+uint32_t w_guess_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t e, const double m[6],
+                      const double N[4], const double T[4], int on_hull, int *single);
+/* Records edge (k, v) of a new fill cell among the known neighbours. */
+void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v);
+
 /* The fill cell on the positive side of open facet (a, b, c): the point p
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
  * other such point (perturbed as CGAL does).  The spheres through a, b, c
