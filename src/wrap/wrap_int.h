@@ -221,6 +221,16 @@ uint32_t w_guess_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, ui
 /* Records edge (k, v) of a new fill cell among the known neighbours. */
 void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v);
 
+/* run.c: the wrap */
+/* Keeps the star's cells as they are, before w_run writes the fill over them. */
+dd_status w_keep_star(dd_del *d, struct dd_wrap *w);
+/* Drops the fill cells made so far: the mesh as it was. */
+void w_drop_fill(dd_del *d, struct dd_wrap *w);
+/* Opens the link triangles as the first records; *start: the record to wrap from. */
+dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub);
+/* The wrap from record `start`, guessing or scanning; *outcome: W_DONE, W_DECLINED, W_WRONG_GUESS. */
+dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome);
+
 /* The fill cell on the positive side of open facet (a, b, c): the point p
  * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
  * other such point (perturbed as CGAL does).  The spheres through a, b, c
