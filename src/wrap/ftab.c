@@ -1,0 +1,119 @@
+/*
+ * ftab.c -- the facet table of the gift wrap.
+ */
+#include "wrap/wrap_int.h"
+
+/* The facet table.  A triangle's key (w_fkey) is the exclusive or of
+ * its corners' words, kword[k], which tells sets of three local numbers
+ * apart: no sorting of the corners, and one 64-bit compare a probe.
+ *  - Below 64 neighbours (the infinite vertex n included), bit k.
+ *  - From 64 on, the code words of dd_wrap_code_words.  Before them the
+ *    key was the sorted corners (21 bits each), whose sorting (dd_sort3u,
+ *    no branches but a dozen operations) was 5.8% of the instructions
+ *    of a deletion at bunny degree 72 (callgrind); with the code words,
+ *    190k -> 182k instructions a deletion there, 17.55M -> 17.58M for
+ *    100 deletions of a uniform vertex of degree 57 (the bits alike,
+ *    read from w_bit_words).  In time, bunny degree 72 (one vertex),
+ *    three runs of scripts/abbench.sh, 16, 30 and 40 runs a binary:
+ *    +0.049 +- 0.040, +0.043 +- 0.035, -0.015 +- 0.034, no difference
+ *    the bench can tell.
+ * Beyond DD_WRAP_CODE_LEN - 1 neighbours there are no words: the wrap
+ * declines (dd_wrap_fill).  In w_run a cell's facets take the key of its
+ * four corners less one (a word is its own inverse under ^).
+ * Open addressing, at most half full; every record has its entry, so
+ * the table grows with the records and takes them again (w_ftab_grow).
+ * Against the vertex-triple hash of mesh.h (with gid[n] and the inline
+ * w_reserve_recs): uniform degree 24-31, 60.8k -> 57.0k instructions a
+ * deletion, deletion / re-insertion 1.95 -> 1.85 (8 alternated runs of
+ * 100 vertices); helix n = 4 000, degree 64-127, 230k -> 226k and 1.99
+ * -> 1.89 (sorted keys there).  Keys that are symmetric functions of the
+ * corners (sum, sum of squares and product, for n < 1024: no sort
+ * either) took 0.9% more instructions than sorting on the helix; the
+ * same table probed with one branch (& for &&), a quarter full, took
+ * more instructions and ran no faster.                                 */
+
+#define W_CODE_M 21
+#define W_CODE_POLY ((1u << W_CODE_M) | (1u << 2) | 1u)   /* x^21 + x^2 + 1 */
+_Static_assert(DD_WRAP_CODE_LEN == (1u << W_CODE_M) - 1, "wrap: the code's length");
+
+static inline uint32_t w_gf_times_alpha(uint32_t x, int times)
+{
+    for (int i = 0; i < times; i++) {
+        x <<= 1;
+        if (x >> W_CODE_M) x ^= W_CODE_POLY;
+    }
+    return x;
+}
+
+/* Word k (see wrap.h) is (alpha^k, alpha^3k, alpha^5k), 21 bits each,
+ * alpha a root of x^21 + x^2 + 1 in GF(2^21); gf holds alpha^from,
+ * alpha^3from, alpha^5from ({1, 1, 1} for from = 0), and then those of
+ * count.                                                                */
+void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t gf[3])
+{
+    for (uint32_t k = from; k < count; k++) {
+        code[k] = (uint64_t)gf[0] | (uint64_t)gf[1] << W_CODE_M | (uint64_t)gf[2] << (2 * W_CODE_M);
+        gf[0] = w_gf_times_alpha(gf[0], 1);
+        gf[1] = w_gf_times_alpha(gf[1], 3);
+        gf[2] = w_gf_times_alpha(gf[2], 5);
+    }
+}
+
+/* The code words for local numbers below count (< DD_WRAP_CODE_LEN),
+ * made once: the wrap keeps them for the next deletions.               */
+dd_status w_code_reserve(struct dd_wrap *w, uint32_t count)
+{
+    if (count <= w->ncode) return DD_OK;
+    if (!w_grow((void **)&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
+    if (w->ncode == 0) w->gf[0] = w->gf[1] = w->gf[2] = 1;
+    dd_wrap_code_words(w->code, w->ncode, count, w->gf);
+    w->ncode = count;
+    return DD_OK;
+}
+
+/* The words below 64 neighbours: bit k. */
+static const uint64_t w_bit_words[64] = {
+#define W_B4(k) 1ull << (k), 1ull << ((k) + 1), 1ull << ((k) + 2), 1ull << ((k) + 3)
+#define W_B16(k) W_B4(k), W_B4((k) + 4), W_B4((k) + 8), W_B4((k) + 12)
+    W_B16(0), W_B16(16), W_B16(32), W_B16(48)
+#undef W_B16
+#undef W_B4
+};
+
+/* Empties the table, sized for about `expect` records. */
+dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
+{
+    void *fs = w->fs;
+    dd_status s = dd_gen_table_reset(&fs, &w->fs_alloc, &w->fs_gen, &w->fs_mask, 2 * expect, sizeof *w->fs);
+    w->fs = fs;
+    w->fs_shift = 64u - (uint32_t)__builtin_popcount(w->fs_mask);
+    w->kword = w->n < 64 ? w_bit_words : w->code;   /* made for n + 1 (dd_wrap_fill) */
+    return s;
+}
+
+/* Doubles the table and enters the records again. */
+static dd_status w_ftab_grow(struct dd_wrap *w)
+{
+    dd_status s = w_ftab_reset(w, w->fs_mask + 1);
+    for (uint32_t r = 0; s == DD_OK && r < w->nrec; r++) {
+        uint64_t k = w_fkey(w, w->tri[r][0], w->tri[r][1], w->tri[r][2]);
+        *w_fprobe(w, k) = (struct w_fslot){k, r, w->fs_gen};
+    }
+    return s;
+}
+
+dd_status w_grow_recs(struct dd_wrap *w, size_t more)
+{
+    if (w->nrec + more > w->cap_rec) {
+        uint32_t cap = w->cap_rec ? w->cap_rec : 256;
+        while (cap < w->nrec + more) cap *= 2;
+        if (!w_grow((void **)&w->tri, cap, sizeof *w->tri) || !w_grow((void **)&w->own, cap, sizeof *w->own) ||
+            !w_grow((void **)&w->out, cap, sizeof *w->out) || !w_grow((void **)&w->closed, cap, sizeof *w->closed) ||
+            !w_grow((void **)&w->stack, cap, sizeof *w->stack))
+            return DD_ERR_NOMEM;
+        w->cap_rec = cap;
+    }
+    dd_status s = DD_OK;
+    while (s == DD_OK && 2 * (w->nrec + more) > w->fs_mask + 1) s = w_ftab_grow(w);
+    return s;
+}

@@ -1,0 +1,341 @@
+/*
+ * scan.c -- the certified scans of the gift wrap.
+ */
+#include "wrap/wrap_int.h"
+
+/* Lexicographic ranks of the neighbours (w->lexr), made the first time
+ * the perturbation is asked this deletion: index sort by dd_lex_cmp,
+ * insertion while short, else bottom-up merges through w->tmp.          */
+static void w_lex_ranks(struct dd_wrap *w)
+{
+    const uint32_t n = w->n;
+    const double *const *pt = w->pt;
+    uint32_t *a = w->tmp, *b = w->lexr;
+    for (uint32_t k = 0; k < n; k++) a[k] = k;
+    for (uint32_t i = 1; i < n && n <= 32; i++) {
+        uint32_t v = a[i], j = i;
+        for (; j > 0 && dd_lex_cmp(pt[a[j - 1]], pt[v]) > 0; j--) a[j] = a[j - 1];
+        a[j] = v;
+    }
+    for (uint32_t width = 1; n > 32 && width < n; width *= 2) {
+        for (uint32_t lo = 0; lo < n; lo += 2 * width) {
+            uint32_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
+            uint32_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi) b[k++] = dd_lex_cmp(pt[a[j]], pt[a[i]]) < 0 ? a[j++] : a[i++];
+            while (i < mid) b[k++] = a[i++];
+            while (j < hi) b[k++] = a[j++];
+        }
+        uint32_t *x = a;
+        a = b;
+        b = x;
+    }
+    if (a == w->lexr) memcpy(w->tmp, a, n * sizeof *a);
+    for (uint32_t k = 0; k < n; k++) w->lexr[w->tmp[k]] = k;
+    w->lex_ok = 1;
+}
+
+/* dd_insphere_symbolic on local numbers: the perturbation's sign for y
+ * and the positively oriented cell lv, when their in-sphere determinant
+ * is exactly 0 (+1 inside).  The same rule: of the five points, the two
+ * lexicographically largest in turn; y itself gives -1, a corner the
+ * orientation of the cell with y in its place, if not 0.  The ranks are
+ * w_lex_ranks', the orientations w_orient's (with integer lifts exact in
+ * doubles, else filtered): the orientations and the order of
+ * dd_insphere_symbolic, whose five-point sort and exact calls were most
+ * of a cospherical deletion.                                             */
+static int w_symbolic_from(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y, int from)
+{
+    if (!w->lex_ok) w_lex_ranks(w);
+    const uint32_t *r = w->lexr, rk[5] = {r[lv[0]], r[lv[1]], r[lv[2]], r[lv[3]], r[y]};
+    int top[2] = {0, 0};
+    for (int i = 1; i < 5; i++)
+        if (rk[i] > rk[top[0]]) top[0] = i;
+    top[1] = top[0] == 0 ? 1 : 0;
+    for (int i = 0; i < 5; i++)
+        if (i != top[0] && rk[i] > rk[top[1]]) top[1] = i;
+    for (int step = from; step < 2; step++) {
+        if (top[step] == 4) return -1;               /* y itself */
+        uint32_t v[4] = {lv[0], lv[1], lv[2], lv[3]};
+        v[top[step]] = y;
+        double N[4];
+        w_normal(w, v[0], v[1], v[2], N);
+        int o = w_orient(w, pr, v[0], v[1], v[2], N, v[3]);
+        if (o != 0) return o;
+    }
+    return -1;
+}
+
+static inline int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
+{
+    return w_symbolic_from(w, pr, lv, y, 0);
+}
+
+/* The sign of K . P, exactly, for integer entries (w->kexact: |K[i]| <=
+ * 72m^4 < 2^51, |P[i]| <= 3m^2 < 2^24).                                  */
+static int w_sign_kp(const double K[4], const double P[4])
+{
+#if defined(__SIZEOF_INT128__)
+    __int128 s = 0;
+    for (int i = 0; i < 4; i++) s += (__int128)(int64_t)K[i] * (int64_t)P[i];
+    return (s > 0) - (s < 0);
+#else
+    (void)K; (void)P;
+    return 0;                                      /* not reached: W_INT_K */
+#endif
+}
+
+/* Whether point y is in conflict with fill cell (a, b, c, p) (local
+ * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
+ * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
+ * check, else the exact perturbed test.                               */
+__attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4],
+                                                       const double K[4], const double P[4], uint32_t y)
+{
+    const double *const *pt = w->pt;
+    if (w->kexact) {
+        const int sg = w->exact ? 0 : w_sign_kp(K, P);
+        return sg ? sg < 0 : w_symbolic(w, pr, lv, y) > 0;
+    }
+    w->nexact++;
+    return dd_insphere_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
+}
+
+/* Whether finite facet (a, b, c), with no point beyond it but some in its
+ * plane, is a facet of the hull: no point of its plane in the perturbed
+ * circle of a, b, c (the conflict test of the infinite cell (a, b, c,
+ * INF), as in the conflict DT); else W_BAIL.  The points beyond none, the
+ * cell on the facet's positive side can only be infinite; the check keeps
+ * the wrap from building on a hull triangle that the coplanar rules of the
+ * perturbation would split otherwise.                                    */
+static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
+{
+    const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], NULL};
+    for (uint32_t k = 0; k < w->n; k++) {
+        if (k == a || k == b || k == c) continue;
+        if (dd_points_conflict(pr, cell, 3, -1, w->pt[k])) return W_BAIL;
+    }
+    return W_NONE;
+}
+
+
+
+/* The exact scan: one pass keeping the best point so far, each test
+ * filtered (bounds of w_lift) and else decided by the exact perturbed
+ * predicates.  Its branches depend on the data, which costs where the
+ * pattern is new: wrap_scan runs it only when the fast scan cannot
+ * certify its answer.  It starts from `best` (W_NONE: none yet); with
+ * `unsure_only` it takes the points surely beyond as already compared
+ * (the guess's minimum, best) and decides only those of unsure
+ * orientation (see wrap_guess).                                         */
+uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                                const double m[6], uint32_t best, int unsure_only, const uint32_t *ks,
+                                uint32_t nk)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double N[4], K[4] = {0, 0, 0, 0}, P[4];
+    w_normal_of(m, N);
+    const double oerr = w->oerr;
+    uint32_t cell[4] = {a, b, c, best};
+    if (best != W_NONE) {
+        w_row_o(L, best, A, N, P);
+        w_cofactors(K, P, m);
+    }
+    int zero = 0;
+    const int skip = unsure_only && !ks;            /* to the unsure points, four at a time */
+    for (uint32_t i = skip ? w_next(w, a, N, 0, 1) : 0; i < nk; i = skip ? w_next(w, a, N, i + 1, 1) : i + 1) {
+        const uint32_t k = ks ? ks[i] : i;
+        if (k == a || k == b || k == c) continue;
+        double o = w_row_o(L, k, A, N, P);
+        if (!(o > oerr)) {
+            if (o < -oerr) continue;
+            w->nexact += !w->oexact;                /* integer orientations: o is exact */
+            int or = w_sign_o(w, pr, o, a, b, c, k);
+            zero |= or == 0;
+            if (or <= 0) continue;
+        } else if (unsure_only) {
+            continue;
+        }
+        if (best != W_NONE && !w_conflicts(w, pr, cell, K, k)) continue;
+        best = cell[3] = k;
+        w_cofactors(K, P, m);
+    }
+    /* No point beyond: for a hull vertex, abc becomes a hull facet, the
+     * cell (a, b, c, infinite), if the points in its plane allow.        */
+    return best == W_NONE && zero ? w_flat_hull(w, pr, a, b, c) : best;
+}
+
+/* orient3d(a, b, c, k) as w_orient has it, A being the lifts of a, and
+ * an unsure o counted for W_EXACT_FROM's budget as w_scan_exact
+ * counts it.                                                            */
+static inline int w_orient_counted(struct dd_wrap *w, dd_pred *pr, const double A[4], const double N[4], uint32_t a,
+                                   uint32_t b, uint32_t c, uint32_t k)
+{
+    double P[4], o = w_row_o(w->lift, k, A, N, P);
+    w->nexact += !w->oexact && !(o > w->oerr || o < -w->oerr);
+    return w_sign_o(w, pr, o, a, b, c, k);
+}
+
+/* The scan for cospherical neighbours (w->cosph): the point beyond abc
+ * that w_symbolic prefers to every other, found with the ranks first.
+ * With y and the best so far, x, both beyond abc, w_symbolic's first
+ * step looks at the largest of the five ranks:
+ *  - y's: y is outside (x stays); x's: y is inside (orient3d(a, b, c, y)
+ *    > 0 in x's place), so among points ranked above every corner the
+ *    least ranked wins, and any point ranked below the top corner beats
+ *    them all;
+ *  - the top corner's, say a's: the sign of orient3d(y, b, c, x), which
+ *    is orient3d(c, b, x, y) (in general orient3d(u0, u1, x, y) with u0,
+ *    u1 the other corners, in the order below): one evaluation against
+ *    the normal of the plane of u0, u1, x, kept until x changes; 0 (five
+ *    points on one circle) goes to w_symbolic's second step (the first
+ *    is this orientation: cosphere degree 64-95, the vertices with many
+ *    circles took 2.4x a re-insertion, two fifths in w_symbolic).
+ * So a first pass takes the points ranked below the top corner, and only
+ * if none is beyond does a second take the least ranked of the others.
+ * Each answer is w_symbolic's (the same orientations, exact or filtered
+ * as w_orient's), so the point is the one w_scan_exact finds; at the
+ * cosphere's degree 82 (1.7M instructions a deletion, three quarters in
+ * the exact scan, two fifths in its w_symbolic calls, each making the
+ * normal of a plane through y) a deletion costs less than half of that. */
+static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                                const double N[4])
+{
+    if (!w->lex_ok) w_lex_ranks(w);
+    double *const *L = w->lift;
+    const uint32_t *rk = w->lexr, n = w->n;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    uint32_t lv[4] = {a, b, c, W_NONE};
+    int top = 0;
+    for (int i = 1; i < 3; i++)
+        if (rk[lv[i]] > rk[lv[top]]) top = i;
+    const uint32_t rtop = rk[lv[top]], u0 = lv[(top + 2) % 3], u1 = lv[(top + 1) % 3];
+    double Nx[4];
+    int zero = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        if (rk[k] >= rtop || k == u0 || k == u1) continue;
+        int o = w_orient_counted(w, pr, A, N, a, b, c, k);
+        zero |= o == 0;
+        if (o <= 0) continue;
+        if (lv[3] != W_NONE) {
+            int s = w_orient(w, pr, u0, u1, lv[3], Nx, k);
+            if (s == 0) s = w_symbolic_from(w, pr, lv, k, 1);   /* its first step: this 0 */
+            if (s <= 0) continue;
+        }
+        lv[3] = k;
+        w_normal(w, u0, u1, k, Nx);
+    }
+    if (lv[3] != W_NONE) return lv[3];
+    uint32_t best = W_NONE;
+    for (uint32_t k = 0; k < n; k++) {
+        if (rk[k] <= rtop || (best != W_NONE && rk[k] > rk[best])) continue;
+        int o = w_orient_counted(w, pr, A, N, a, b, c, k);
+        zero |= o == 0;
+        if (o > 0) best = k;
+    }
+    return best == W_NONE && zero ? w_flat_hull(w, pr, a, b, c) : best;
+}
+
+/* The fast scan, without data-dependent branches: o and t for every
+ * point, the minimum of t/o in doubles, then a check of that candidate x
+ * with the filtered determinant w(x, p) for every other point p on the
+ * positive side.  The check proves the answer (every such p surely
+ * outside the sphere of a, b, c, x; every orientation sure); when it
+ * cannot, w_scan_exact decides.  Rounding (or overflow) in t/o can
+ * only make the check fail, never pass a wrong point.  (Written with
+ * SSE2 vectors, two points at a time, it ran 10% slower: register
+ * spills.)                                                               */
+static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double m[6], N[4], T[4], K[4];
+    w_pencil(w, a, b, c, m, N, T);
+    if (w->cosph) return wrap_scan_cosph(w, pr, a, b, c, N);   /* every t/o ties */
+    const double oerr = w->oerr, ierr = w->ierr;
+    const uint32_t n = w->n;
+    /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
+     * o(c) are 0 up to less than oerr (their exact value is 0), so each
+     * counts once among the unsure orientations, never as a candidate. */
+    double *o = w->o;
+    int unsure = 0;
+    double lo = 1.0 / 0.0;
+    uint32_t best = W_NONE;
+    for (uint32_t k = 0; k < n; k++) {
+        double P[4], ok = w_row_o(L, k, A, N, P), tk = w_t(P, T);
+        int pos = ok > oerr;
+        unsure += !pos & (ok >= -oerr);
+        o[k] = pos ? ok : -1.0;                 /* > oerr: a candidate */
+        double lam = pos ? tk / ok : 1.0 / 0.0;
+        int better = lam < lo;
+        lo = better ? lam : lo;
+        best = better ? k : best;
+    }
+    if (unsure != 3 || best == W_NONE) return w_scan_exact(w, pr, a, b, c, m, W_NONE, 0, NULL, w->n);
+    double X[4];
+    w_row_o(L, best, A, N, X);
+    w_cofactors(K, X, m);
+    o[best] = -1.0;                             /* not tested against itself */
+    int bad = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        double P[4];
+        w_row_o(L, k, A, N, P);
+        double det = w_t(P, K);
+        bad |= (o[k] > oerr) & !(det > ierr);
+    }
+    if (!bad) return best;
+    return w->shifted || n < DD_SHIFT_FROM ? w_scan_exact(w, pr, a, b, c, m, W_NONE, 0, NULL, w->n) : W_SHIFT;
+}
+
+/* The fill cell's apex on finite open facet (a, b, c) by the certified
+ * scans: wrap_scan, once more on shifted lifts when it asks for them
+ * (W_SHIFT), and the infinite vertex (number n) for a facet of a hull
+ * vertex's cavity with no point beyond it.                              */
+uint32_t w_scan_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, int on_hull)
+{
+    uint32_t p = wrap_scan(w, pr, a, b, c);
+    if (p == W_SHIFT) {
+        w_shift(w);
+        p = wrap_scan(w, pr, a, b, c);
+    }
+    return p == W_NONE && on_hull ? w->n : p;
+}
+
+/* Whether every neighbour lies on one sphere, exactly: the sphere of a
+ * link triangle's corners and a first point off its plane holds each of
+ * the others (in-sphere 0).  Then every in-sphere determinant of the
+ * scans is 0 (five lifted points of one sphere lie in one hyperplane),
+ * and the scans ask the perturbation alone (wrap_scan_cosph): integer
+ * points of a sphere (the cosphere set), where the exact stages cost
+ * most of a deletion otherwise.  The tests are the scans' (w_orient, and
+ * the lifted determinant filtered by ierr, else dd_insphere; with
+ * integer lifts both exact), so generic points stop at the first one.  */
+int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
+{
+    double *const *L = w->lift;
+    const double *const *pt = w->pt;
+    const uint32_t n = w->n;
+    for (size_t r = 0; r < nlink; r++) {
+        const uint32_t a = w->tri[r][0], b = w->tri[r][1], c = w->tri[r][2];
+        if (a == n || b == n || c == n) continue;       /* through the infinite vertex */
+        const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+        double m[6], N[4], T[4], K[4], P[4];
+        w_pencil(w, a, b, c, m, N, T);
+        uint32_t e = W_NONE;
+        for (uint32_t k = 0; k < n && e == W_NONE; k++)
+            if (k != a && k != b && k != c && w_orient(w, pr, a, b, c, N, k) != 0) e = k;
+        if (e == W_NONE) return 0;
+        w_row_o(L, e, A, N, P);
+        w_cofactors(K, P, m);
+        for (uint32_t k = 0; k < n; k++) {
+            if (k == a || k == b || k == c || k == e) continue;
+            w_row_o(L, k, A, N, P);
+            double det = w_t(P, K);
+            if (det > w->ierr || det < -w->ierr) return 0;
+            if (w->kexact ? !w->exact && w_sign_kp(K, P) != 0 : dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
+                return 0;
+        }
+        return 1;
+    }
+    return 0;
+}

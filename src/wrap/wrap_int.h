@@ -1,0 +1,521 @@
+/*
+ * wrap_int.h -- the gift wrap's internals, shared by the files of src/wrap/.
+ */
+#ifndef DD_WRAP_INT_H
+#define DD_WRAP_INT_H
+
+#include "wrap/wrap.h"
+#include "delete/qsmall.h"
+
+#include <math.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#define W_AVX2 1
+#endif
+
+#define W_NONE UINT32_MAX
+#define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
+#define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
+#define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
+#define W_BEHIND (UINT32_MAX - 4) /* single precision: every point behind     */
+
+/* On degenerate cavities the filters abstain on most tests and a wrap
+ * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
+ * ~1 us each), where the conflict DT makes far fewer: from 40 neighbours
+ * on, wrapping declines once its exact tests pass 2n (then, warm,
+ * cosphere degree [48,64): 719 us wrapping against 383 us for
+ * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
+ * The budget counts the tests of a guess's proof too, but what it counts
+ * is their cost (w_spent): a test the wrap's own filters leave to the
+ * predicates is mostly settled by the predicates' filters, at about a
+ * sixteenth of the cost of their exact stages.  So w_spent counts the
+ * tests past the predicates' filters, and the others one in 16.  On the
+ * moment curve, n = 2048, the proof leaves 6 200-7 400 tests to the
+ * predicates and 1 600-2 300 of them reach the exact stages: counted
+ * whole, they declined every deletion (to GRR: 2.9-4.8 ms), where the
+ * wrap takes 1.2-2.6 ms; at n = 1024, 1 700 tests, 95 past the filters.
+ * From 40 neighbours on, a refuted guess declines too, without the scans:
+ * such cavities are nearly degenerate, where the scans make O(n) exact
+ * tests a cell (moment n = 272: refuted after ~140 exact tests, then
+ * about 400 more, ~1 us each, before the budget declined anyway: 370-540
+ * us against 200-250 us declining at once).  Neither holds for wholly
+ * cospherical neighbours (w_cospherical): their in-sphere tests are the
+ * perturbation's alone, cheap and not counted.                          */
+#define W_EXACT_FROM 40
+
+/* The narrow guesses (w_guess_narrow), only where the link has a hub:
+ * each point keeps up to W_ADJ_CAP known neighbours; one with more is a
+ * hub (W_ADJ_FULL), whose list is not kept.  A hub has W_ADJ_CAP + 1
+ * link neighbours, so there are none below W_NARROW_FROM neighbours.
+ * On uniform points (bunny, degree 24-64) the link has no hub and the
+ * fill's new edges are many: narrow guesses taken there regardless were
+ * refuted for half the deletions, 2.4 -> 5.3 times a re-insertion.     */
+#define W_ADJ_CAP 32
+#define W_ADJ_FULL (W_ADJ_CAP + 1)
+#define W_NARROW_FROM (W_ADJ_CAP + 2)
+
+/* The lean wide guess from this many neighbours on (w_guess_lean_avx2). */
+#define W_LEAN_FROM 24
+
+/* wrap_guess's *unsure when it did not count: the lean guess, and the
+ * single-precision one (whose point is not yet known beyond the facet). */
+enum { W_UNCOUNTED = -1, W_SINGLE = -2 };
+
+struct w_fslot {
+    uint64_t key;
+    uint32_t rec, gen;            /* used iff gen == w->fs_gen            */
+};
+
+struct dd_wrap {
+    uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
+    const double **pt;            /* local -> point                       */
+    double *lift[4];              /* lift[i][k]: coordinate i of
+                                     (x_k - q, |x_k - q|^2), rounded      */
+    double *o;                    /* scan scratch, per local number       */
+    uint32_t *tmp;                /* w_lex_ranks' scratch                 */
+    uint32_t *lexr;               /* lexicographic rank, per local number */
+    int lex_ok;                   /* lexr made for this deletion          */
+    double ierr, oerr;            /* the filters' error bounds (+inf: off) */
+    double m;                     /* max |x_k - q_k| over the neighbours  */
+    const double *q;
+    int shifted;                  /* the shifted lifts were tried         */
+    int cosph;                    /* every neighbour on one sphere (the
+                                     scans' in-sphere tests are all 0)   */
+    int exact;                    /* integer lifts: every evaluation of
+                                     the scans is exact (see w_lift)     */
+    int oexact;                   /* every orientation o is exact         */
+    int kexact;                   /* the cofactors K are exact integers
+                                     (w_sign_kp)                          */
+    int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
+    int has_fma;                  /* the CPU has FMA (w_guess_f32_avx2)     */
+    int lean;                     /* the wide guess is the lean one       */
+    int flift_ok;                 /* the float lifts may be used
+                                     (w_flift): the lean guess and the hull
+                                     step are made in single precision first */
+    int f32;                      /* the lean guess is (w_guess_f32): off
+                                     after a refuted guess                */
+    float *flift[4];              /* the lifts in units of m (m^2 for the
+                                     lift), rounded to floats             */
+    double f32_sn, f32_st, f32_st3;   /* the scales of N, of T (xyz) and
+                                     of T (lift) to those units           */
+    uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
+                                     and abstained (made in doubles)      */
+    uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
+                                     made in doubles (w_scan_inf)      */
+    int f32_ready;                /* flift made for this deletion (w_flift) */
+#ifdef DD_TEST_BUILD
+    int f32_spoil;                /* answer a wrong point (tests)         */
+#endif
+    uint32_t nexact;              /* tests the filters left to the exact
+                                     predicates, this deletion            */
+    uint64_t unf0;                /* the predicates' count of tests past
+                                     their filters when the wrap began   */
+    uint32_t *loc, cap_loc;       /* vertex id -> local number, valid for
+                                     this deletion's neighbours only      */
+    /* the facet table (w_fslot_of): triangle -> its facet record        */
+    struct w_fslot *fs;
+    uint32_t fs_alloc, fs_mask, fs_gen, fs_shift;
+    uint64_t *code;               /* code[k]: local number k's word (w_fkey),
+                                     made for k < ncode                   */
+    uint32_t ncode;
+    const uint64_t *kword;        /* the keys' words (w_fkey): w_bit_words,
+                                     or code from 64 neighbours on        */
+    uint32_t gf[3];               /* alpha^ncode, alpha^3ncode, alpha^5ncode */
+    /* facet records */
+    uint32_t (*tri)[3];           /* oriented triangle, local numbers     */
+    uint32_t *own;                /* fill facet 4k+j (facet j of the k-th
+                                     fill cell) on the other side, or
+                                     W_NONE for a link triangle           */
+    uint32_t *out;                /* a link triangle's mesh facet outside
+                                     the cavity                           */
+    uint8_t *closed;
+    uint32_t *stack, nrec, cap_rec;
+    uint32_t *lcell, cap_lcell;   /* the k-th fill cell's local numbers,
+                                     4k..4k+3                             */
+    uint32_t ncell0;              /* d->t->ncell when the wrap began      */
+    uint32_t *keep;               /* the star's cells as they were, 8
+                                     words each (w_keep_star)             */
+    size_t cap_keep;
+    /* the narrow guesses (w_guess_narrow) */
+    int narrow;                   /* DD_GUESS_*: where this guess's
+                                     candidates come from                 */
+    uint32_t *adj;                /* adj[W_ADJ_CAP k ..]: known neighbours
+                                     of k, in DT(S \ q)                   */
+    uint8_t *nadj;                /* their number; W_ADJ_FULL: a hub      */
+    uint32_t *seen, stamp;        /* seen[k] == stamp: k is a candidate   */
+    uint32_t *cand;               /* the candidates of one facet          */
+    int hub_last;                 /* the last link asked had a hub        */
+    uint32_t lead;                /* local number of the least vertex id  */
+    int narrower;                 /* test build: shortest lists only      */
+};
+
+enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
+
+/* wrap.c */
+/* realloc *p to n elements of `size` bytes; 0 (and *p as it was) when out of memory. */
+int w_grow(void **p, size_t n, size_t size);
+
+/* ftab.c: the facet table */
+/* Makes the code words of local numbers below count (< DD_WRAP_CODE_LEN), once. */
+dd_status w_code_reserve(struct dd_wrap *w, uint32_t count);
+/* Empties the facet table, sized for about `expect` records; picks the keys' words. */
+dd_status w_ftab_reset(struct dd_wrap *w, size_t expect);
+/* Room for `more` more facet records, in the arrays and in the table. */
+dd_status w_grow_recs(struct dd_wrap *w, size_t more);
+
+/* lift.c: lifts and filter bounds */
+/* Lifts the neighbours relative to q and sets the filters' bounds and integer modes. */
+void w_lift(struct dd_wrap *w, const double *q);
+/* Makes the float lifts and their scales (w_flift). */
+void w_lift_f32(struct dd_wrap *w);
+/* Switches to the shifted lifts when their bound is tighter (1), else keeps the lifts (0). */
+int w_shift(struct dd_wrap *w);
+
+#ifdef W_AVX2
+/* simd.c: the AVX2 passes (called only when w->avx2) */
+/* The wide guess over the n lifts: least t/o beyond the facet, W_TIE, W_NONE; *unsure as wrap_guess. */
+uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4], double oerr,
+                      int *unsure);
+/* The wide guess without the count of unsure orientations (w->lean). */
+uint32_t w_guess_lean_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4],
+                           double oerr);
+/* The lean guess in single precision: a point, W_BEHIND, or W_NONE (abstains). */
+uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4]);
+/* w_next_to with AVX2: the first k >= from, k < n, unsure (or not surely behind); n if none. */
+uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], double oerr, uint32_t from,
+                     int unsure);
+/* w_all_behind with AVX2. */
+int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y, uint32_t z, const double N[4],
+                      double oerr);
+/* The hull step's point around edge ab in single precision, or W_NONE (a guess). */
+uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b);
+#endif
+
+/* scan.c: the certified scans */
+/* The apex of finite open facet (a, b, c) by the certified scans; the infinite vertex on the hull. */
+uint32_t w_scan_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, int on_hull);
+/* The exact scan from `best` over ks[0..nk) (NULL: 0..nk); unsure_only: those of unsure orientation. */
+uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
+                      uint32_t best, int unsure_only, const uint32_t *ks, uint32_t nk);
+/* w_conflicts where the filter abstains: exact, or the perturbation on local numbers. */
+int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], const double P[4],
+                     uint32_t y);
+/* Whether every neighbour lies on one sphere, exactly (the first nlink records: the link). */
+int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink);
+
+/* hull.c: the hull step */
+/* The apex of open facet (a, b, INF) (certified), W_NONE, or W_BAIL. */
+uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b);
+/* Whether every point before `end` but x, y, z is surely behind the plane of normal N through y. */
+int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end);
+
+/* guess.c: the guesses */
+/* The guessed apex of finite open facet (a, b, e), pencil m, N, T; *single: chosen in floats. */
+uint32_t w_guess_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t e, const double m[6],
+                      const double N[4], const double T[4], int on_hull, int *single);
+/* Records edge (k, v) of a new fill cell among the known neighbours. */
+void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v);
+
+/* run.c: the wrap */
+/* Keeps the star's cells as they are, before w_run writes the fill over them. */
+dd_status w_keep_star(dd_del *d, struct dd_wrap *w);
+/* Drops the fill cells made so far: the mesh as it was. */
+void w_drop_fill(dd_del *d, struct dd_wrap *w);
+/* Opens the link triangles as the first records; *start: the record to wrap from. */
+dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub);
+/* The wrap from record `start`, guessing or scanning; *outcome: W_DONE, W_DECLINED, W_WRONG_GUESS. */
+dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome);
+
+/* The fill cell on the positive side of open facet (a, b, c): the point p
+ * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
+ * other such point (perturbed as CGAL does).  The spheres through a, b, c
+ * are ordered along their pencil, so the point is a minimum; W_NONE if no
+ * point is surely on the positive side (and none on abc's plane); if
+ * none is beyond but some lie on the plane, what w_flat_hull says.
+ *
+ * With rows B = L[b]-L[a], C = L[c]-L[a] (see w_lift) and P = L[p]-L[a],
+ * w(X, P) = det4(B, C, X, P) is the in-sphere determinant of a, b, c, x, p
+ * (negative: p inside the sphere of the positively oriented a, b, c, x).
+ * Its cofactors along the last row, K(X), give w(X, P) = K(X) . P; they
+ * are made from the six 2x2 minors mij of B and C, whose three first
+ * ones also give orient3d(a, b, c, p) = o(P) = n . P, n = (m12, -m02,
+ * m01).  The form w is antisymmetric with kernel span(B, C), so with
+ * N = (n, 0) and t(P) = K(N) . P,
+ *     w(X, P) |n|^2 = o(X) t(P) - t(X) o(P),
+ * and for x, p on the positive side, p is inside the sphere of a, b, c, x
+ * iff t(p)/o(p) < t(x)/o(x): the fill cell's point minimises t/o.      */
+#ifdef __SSE2__
+/* w_cofactors of X = (x01, x23), in registers: the same products, sums
+ * and signs (bit for bit) two at a time.  w_run makes K and T for each
+ * cell, scalar these took 5% of a deletion at uniform degree 48-63
+ * (callgrind).                                                         */
+static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const double m[6])
+{
+    enum { M01, M02, M03, M12, M13, M23 };
+    const __m128d neg0 = _mm_set_pd(0.0, -0.0);
+    __m128d a = _mm_mul_pd(_mm_shuffle_pd(x01, x01, 1), _mm_set1_pd(m[M23]));
+    __m128d b = _mm_mul_pd(_mm_unpacklo_pd(x23, x23), _mm_setr_pd(m[M13], m[M03]));
+    __m128d c = _mm_mul_pd(_mm_unpackhi_pd(x23, x23), _mm_setr_pd(m[M12], m[M02]));
+    _mm_storeu_pd(K, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
+    a = _mm_mul_pd(_mm_unpacklo_pd(x01, x01), _mm_setr_pd(m[M13], m[M12]));
+    b = _mm_mul_pd(_mm_unpackhi_pd(x01, x01), _mm_setr_pd(m[M03], m[M02]));
+    c = _mm_mul_pd(_mm_shuffle_pd(x23, x23, 1), _mm_set1_pd(m[M01]));
+    _mm_storeu_pd(K + 2, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
+}
+#endif
+
+static inline void w_cofactors(double K[4], const double X[4], const double m[6])
+{
+#ifdef __SSE2__
+    w_cofactors_v(K, _mm_loadu_pd(X), _mm_loadu_pd(X + 2), m);
+#else
+    enum { M01, M02, M03, M12, M13, M23 };
+    K[0] = -(X[1] * m[M23] - X[2] * m[M13] + X[3] * m[M12]);
+    K[1] = X[0] * m[M23] - X[2] * m[M03] + X[3] * m[M02];
+    K[2] = -(X[0] * m[M13] - X[1] * m[M03] + X[3] * m[M01]);
+    K[3] = X[0] * m[M12] - X[1] * m[M02] + X[2] * m[M01];
+#endif
+}
+
+/* The six 2x2 minors of rows B and C, in w_cofactors' order.           */
+static inline void w_minors(double m[6], const double B[4], const double C[4])
+{
+#ifdef __SSE2__
+    /* two at a time, as w_cofactors: the same products and differences */
+    const __m128d b01 = _mm_loadu_pd(B), b23 = _mm_loadu_pd(B + 2), c01 = _mm_loadu_pd(C), c23 = _mm_loadu_pd(C + 2);
+    const __m128d b12 = _mm_shuffle_pd(b01, b23, 1), c12 = _mm_shuffle_pd(c01, c23, 1);
+    _mm_storeu_pd(m, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(b01, b01), c12),
+                                _mm_mul_pd(b12, _mm_unpacklo_pd(c01, c01))));
+    _mm_storeu_pd(m + 2, _mm_sub_pd(_mm_mul_pd(b01, _mm_shuffle_pd(c23, c23, 1)),
+                                    _mm_mul_pd(_mm_shuffle_pd(b23, b23, 1), c01)));
+    _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)),
+                                    _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
+#else
+    m[0] = B[0] * C[1] - B[1] * C[0];
+    m[1] = B[0] * C[2] - B[2] * C[0];
+    m[2] = B[0] * C[3] - B[3] * C[0];
+    m[3] = B[1] * C[2] - B[2] * C[1];
+    m[4] = B[1] * C[3] - B[3] * C[1];
+    m[5] = B[2] * C[3] - B[3] * C[2];
+#endif
+}
+
+/* The normal N of the minors' plane: o(P) = N . P is orient3d.        */
+static inline void w_normal_of(const double m[6], double N[4])
+{
+    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
+}
+
+/* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
+ * and its orientation o(P) = N . P: the one evaluation of o that every
+ * scan uses, so that the orientation filter's bound (w_lift) covers each
+ * (the AVX2 guess repeats these operations lane by lane).                */
+static inline double w_row_o(double *const *L, uint32_t k, const double A[4], const double N[4], double P[4])
+{
+    for (int i = 0; i < 4; i++) P[i] = L[i][k] - A[i];
+    return P[0] * N[0] + P[1] * N[1] + P[2] * N[2];
+}
+
+/* t(P) = T . P (see w_cofactors).                                       */
+static inline double w_t(const double P[4], const double T[4])
+{
+    return P[0] * T[0] + P[1] * T[1] + P[2] * T[2] + P[3] * T[3];
+}
+
+/* Facet (a, b, c)'s pencil: minors m of B, C, the normal N (o(P) = N . P)
+ * and T (t(P) = T . P), with rows taken from a.                         */
+static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double m[6],
+                            double N[4], double T[4])
+{
+    double *const *L = w->lift;
+    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
+    double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
+    double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
+    w_minors(m, B, C);
+#ifdef __SSE2__
+    /* N in registers: written in scalars (w_normal_of) and read back in
+     * pairs by w_cofactors, a read the store buffer cannot forward from
+     * two writes, which waited for them to commit.  In the bench
+     * (scripts/abbench.sh, uniform, degree >= 32, 2 x 12 runs) deletion /
+     * re-insertion fell by 0.04-0.06, ~3%; the rows B, C and the new
+     * cell's X made in registers as well took it back up by 0.026.      */
+    const __m128d m01 = _mm_loadu_pd(m), m23 = _mm_loadu_pd(m + 2);
+    const __m128d n01 = _mm_xor_pd(_mm_shuffle_pd(m23, m01, 3), _mm_set_pd(-0.0, 0.0));   /* (m3, -m1) */
+    const __m128d n23 = _mm_unpacklo_pd(m01, _mm_setzero_pd());                             /* (m0, 0)   */
+    _mm_storeu_pd(N, n01);
+    _mm_storeu_pd(N + 2, n23);
+    w_cofactors_v(T, n01, n23, m);
+#else
+    w_normal_of(m, N);
+    w_cofactors(T, N, m);
+#endif
+}
+
+/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
+ * (the lift column left out: N does not use it).                       */
+static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
+{
+    double *const *L = w->lift;
+    const double B[3] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a]};
+    const double C[3] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a]};
+    /* w_minors' m[3], m[1], m[0] (w_normal_of), alone: the others unused */
+    N[0] = B[1] * C[2] - B[2] * C[1];
+    N[1] = -(B[0] * C[2] - B[2] * C[0]);
+    N[2] = B[0] * C[1] - B[1] * C[0];
+    N[3] = 0;
+}
+
+/* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
+ * filter's answer, else 0 with integer orientations (o is exact), else
+ * the exact predicate.                                                    */
+static inline int w_sign_o(const struct dd_wrap *w, dd_pred *pr, double o, uint32_t a, uint32_t b, uint32_t c,
+                           uint32_t k)
+{
+    if (o > w->oerr) return 1;
+    if (o < -w->oerr) return -1;
+    return w->oexact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
+}
+
+/* orient3d(a, b, c, k), N being w_normal(a, b, c) (w_sign_o).           */
+static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
+                           const double N[4], uint32_t k)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    double P[4];
+    return w_sign_o(w, pr, w_row_o(L, k, A, N, P), a, b, c, k);
+}
+
+/* (inline: the filter's answer; the rest in w_conflicts_near) */
+static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
+{
+    double *const *L = w->lift;
+    const uint32_t a = lv[0];
+    const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
+    double det = w_t(P, K);
+    if (det > w->ierr) return 0;
+    if (det < -w->ierr) return 1;
+    return w_conflicts_near(w, pr, lv, K, P, y);
+}
+
+/* The first point k >= from whose orientation to the plane of normal N
+ * through a (o evaluated as in the scans) is, with `unsure`, within the
+ * filter's bound (|o| <= oerr), else not surely behind (o not below
+ * -oerr); n if none.  The passes over points nearly all surely on one
+ * side look only at those: w_all_behind and the Jarvis pass of
+ * w_scan_inf (helix n = 4000, degree [64,128): those two scalar
+ * passes were 16% of a deletion, callgrind, 38 instructions a point),
+ * and the guess's exact pass over the unsure points (moment n = 1024,
+ * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
+static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from,
+                                 uint32_t end, int unsure)
+{
+#ifdef W_AVX2
+    if (w->avx2) return w_next_avx2(w->lift, end, a, N, w->oerr, from, unsure);   /* lanes past end: end */
+#endif
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    for (uint32_t k = from; k < end; k++) {
+        double P[4], o = w_row_o(L, k, A, N, P);
+        if (unsure ? !(o > w->oerr) && !(o < -w->oerr) : !(o < -w->oerr)) return k;
+    }
+    return end;
+}
+
+static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
+{
+    return w_next_to(w, a, N, from, w->n, unsure);
+}
+
+static inline uint64_t w_fkey(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+{
+    return w->kword[a] ^ w->kword[b] ^ w->kword[c];
+}
+
+static inline struct w_fslot *w_fprobe(const struct dd_wrap *w, uint64_t key)
+{
+    uint32_t i = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> w->fs_shift);   /* the top bits */
+    while (w->fs[i].gen == w->fs_gen && w->fs[i].key != key) i = (i + 1) & w->fs_mask;
+    return &w->fs[i];
+}
+
+/* The entry of the triangle of key `key` (w_fkey): *found = 1 and its
+ * record, or a new entry (*found = 0) that w_open fills.  The table has
+ * room (w_reserve_recs).                                                */
+static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
+{
+    struct w_fslot *e = w_fprobe(w, key);
+    *found = e->gen == w->fs_gen;
+    if (!*found) *e = (struct w_fslot){key, W_NONE, w->fs_gen};
+    return &e->rec;
+}
+
+/* Room for `more` more facet records, in the arrays and in the table
+ * (inline, the growth apart: w_run asks once a cell, for its three new
+ * facets, where asking at each facet, table and records apart, cost 10
+ * instructions a facet).                                                 */
+static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
+{
+    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
+}
+
+/* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
+ * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
+static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
+{
+    uint32_t r = w->nrec++;
+    w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
+    w->own[r] = own;
+    w->closed[r] = 0;
+    *val = r;
+}
+
+/* The float lifts, made at their first use in a deletion: links where
+ * the narrow guesses hold and no hull step is taken never pay for them. */
+static inline float *const *w_flift(struct dd_wrap *w)
+{
+    if (!w->f32_ready) {
+        w_lift_f32(w);
+        w->f32_ready = 1;
+    }
+    return w->flift;
+}
+
+/* Appends v to k's known neighbours (a hub's list is left as it is).  */
+static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
+{
+    uint8_t c = w->nadj[k];
+    if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
+    w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
+}
+
+/* The known neighbours that link triangle tr gives: each corner the next
+ * one, between finite vertices (inf: the infinite vertex's number; read
+ * from w->n it cost 0.9% of a deletion on the moment curve, n = 1024).  */
+static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
+{
+    for (int j = 0; j < 3; j++) {
+        uint32_t u = tr[j == 2 ? 0 : j + 1];
+        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
+    }
+}
+
+/* The predicates' tests past their filters so far (pred.h).             */
+static inline uint64_t w_unfiltered(const dd_pred *pr)
+{
+    return pr->orient_exact + pr->insphere_exact;
+}
+
+/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
+ * the predicates' filters, and one in 16 of the others left to them.   */
+static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
+{
+    return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
+}
+
+#endif
