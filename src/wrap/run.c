@@ -154,149 +154,256 @@ static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
     return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
 }
 
-/* The wrap from record `start`: each open facet gives the cell on its
- * open side, found by wrap_scan (w_scan_inf through the infinite
- * vertex) or, when `guess`, by wrap_guess.  The cells are made in the
- * mesh and glued to each other there: the k-th (d->fill.a[k]) over the
- * k-th cell of the star, kept in w->keep (w_keep_star), then, past the
- * star, in new cells; a record's `own` is facet 4k+j of the k-th.  Each
- * facet of a new cell goes in d->sew_out for the sew: a link triangle's
- * outside facet, or DD_NONE inside the fill.  Nothing outside the
- * cavity reaches these cells until the sew glues them, and a fill that
- * is not kept is dropped (w_drop_fill): the star written back, the mesh
- * as it was.  Against building it in d->qdt and copying it over the
- * star's cells at the sew (callgrind, 300 deletions): uniform degree
- * 24-31, 18.80M -> 17.91M instructions, bunny degree 32-47 11.63M ->
- * 11.08M (made in free cells: 18.17M, 11.23M; deletion / re-insertion,
- * alternated runs, uniform 24-31: 1.76 -> 1.72).  Made in free cells
- * instead (not over the star), the fill took whatever the free list
- * held, the star's cells went on it, and the cells of a region scattered
- * over memory: deleting 10% of 10^6 uniform points in random order, one
- * after another, cost 15.1 against 9.9 us a deletion.
- * *outcome: W_DONE, W_DECLINED (see dd_wrap_fill), or
- * W_WRONG_GUESS: the guesses did not make a triangulation of the cavity
- * (a facet without a point beyond, a triangle met from the wrong side or
- * by a third cell, a fill too large).                                    */
+/* The cell being made: lv = (a, b, e, p), p the apex of facet abc; the
+ * tests read these arrays in place.                                     */
+struct w_cell {
+    uint32_t lv[4];               /* local numbers                        */
+    double mb[6], N[4], T[4];     /* abc's pencil (w_pencil), guessing    */
+    double K[4];                  /* the cell's cofactors (w_conflicts)   */
+};
+
+/* One wrap in progress (w_run): its course, the open records on
+ * w->stack, and the cell being made (its arrays in *c).                 */
+struct w_wrapping {
+    dd_del *d;
+    struct dd_wrap *w;
+    dd_pred *pr;                  /* the predicates and their counters    */
+    struct w_cell *c;
+    int guess;                    /* guessing, or scanning                */
+    uint32_t ns;                  /* open records on w->stack             */
+    uint32_t nlink;               /* link triangles closed                */
+    size_t room, limit;           /* fill cells reserved; at most         */
+    const char *why;              /* what was wrong (W_WRONG_GUESS)       */
+    uint32_t m;                   /* the new cell in the mesh             */
+    size_t fp;                    /* its index in d->fill                 */
+    uint32_t *tn, *so;            /* its neighbours, its sew_out entries  */
+    int finite;                   /* no corner is the infinite vertex     */
+    int check;                    /* guessed and finite: CHECK it (§7)    */
+    int single;                   /* p chosen in single precision         */
+};
+
+/* The outcome W_WRONG_GUESS, and why: the cells do not make the fill.
+ * For a guess that refutes it; for the scans it is an internal error
+ * (w_run).                                                               */
+static int w_wrong(struct w_wrapping *x, const char *why)
+{
+    x->why = why;
+    return W_WRONG_GUESS;
+}
+
+/* The guessed apex of finite open facet (a, b, e), whose pencil is in x
+ * (docs/gift-wrap.md §6 GUESS): the narrow guess (w->narrow), else the
+ * wide one, its points of unsure orientation decided exactly and
+ * compared with its choice; the infinite vertex for a hull vertex's
+ * facet with every other point behind it.  x->single: the wide guess
+ * chose in single precision (checked in w_make_cell).                   */
+static inline uint32_t w_guess_apex(struct w_wrapping *x, uint32_t a, uint32_t b, uint32_t e)
+{
+    struct dd_wrap *w = x->w;
+    int unsure;
+    uint32_t p = w->narrow ? w_guess_narrow(w, x->pr, a, b, e, x->c->mb, x->c->N, x->c->T) : W_NONE;
+    if (p != W_NONE) return p;
+    p = wrap_guess(w, a, x->c->N, x->c->T, &unsure);
+    x->single = unsure == W_SINGLE;
+    if (unsure > 0 && p != W_TIE) p = w_scan_exact(w, x->pr, a, b, e, x->c->mb, p, 1, NULL, w->n);
+    /* None beyond: the exact scan says so of the unsure points; with
+     * none, the pass itself showed every point but a, b, e surely behind
+     * (its o is w_all_behind's, bit for bit); a pass that did not count
+     * them (the lean and single-precision guesses) leaves that to
+     * w_all_behind.                                                      */
+    if (p == W_NONE && x->d->on_hull && (unsure >= 0 || w_all_behind(w, b, a, e, x->c->N, w->n))) p = w->n;
+    return p;
+}
+
+/* Picks the apex p of the open facet of record r, and sets x's cell to
+ * (a, b, e, p): through the infinite vertex, rotated to (a, b, INF), by
+ * the hull step; else by the guesses or the certified scans.  W_DECLINED
+ * when the exact-test budget is spent (W_EXACT_FROM) or the hull step
+ * bails (W_BAIL); W_WRONG_GUESS when no apex was found.                  */
+static int w_pick_apex(struct w_wrapping *x, uint32_t r)
+{
+    struct dd_wrap *w = x->w;
+    const uint32_t n = w->n, inf = n;
+    uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
+    x->single = 0;
+    if (n >= W_EXACT_FROM && w_spent(w, x->pr) > 2 * (uint64_t)n) return W_DECLINED;
+    if (a == inf || b == inf || e == inf) {
+        while (e != inf) {                          /* rotate: same orientation */
+            const uint32_t a0 = a;
+            a = b; b = e; e = a0;
+        }
+        p = w_scan_inf(w, x->pr, a, b);
+    } else if (x->guess) {
+        w_pencil(w, a, b, e, x->c->mb, x->c->N, x->c->T);
+        p = w_guess_apex(x, a, b, e);
+    } else {
+        p = w_scan_apex(w, x->pr, a, b, e, x->d->on_hull);
+    }
+    if (p >= W_TIE)                                 /* W_TIE, W_BAIL, W_NONE */
+        return p == W_BAIL ? W_DECLINED : w_wrong(x, "an open facet has no point beyond it");
+    x->c->lv[0] = a; x->c->lv[1] = b; x->c->lv[2] = e; x->c->lv[3] = p;
+    x->finite = a != inf && b != inf && e != inf && p != inf;
+    x->check = x->guess && x->finite;
+    return W_DONE;
+}
+
+/* Whether the guessed cell is locally Delaunay across fill facet `own`
+ * (4k + j: facet j of the k-th fill cell, W_NONE: none), docs §3 CHECK:
+ * the apex of a finite cell there is not in conflict with it.  Always
+ * for the scans and infinite cells.                                     */
+static inline int w_delaunay_across(struct w_wrapping *x, uint32_t own)
+{
+    struct dd_wrap *w = x->w;
+    return !(x->check && own != W_NONE && w->lcell[own] != w->n &&
+             w_conflicts(w, x->pr, x->c->lv, x->c->K, w->lcell[own]));
+}
+
+/* Glues facet j of the new cell to the other side of record r: a facet
+ * of an earlier fill cell, or, for a link triangle, nothing yet (the
+ * sew glues d->sew_out's outside facet).                                 */
+static inline void w_glue(struct w_wrapping *x, uint32_t r, uint32_t j)
+{
+    struct dd_wrap *w = x->w;
+    const uint32_t own = w->own[r];
+    if (own != W_NONE) {
+        const uint32_t f = 4 * x->d->fill.a[own >> 2] + (own & 3);
+        x->tn[j] = f;
+        *dd_fn(x->d->t, f) = 4 * x->m + j;
+        x->so[j] = DD_NONE;
+    } else {
+        x->tn[j] = DD_NONE;
+        x->so[j] = w->out[r];
+        x->nlink++;
+    }
+}
+
+/* Room for one more fill cell (d->fill, the mesh, d->sew_out, lcell) and
+ * for its three new facet records.                                     */
+static dd_status w_reserve_cell(struct w_wrapping *x)
+{
+    if (x->d->fill.n == x->room) {
+        x->room *= 2;
+        dd_status s = w_reserve_fill(x->d, x->w, x->d->fill.n, x->room);
+        if (s != DD_OK) return s;
+    }
+    return w_reserve_recs(x->w, 3);
+}
+
+/* Makes x's cell in the mesh, the next fill cell: over the next star
+ * cell, past the star in a new one (the star is in w->keep), and closes
+ * the facet of record r with it (facet 3, opposite the apex).  A guessed
+ * finite cell gets its cofactors K, and must have a single-precision
+ * apex surely beyond its facet and be locally Delaunay across r; else,
+ * or when the fill outgrows O(n^2) cells, W_WRONG_GUESS.               */
+static int w_make_cell(struct w_wrapping *x, uint32_t r)
+{
+    dd_del *d = x->d;
+    struct dd_wrap *w = x->w;
+    const uint32_t *lv = x->c->lv, *gid = d->order.a;
+    x->fp = d->fill.n;
+    if (x->fp >= x->limit) return w_wrong(x, "the fill does not close");
+    x->m = x->fp < d->star.n ? d->star.a[x->fp] : dd_new_cell(d->t);
+    d->fill.a[d->fill.n++] = x->m;                  /* at once: w_drop_fill */
+    uint32_t *tv = dd_tv(d->t, x->m);
+    x->tn = dd_tn(d->t, x->m);
+    x->so = d->sew_out.a + 4 * x->fp;
+    for (int i = 0; i < 4; i++) {
+        tv[i] = gid[lv[i]];                         /* gid[n] = DD_INF */
+        w->lcell[4 * x->fp + i] = lv[i];
+    }
+    if (w->narrow && x->finite) {
+        w_adj_edge(w, lv[3], lv[0]);
+        w_adj_edge(w, lv[3], lv[1]);
+        w_adj_edge(w, lv[3], lv[2]);
+    }
+    if (x->check) {
+        double *const *L = w->lift;
+        const uint32_t a = lv[0], p = lv[3];
+        const double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
+        w_cofactors(x->c->K, X, x->c->mb);
+        /* o as w_row_o has it; the other guesses' apexes are beyond already */
+        if (x->single && !(X[0] * x->c->N[0] + X[1] * x->c->N[1] + X[2] * x->c->N[2] > w->oerr)) return w_wrong(x, "");
+    }
+    if (!w_delaunay_across(x, w->own[r])) return w_wrong(x, "");
+    w_glue(x, r, 3);
+    return W_DONE;
+}
+
+/* Closes or opens the other three facets of the new cell: a facet whose
+ * triangle has a record closes it (the record open, on the cell's side,
+ * and, guessing, locally Delaunay), else it is opened outwards and
+ * pushed.  W_WRONG_GUESS when a triangle would bound three cells or is
+ * met from the wrong side, or a guess is not locally Delaunay.          */
+static int w_close_or_open(struct w_wrapping *x)
+{
+    struct dd_wrap *w = x->w;
+    const uint32_t *lv = x->c->lv;
+    uint64_t key[3];                                /* facet j's: the cell's less lv[j] */
+    const uint64_t *kw = w->kword, set = kw[lv[0]] ^ kw[lv[1]] ^ kw[lv[2]] ^ kw[lv[3]];
+    for (uint32_t j = 0; j < 3; j++) key[j] = set ^ kw[lv[j]];
+    for (uint32_t j = 0; j < 3; j++) {
+        const uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
+        int found;
+        uint32_t *val = w_fslot_of(w, key[j], &found);
+        if (!found) {
+            x->tn[j] = DD_NONE;
+            x->so[j] = DD_NONE;
+            w->stack[x->ns++] = w->nrec;
+            w_open(w, val, f1, f0, f2, 4 * (uint32_t)x->fp + j);   /* reversed: open outwards */
+            continue;
+        }
+        const uint32_t o = *val;
+        if (w->closed[o]) return w_wrong(x, "a triangle bounds three cells");
+        if (!w_same_turn(w->tri[o], f0, f1)) return w_wrong(x, "a triangle is met from the wrong side");
+        if (!w_delaunay_across(x, w->own[o])) return w_wrong(x, "");
+        w->closed[o] = 1;
+        w_glue(x, o, j);
+    }
+    return W_DONE;
+}
+
+/* Ends the wrap with outcome o: *outcome, but for cells that are not
+ * the fill while scanning, which only a broken triangulation makes:
+ * DD_ERR_INTERNAL, with x->why.                                         */
+static dd_status w_end(const struct w_wrapping *x, int o, int *outcome)
+{
+    if (o == W_WRONG_GUESS && !x->guess) return w_broken(x->d, x->why);
+    *outcome = o;
+    return DD_OK;
+}
+
+/* The wrap from record `start` (docs/gift-wrap.md §3 WRAP): pop an open
+ * facet, pick its apex, make the cell, close or open its other facets;
+ * at the end, every link triangle must be closed.  The k-th fill cell
+ * (d->fill.a[k]) is written over the k-th star cell (kept in w->keep),
+ * past the star in new cells; a record's `own` is facet 4k + j of the
+ * k-th.  Each facet of a cell goes to d->sew_out for the sew: a link
+ * triangle's outside facet, or DD_NONE inside the fill.  Nothing outside
+ * the cavity reaches these cells before the sew, so w_drop_fill undoes
+ * them.  *outcome: W_DONE; W_DECLINED (the budget, or the hull step
+ * bailed); W_WRONG_GUESS (guessing: the cells are not the fill).  While
+ * scanning, cells that are not the fill mean a broken triangulation:
+ * DD_ERR_INTERNAL.  Cost: docs §9.                                      */
 dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome)
 {
-    dd_tri *t = d->t;
-    dd_pred *pr = &d->qdt->pred;                 /* the predicates' counters */
-    const uint32_t n = w->n, inf = n, *gid = d->order.a;
-    size_t room = 4 * (size_t)n + 16;                /* fill cells, grown below */
-    dd_status s = w_reserve_fill(d, w, 0, room);
+    struct w_cell c;
+    struct w_wrapping x = {.d = d, .w = w, .pr = &d->qdt->pred, .c = &c, .guess = guess,
+                           .room = 4 * (size_t)w->n + 16,                  /* grown by w_reserve_cell */
+                           .limit = 8 * (size_t)w->n * w->n + 64};         /* |fill| is O(n^2) */
+    dd_status s = w_reserve_fill(d, w, 0, x.room);
     if (s != DD_OK) return s;
-    *outcome = W_DONE;
-#define W_WRONG(why) do { if (guess) { *outcome = W_WRONG_GUESS; return DD_OK; } return w_broken(d, why); } while (0)
-    uint32_t ns = 0, nlink = 0;
-    double mb[6] = {0}, N[4], T[4], K[4] = {0};     /* guess: the new cell's pencil */
-    w->stack[ns++] = start;
-    size_t limit = 8 * (size_t)n * n + 64;          /* |fill| is O(n^2) */
-    while (ns > 0) {
-        uint32_t r = w->stack[--ns];
+    w->stack[x.ns++] = start;
+    while (x.ns > 0) {
+        const uint32_t r = w->stack[--x.ns];
         if (w->closed[r]) continue;
         w->closed[r] = 1;
-        uint32_t a = w->tri[r][0], b = w->tri[r][1], e = w->tri[r][2], p;
-        int single = 0;                         /* p chosen in single precision */
-        if (n >= W_EXACT_FROM && w_spent(w, pr) > 2 * (uint64_t)n) {
-            *outcome = W_DECLINED;              /* see W_EXACT_FROM */
-            return DD_OK;
-        }
-        if (a == inf || b == inf || e == inf) {
-            while (e != inf) {                  /* rotate: same orientation */
-                uint32_t a0 = a;
-                a = b; b = e; e = a0;
-            }
-            p = w_scan_inf(w, pr, a, b);
-        } else if (guess) {
-            w_pencil(w, a, b, e, mb, N, T);
-            p = w_guess_apex(w, pr, a, b, e, mb, N, T, d->on_hull, &single);
-        } else {
-            p = w_scan_apex(w, pr, a, b, e, d->on_hull);
-        }
-        if (p == W_BAIL) {
-            *outcome = W_DECLINED;
-            return DD_OK;
-        }
-        if (p == W_NONE || p == W_TIE) W_WRONG("an open facet has no point beyond it");
-        size_t fp = d->fill.n;
-        if (fp >= limit) W_WRONG("the fill does not close");
-        if (fp == room && (s = w_reserve_fill(d, w, fp, room *= 2)) != DD_OK) return s;
-        uint32_t m = fp < d->star.n ? d->star.a[fp] : dd_new_cell(t), lv[4] = {a, b, e, p};
-        d->fill.a[d->fill.n++] = m;              /* at once: w_drop_fill */
-        uint32_t *tv = dd_tv(t, m), *tn = dd_tn(t, m), *so = d->sew_out.a + 4 * fp;
-        const uint32_t *fill = d->fill.a;
-        for (int i = 0; i < 4; i++) {
-            tv[i] = gid[lv[i]];                  /* gid[inf] = DD_INF */
-            w->lcell[4 * fp + i] = lv[i];
-        }
-        const int finite = a != inf && b != inf && e != inf && p != inf;
-        if (w->narrow && finite) {
-            w_adj_edge(w, p, a);
-            w_adj_edge(w, p, b);
-            w_adj_edge(w, p, e);
-        }
-        if (guess && finite) {                   /* for w_conflicts */
-            double *const *L = w->lift;
-            double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
-            w_cofactors(K, X, mb);
-            /* a single-precision guess's point surely beyond abc (o as
-             * w_row_o has it; the other guesses' points are so already) */
-            if (single && !(X[0] * N[0] + X[1] * N[1] + X[2] * N[2] > w->oerr)) W_WRONG("");
-        }
-        /* A guess must be locally Delaunay on each facet it shares with a
-         * finite fill cell (see dd_wrap_fill); the scans' cells are so.  */
-#define W_CHECK_FACET(own)                                                                 \
-        if (guess && finite && (own) != W_NONE && w->lcell[own] != inf &&                \
-            w_conflicts(w, pr, lv, K, w->lcell[own]))                               \
-            W_WRONG("")
-        W_CHECK_FACET(w->own[r]);
-        if (w->own[r] != W_NONE) {
-            const uint32_t f = 4 * fill[w->own[r] >> 2] + (w->own[r] & 3);
-            tn[3] = f;
-            *dd_fn(t, f) = 4 * m + 3;
-            so[3] = DD_NONE;
-        } else {
-            tn[3] = DD_NONE;
-            so[3] = w->out[r];
-            nlink++;
-        }
-        if ((s = w_reserve_recs(w, 3)) != DD_OK) return s;
-        uint64_t key[3];                             /* facet j's: the cell's less lv[j] */
-        const uint64_t *kw = w->kword, set = kw[a] ^ kw[b] ^ kw[e] ^ kw[p];
-        for (uint32_t j = 0; j < 3; j++) key[j] = set ^ kw[lv[j]];
-        for (uint32_t j = 0; j < 3; j++) {
-            uint32_t f0 = lv[dd_facet[j][0]], f1 = lv[dd_facet[j][1]], f2 = lv[dd_facet[j][2]];
-            int found;
-            uint32_t *val = w_fslot_of(w, key[j], &found);
-            if (found) {                         /* its other side is known */
-                uint32_t o = *val;
-                if (w->closed[o]) W_WRONG("a triangle bounds three cells");
-                /* The new cell must lie on the record's open side.       */
-                if (!w_same_turn(w->tri[o], f0, f1)) W_WRONG("a triangle is met from the wrong side");
-                W_CHECK_FACET(w->own[o]);
-                w->closed[o] = 1;
-                if (w->own[o] != W_NONE) {
-                    const uint32_t f = 4 * fill[w->own[o] >> 2] + (w->own[o] & 3);
-                    tn[j] = f;
-                    *dd_fn(t, f) = 4 * m + j;
-                    so[j] = DD_NONE;
-                } else {
-                    tn[j] = DD_NONE;
-                    so[j] = w->out[o];
-                    nlink++;
-                }
-                continue;
-            }
-            tn[j] = DD_NONE;
-            so[j] = DD_NONE;
-            w->stack[ns++] = w->nrec;
-            w_open(w, val, f1, f0, f2, 4 * (uint32_t)fp + j);   /* reversed: open outwards */
-        }
+        if ((s = w_reserve_cell(&x)) != DD_OK) return s;
+        int o = w_pick_apex(&x, r);
+        if (o == W_DONE) o = w_make_cell(&x, r);
+        if (o == W_DONE) o = w_close_or_open(&x);
+        if (o != W_DONE) return w_end(&x, o, outcome);
     }
-    /* Each link triangle closed at most once (above), so all of them
-     * exactly once: the sew needs no matching of its own.               */
-    if (nlink != d->star.n) W_WRONG("the fill does not cover the link");
-#undef W_CHECK_FACET
-#undef W_WRONG
-    return DD_OK;
+    /* Each link triangle closed at most once, so all of them exactly
+     * once: the sew needs no matching of its own.                       */
+    return w_end(&x, x.nlink == d->star.n ? W_DONE : w_wrong(&x, "the fill does not cover the link"), outcome);
 }

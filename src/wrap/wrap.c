@@ -87,9 +87,12 @@ const char *const dd_wrap_stat_names[DD_WS_COUNT] = {
 static void w_free_scratch(void *w) { dd_wrap_free(w); }
 static const dd_scratch_kind w_kind = {"gift wrapping", w_free_scratch};
 
-static dd_status w_get(dd_del *d, struct dd_wrap **out)
+/* The wrap's scratch, kept in d across deletions (made at the first),
+ * with room for this cavity's neighbours; the statistics named.          */
+static dd_status w_scratch(dd_del *d, struct dd_wrap **out)
 {
     struct dd_wrap *w = dd_del_scratch(d, &w_kind);
+    dd_status s = DD_OK;
     if (!w) {
         w = calloc(1, sizeof *w);
         if (!w) return DD_ERR_NOMEM;
@@ -97,41 +100,40 @@ static dd_status w_get(dd_del *d, struct dd_wrap **out)
         w->has_avx2 = __builtin_cpu_supports("avx2");
         w->has_fma = __builtin_cpu_supports("fma");
 #endif
-        dd_status s = dd_del_keep_scratch(d, &w_kind, w);
-        if (s != DD_OK) return s;
+        s = dd_del_keep_scratch(d, &w_kind, w);
     }
     *out = w;
-    return DD_OK;
+    dd_del_strategy_stats(d, dd_wrap_stat_names, DD_WS_COUNT);
+    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, d->t->nvid);
+    if (s == DD_OK) s = dd_vec_room(&d->order, 1);
+    return s;
 }
 
-dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
+/* One deletion's course through the wrap (dd_wrap_fill).                */
+struct w_course {
+    int guess;                    /* guessing (the filters apply)         */
+    int hub;                      /* the link has a hub (w_open_link)     */
+    uint32_t start;               /* the record the next wrap starts from */
+    int outcome;                  /* W_DONE, W_DECLINED, W_WRONG_GUESS    */
+    size_t refuted;               /* cells made by refuted guesses        */
+};
+
+/* Numbers the neighbours (d->order's order; the infinite vertex is n),
+ * lifts them, and sets the deletion's modes: AVX2, the lean and
+ * single-precision passes, the test controls.  The star is kept aside
+ * first (w_keep_star), so that a wrap that is not kept can restore it.  */
+static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
 {
     dd_tri *t = d->t;
-    *declined = 0;
-    struct dd_wrap *w;
-    dd_status s = w_get(d, &w);
-    dd_del_strategy_stats(d, dd_wrap_stat_names, DD_WS_COUNT);
-    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, t->nvid);
-    if (s == DD_OK) s = dd_vec_room(&d->order, 1);
-    if (s != DD_OK) return s;
-    if (d->order.n + 1 >= DD_WRAP_CODE_LEN) {        /* no keys (w_fkey) */
-        d->sstat[DD_WS_COURSE] = DD_WRAP_DECLINED;
-        *declined = 1;
-        return DD_OK;
-    }
+    dd_status s = DD_OK;
     if (d->order.n >= 64 && (s = w_code_reserve(w, (uint32_t)d->order.n + 1)) != DD_OK) return s;
-    d->fill.n = 0;                       /* no fill cell made yet (w_drop_fill) */
+    d->fill.n = 0;                                  /* no fill cell made yet (w_drop_fill) */
     w->ncell0 = t->ncell;
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
-    w->avx2 = w->has_avx2;
-#ifdef DD_TEST_BUILD
-    w->avx2 = w->avx2 && !t->testctl[DD_TEST_SCALAR];   /* dtdel_stats.h */
-#endif
-    d->order.a[d->order.n] = DD_INF;     /* DD_INF's local number is n: gid[n] */
-    const uint32_t *gid = d->order.a;
-    const uint32_t n = w->n = (uint32_t)d->order.n;
-    w->lead = 0;                         /* the neighbour of least id (w_open_link) */
+    d->order.a[d->order.n] = DD_INF;                /* gid[n]: the infinite vertex */
+    const uint32_t *gid = d->order.a, n = w->n = (uint32_t)d->order.n;
+    w->lead = 0;                                    /* the neighbour of least id */
     for (uint32_t k = 0; k < n; k++) {
         w->pt[k] = dd_pt(t, gid[k]);
         w->loc[gid[k]] = k;
@@ -140,145 +142,129 @@ dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
     w_lift(w, d->qp);
     w->unf0 = w_unfiltered(&d->qdt->pred);
     d->sstat[DD_WS_INTEGER] = w->exact ? 1u : w->kexact ? 2u : 0u;
-    w->cosph = 0;                                    /* w_cospherical may set it */
+    w->cosph = 0;
+    w->narrow = DD_GUESS_WIDE;
+    w->avx2 = w->has_avx2;
+#ifdef DD_TEST_BUILD
+    w->avx2 = w->avx2 && !t->testctl[DD_TEST_SCALAR];   /* dtdel_stats.h */
+#endif
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
-    /* The lean guess and the hull step in single precision first
-     * (w_guess_f32_avx2, w_inf_f32).  The sanitizer build makes them only
-     * for input points of index 0 mod 4, and spoils some of their answers
-     * for 4 mod 8 (w_guess_f32, w_scan_inf).  A refuted guess is made
-     * again in doubles; the hull steps, each proved in doubles (and on
-     * the x, y, z the shifted lifts keep), stay in floats.              */
+    /* the float lifts' scales stay finite (w_lift_f32) */
     w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
 #ifdef DD_TEST_BUILD
     w->flift_ok = w->flift_ok && !t->testctl[DD_TEST_NO_SINGLE];
     w->f32_spoil = t->testctl[DD_TEST_SPOIL_SINGLE] != 0;
-#endif
-    w->f32 = w->flift_ok;
-    w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;
-    w->f32_ready = 0;
-    /* The sanitizer build also narrows both narrow guesses to the
-     * shortest lists of a facet's corners, with no second step, for
-     * input points of index 3 mod 4: there they are refuted much more often,
-     * and the wide guess after them is tested too (tests: wrap-narrow). */
-#ifdef DD_TEST_BUILD
     w->narrower = t->testctl[DD_TEST_NARROWER] != 0;
 #else
     w->narrower = 0;
 #endif
-    /* Guess, then prove (filters on).  The guessed fill takes for each
-     * finite facet the point of least t/o beyond it (wrap_guess: one pass,
-     * no check against the other points; points of unsure orientation
-     * decided and compared with it by w_scan_exact), or, for a hull
-     * vertex, the infinite vertex when every other point is behind the
-     * facet (surely, by the guess's own pass, or by w_scan_exact with
-     * the flat-hull check of points in its plane, w_flat_hull); facets
-     * through the infinite
-     * vertex get the Jarvis step of the scans (w_scan_inf), which is
-     * certified.  The guess is kept when
-     *  - each finite cell is positively oriented (its point beyond by the
-     *    filter, or exactly), each facet between two cells is met from
-     *    opposite sides, and the link
-     *    triangles are the free facets, each met once (w_run).  For an
-     *    interior vertex the cells then cover every point of the cavity
-     *    exactly once (the degree of the map: each point is covered by as
-     *    many positive cells as the link winds round it, once).  For a
-     *    hull vertex, the infinite cells' facets are facets of the hull
-     *    of the neighbours (all points behind them), forming a patch of
-     *    that hull bounded by the link's hull edges, oriented: the patch
-     *    the scans find.  The finite cells' boundary is then the same
-     *    chain as that of the true fill, and by the same degree argument
-     *    they tile the part of the cavity inside conv(S \ q);
-     *  - and every facet between two finite fill cells is locally Delaunay
-     *    (w_run, w_conflicts).  The link triangles are so already, facing
-     *    cells of DT(S) whose spheres hold no point, and the facets on the
-     *    new hull are convex edges and faces, all points being behind.
-     * A triangulation of conv(S \ q) whose facets are all locally Delaunay
-     * (perturbed) is its Delaunay triangulation, so the guess is then
-     * exactly the fill the scans would find, at the cost of one pass per
-     * cell instead of two and no branch per point.  Otherwise the scans
-     * wrap from scratch.                                                 */
-    int guess = w->ierr != 1.0 / 0.0, outcome = W_WRONG_GUESS;   /* no guess: scan */
-    w->narrow = DD_GUESS_WIDE;
-    uint32_t start;
-    int hub = 0;                                     /* see w_open_link */
-    s = w_open_link(d, w, &start, guess && n >= W_NARROW_FROM ? &hub : NULL);
-    /* Integer neighbours all on one sphere (the cosphere): every guess
-     * among them ties (W_TIE) and is refuted, narrow ones after building
-     * cells, and the scans then wrap in the perturbation's mode.  With
-     * integer cofactors (w->kexact) w_cospherical is exact in doubles and
-     * 128-bit integers, and stops at the first point off the sphere, so
-     * it is asked first there and the scans wrap at once: cosphere degree
-     * 64-95, 4 deletions, where 2 narrow and 1 wide guess were refuted
-     * before the scans (callgrind).  On rounded lifts it would take the
-     * exact expansions on nearly cospherical points (the sphere).        */
-    if (s == DD_OK && guess && w->kexact && (w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n))) guess = 0;
-    size_t refuted = 0;                              /* cells of a refuted guess */
-    d->sstat[DD_WS_COURSE] = guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
-    if (s == DD_OK && guess) {
-        /* Narrow guesses first where the link has a hub, the short lists
-         * then two steps (w_guess_narrow); a refuted one costs its cells
-         * so far, then the next is tried.  From wide_below neighbours on
-         * the guess over every neighbour is not tried: taken as refuted,
-         * it leaves the cavity to the scans if cospherical, else to the
-         * caller (below).                                              */
-        w->narrow = hub ? DD_GUESS_SHORT : DD_GUESS_WIDE;
-        for (;;) {
-            if (w->narrow == DD_GUESS_WIDE && n >= wide_below) break;
-            d->sstat[DD_WS_GUESS] = (uint32_t)w->narrow;
-            s = w_run(d, w, 1, start, &outcome);
-            if (s != DD_OK || outcome != W_WRONG_GUESS) break;
-            refuted += d->fill.n;
-            if (w->narrow == DD_GUESS_WIDE) {
-                /* Nearly cospherical neighbours (points sampled on a
-                 * sphere): their quotients t/o differ by less than the
-                 * rounding of the plain lifts, and a guess among them is
-                 * refuted (sphere, degree [48,96): every deletion, then
-                 * declined to GRR, 4.8x a re-insertion).  Guessed once
-                 * more on the shifted lifts, where t measures the
-                 * distance from the sphere.  A lean guess refuted is
-                 * made again in full: there, or on the same lifts.      */
-                d->sstat[DD_WS_SINGLE_REFUTED] |= w->f32 && w->f32_kept > 0;
-                if (!w->shifted && n >= DD_SHIFT_FROM && w_shift(w)) d->sstat[DD_WS_SHIFT_GUESS] = 1;
-                else if (!w->lean) break;
-                w->lean = w->f32 = 0;
-            } else {
-                d->sstat[DD_WS_NARROW_REFUTED]++;
-                w->narrow = w->narrow == DD_GUESS_SHORT ? DD_GUESS_TWO_STEP : DD_GUESS_WIDE;
-            }
-            if ((s = w_open_link(d, w, &start, w->narrow != DD_GUESS_WIDE ? &hub : NULL)) != DD_OK) break;
-        }
-        if (s == DD_OK && outcome == W_DONE) goto done;
-        d->sstat[DD_WS_COURSE] = DD_WRAP_REFUTED;
+    w->f32 = w->flift_ok;
+    w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;
+    w->f32_ready = 0;
+    c->guess = w->ierr != 1.0 / 0.0;                /* filters off: scan */
+    return DD_OK;
+}
+
+/* After a refuted guess, the next one (docs/gift-wrap.md §3 FILL): the
+ * short lists, then two steps, then the wide guess; a wide guess once
+ * more on shifted lifts where they are tighter, or else in full doubles
+ * after a lean one.  0: none left.                                      */
+static int w_next_guess(dd_del *d, struct dd_wrap *w)
+{
+    if (w->narrow != DD_GUESS_WIDE) {
+        d->sstat[DD_WS_NARROW_REFUTED]++;
+        w->narrow = w->narrow == DD_GUESS_SHORT ? DD_GUESS_TWO_STEP : DD_GUESS_WIDE;
+        return 1;
     }
-    /* A guess that declined is final: the budget is spent for the scans
-     * too, and W_BAIL is a flat hull case the scans would not settle
-     * either.  So is a refuted guess from W_EXACT_FROM neighbours on,
-     * unless they are cospherical.  The link triangles are still the
-     * first records (w_open_link), for w_cospherical.                   */
-    if (s == DD_OK && outcome != W_DECLINED) {
-        if (!w->kexact) w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);   /* else asked above */
-        if (guess && n >= W_EXACT_FROM && !w->cosph) outcome = W_DECLINED;
-        else if (guess) s = w_open_link(d, w, &start, NULL);
+    d->sstat[DD_WS_SINGLE_REFUTED] |= w->f32 && w->f32_kept > 0;
+    if (!w->shifted && w->n >= DD_SHIFT_FROM && w_shift(w)) d->sstat[DD_WS_SHIFT_GUESS] = 1;
+    else if (!w->lean) return 0;
+    w->lean = w->f32 = 0;
+    return 1;
+}
+
+/* Opens the link, then guesses the fill and proves it (docs §3 FILL, §7),
+ * when the filters apply and the neighbours are not all on one sphere
+ * (asked first with integer cofactors, where it is cheap and exact:
+ * every guess there would tie).  Narrow guesses first where the link has
+ * a hub, then the wide one, unless n >= wide_below; each refuted guess
+ * costs its cells so far (c->refuted).  c->outcome: W_DONE (the fill is
+ * in the mesh), W_DECLINED, or W_WRONG_GUESS (refuted, or not guessed). */
+static dd_status w_guess_then_prove(dd_del *d, struct dd_wrap *w, uint32_t wide_below, struct w_course *c)
+{
+    dd_status s = w_open_link(d, w, &c->start, c->guess && w->n >= W_NARROW_FROM ? &c->hub : NULL);
+    if (s == DD_OK && c->guess && w->kexact && (w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n))) c->guess = 0;
+    d->sstat[DD_WS_COURSE] = c->guess ? DD_WRAP_PROVED : DD_WRAP_SCANNED;
+    if (s != DD_OK || !c->guess) return s;
+    w->narrow = c->hub ? DD_GUESS_SHORT : DD_GUESS_WIDE;
+    while (w->narrow != DD_GUESS_WIDE || w->n < wide_below) {
+        d->sstat[DD_WS_GUESS] = (uint32_t)w->narrow;
+        if ((s = w_run(d, w, 1, c->start, &c->outcome)) != DD_OK || c->outcome != W_WRONG_GUESS) break;
+        c->refuted += d->fill.n;
+        if (!w_next_guess(d, w)) break;
+        if ((s = w_open_link(d, w, &c->start, w->narrow != DD_GUESS_WIDE ? &c->hub : NULL)) != DD_OK) break;
     }
-    if (s == DD_OK && outcome != W_DECLINED) s = w_run(d, w, 0, start, &outcome);
+    if (s != DD_OK || c->outcome != W_DONE) d->sstat[DD_WS_COURSE] = DD_WRAP_REFUTED;
+    return s;
+}
+
+/* The certified scans' wrap (docs §3 FILL), after no guess or a refuted
+ * one.  A guess that declined is final (the budget is spent, or a flat
+ * hull case the scans would not settle either), and so is a refuted
+ * guess from W_EXACT_FROM neighbours on unless the neighbours are
+ * cospherical (docs §10).  w_cospherical reads the link triangles,
+ * still the first records.                                              */
+static dd_status w_scan_fill(dd_del *d, struct dd_wrap *w, struct w_course *c)
+{
+    if (c->outcome == W_DECLINED) return DD_OK;
+    if (!w->kexact) w->cosph = w_cospherical(w, &d->qdt->pred, d->star.n);   /* else asked already */
+    if (c->guess && w->n >= W_EXACT_FROM && !w->cosph) {
+        c->outcome = W_DECLINED;
+        return DD_OK;
+    }
+    dd_status s = c->guess ? w_open_link(d, w, &c->start, NULL) : DD_OK;
+    return s == DD_OK ? w_run(d, w, 0, c->start, &c->outcome) : s;
+}
+
+/* Hands the fill over to the sew (d->fill_in_mesh), or, declined or
+ * failed, restores the star; the statistics.                           */
+static dd_status w_finish(dd_del *d, struct dd_wrap *w, dd_status s, const struct w_course *c, int *declined)
+{
     if (s != DD_OK) {
         w_drop_fill(d, w);
         return s;
     }
-done:
     d->sstat[DD_WS_EXPANSIONS] = w->nexact;
     d->sstat[DD_WS_SINGLE] = w->f32_kept;
     d->sstat[DD_WS_SINGLE_BACK] = w->f32_back;
     d->sstat[DD_WS_HULL_SINGLE] = w->inf_kept;
     d->sstat[DD_WS_HULL_BACK] = w->inf_back;
-    if (outcome == W_DECLINED) {
+    if (c->outcome == W_DECLINED) {
         w_drop_fill(d, w);
         d->sstat[DD_WS_COURSE] = DD_WRAP_DECLINED;
         *declined = 1;
         return DD_OK;
     }
     d->fill_in_mesh = 1;
-    d->qdt->tets_created = d->fill.n + refuted;
+    d->qdt->tets_created = d->fill.n + c->refuted;
     DD_PHASE_END(d, DD_PH_CONFLICT);
     return DD_OK;
+}
+
+dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
+{
+    struct dd_wrap *w;
+    struct w_course c = {.outcome = W_WRONG_GUESS};
+    *declined = 0;
+    dd_status s = w_scratch(d, &w);
+    if (s != DD_OK) return s;
+    if (d->order.n + 1 >= DD_WRAP_CODE_LEN) {       /* no keys (w_fkey) */
+        d->sstat[DD_WS_COURSE] = DD_WRAP_DECLINED;
+        *declined = 1;
+        return DD_OK;
+    }
+    if ((s = w_begin(d, w, &c)) != DD_OK) return s;
+    s = w_guess_then_prove(d, w, wide_below, &c);
+    if (s == DD_OK && c.outcome != W_DONE) s = w_scan_fill(d, w, &c);
+    return w_finish(d, w, s, &c, declined);
 }

@@ -214,10 +214,10 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b);
 /* Whether every point before `end` but x, y, z is surely behind the plane of normal N through y. */
 int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end);
 
-/* guess.c: the guesses */
-/* The guessed apex of finite open facet (a, b, e), pencil m, N, T; *single: chosen in floats. */
-uint32_t w_guess_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t e, const double m[6],
-                      const double N[4], const double T[4], int on_hull, int *single);
+/* guess.c: the narrow guesses and the known neighbours */
+/* The narrow guess on finite facet (a, b, c), pencil m, N, T; W_NONE: the wide guess decides. */
+uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
+                        const double N[4], const double T[4]);
 /* Records edge (k, v) of a new fill cell among the known neighbours. */
 void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v);
 
@@ -516,6 +516,66 @@ static inline uint64_t w_unfiltered(const dd_pred *pr)
 static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
 {
     return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
+}
+
+/* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
+ * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
+ * W_TIE when two such quotients are equal; *unsure: how many had unsure
+ * orientation.                                                          */
+static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const double N[4], const double T[4],
+                                     const uint32_t *ks, uint32_t nk, uint32_t *unsure)
+{
+    double *const *L = w->lift;
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, oerr = w->oerr;
+    double br = 1.0 / 0.0;
+    uint32_t best = W_NONE, uns = 0;
+    int tie = 0;
+    for (uint32_t i = 0; i < nk; i++) {
+        const uint32_t k = ks ? ks[i] : i;
+        double P[4], ok = w_row_o(L, k, A, N, P);
+        int pos = ok > oerr;
+        uns += !pos & (ok >= -oerr);
+        double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
+        tie |= pos & (r == br);
+        best = r < br ? k : best;
+        br = r < br ? r : br;
+    }
+    *unsure = uns;
+    return tie ? W_TIE : best;
+}
+
+/* The wide guess; *unsure: 1 when points other than a, b, c had unsure
+ * orientations, 0 when none had, W_UNCOUNTED (the lean guess, on points
+ * not of exact orientation from W_LEAN_FROM neighbours on and not in the
+ * narrow guesses' course, see w_guess_lean_avx2), W_SINGLE (not counted
+ * either, the point chosen in single precision, w_guess_f32, not yet
+ * known to be beyond the facet).                                       */
+static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
+{
+#ifdef W_AVX2
+    if (w->lean && !w->narrow) {
+        *unsure = W_UNCOUNTED;
+        if (w->f32) {
+            const uint32_t p = w_guess_f32(w, a, N, T);
+            if (p == W_BEHIND) {                     /* w_run asks w_all_behind */
+                w->f32_kept++;
+                return W_NONE;
+            }
+            if (p != W_NONE) {
+                w->f32_kept++;
+                *unsure = W_SINGLE;
+                return p;
+            }
+            w->f32_back++;
+        }
+        return w_guess_lean_avx2(w->lift, w->n, a, N, T, w->oerr);
+    }
+    if (w->avx2) return w_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
+#endif
+    uint32_t uns;
+    const uint32_t best = w_least_ratio(w, a, N, T, NULL, w->n, &uns);
+    *unsure = uns != 3;                              /* a, b, c always are */
+    return best;
 }
 
 #endif
