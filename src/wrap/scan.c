@@ -35,53 +35,39 @@ static void w_lex_ranks(struct dd_wrap *w)
 }
 
 /* dd_insphere_symbolic on local numbers: the perturbation's sign for y
- * and the positively oriented cell lv, when their in-sphere determinant
- * is exactly 0 (+1 inside).  The same rule: of the five points, the two
- * lexicographically largest in turn; y itself gives -1, a corner the
- * orientation of the cell with y in its place, if not 0.  The ranks are
- * w_lex_ranks', the orientations w_orient's (with integer lifts exact in
- * doubles, else filtered): the orientations and the order of
- * dd_insphere_symbolic, whose five-point sort and exact calls were most
- * of a cospherical deletion.                                             */
+ * and the positively oriented cell lv when their in-sphere determinant is
+ * exactly 0 (+1 inside), by geom/lift.h's rule (dd_lift_symbolic) on the
+ * lexicographic ranks of w_lex_ranks, the orientations w_orient's (exact
+ * in doubles with integer lifts, else filtered, else exact).            */
+typedef struct w_sym_ctx {
+    struct dd_wrap *w;
+    dd_pred *pr;
+    const uint32_t *lv;
+    uint32_t y;
+} w_sym_ctx;
+
+/* orient3d of the cell lv with its corner k replaced by y. */
+static inline int w_sym_orient(void *ctx, int k)
+{
+    const w_sym_ctx *c = ctx;
+    uint32_t v[4] = {c->lv[0], c->lv[1], c->lv[2], c->lv[3]};
+    v[k] = c->y;
+    double N[4];
+    w_normal(c->w, v[0], v[1], v[2], N);
+    return w_orient(c->w, c->pr, v[0], v[1], v[2], N, v[3]);
+}
+
 static int w_symbolic_from(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y, int from)
 {
     if (!w->lex_ok) w_lex_ranks(w);
     const uint32_t *r = w->lexr, rk[5] = {r[lv[0]], r[lv[1]], r[lv[2]], r[lv[3]], r[y]};
-    int top[2] = {0, 0};
-    for (int i = 1; i < 5; i++)
-        if (rk[i] > rk[top[0]]) top[0] = i;
-    top[1] = top[0] == 0 ? 1 : 0;
-    for (int i = 0; i < 5; i++)
-        if (i != top[0] && rk[i] > rk[top[1]]) top[1] = i;
-    for (int step = from; step < 2; step++) {
-        if (top[step] == 4) return -1;               /* y itself */
-        uint32_t v[4] = {lv[0], lv[1], lv[2], lv[3]};
-        v[top[step]] = y;
-        double N[4];
-        w_normal(w, v[0], v[1], v[2], N);
-        int o = w_orient(w, pr, v[0], v[1], v[2], N, v[3]);
-        if (o != 0) return o;
-    }
-    return -1;
+    w_sym_ctx c = {w, pr, lv, y};
+    return dd_lift_symbolic(rk, from, w_sym_orient, &c);
 }
 
 static inline int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
 {
     return w_symbolic_from(w, pr, lv, y, 0);
-}
-
-/* The sign of K . P, exactly, for integer entries (w->kexact: |K[i]| <=
- * 72m^4 < 2^51, |P[i]| <= 3m^2 < 2^24).                                  */
-static int w_sign_kp(const double K[4], const double P[4])
-{
-#if defined(__SIZEOF_INT128__)
-    __int128 s = 0;
-    for (int i = 0; i < 4; i++) s += (__int128)(int64_t)K[i] * (int64_t)P[i];
-    return (s > 0) - (s < 0);
-#else
-    (void)K; (void)P;
-    return 0;                                      /* not reached: W_INT_K */
-#endif
 }
 
 /* Whether point y is in conflict with fill cell (a, b, c, p) (local
@@ -93,7 +79,7 @@ __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, c
 {
     const double *const *pt = w->pt;
     if (w->kexact) {
-        const int sg = w->exact ? 0 : w_sign_kp(K, P);
+        const int sg = w->exact ? 0 : dd_lift_sign_kp(K, P);
         return sg ? sg < 0 : w_symbolic(w, pr, lv, y) > 0;
     }
     w->nexact++;
@@ -332,7 +318,7 @@ int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
             w_row_o(L, k, A, N, P);
             double det = w_t(P, K);
             if (det > w->ierr || det < -w->ierr) return 0;
-            if (w->kexact ? !w->exact && w_sign_kp(K, P) != 0 : dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
+            if (w->kexact ? !w->exact && dd_lift_sign_kp(K, P) != 0 : dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
                 return 0;
         }
         return 1;

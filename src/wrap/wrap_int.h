@@ -5,7 +5,8 @@
 #define DD_WRAP_INT_H
 
 #include "wrap/wrap.h"
-#include "delete/qsmall.h"
+#include "delete/delete.h"
+#include "geom/lift.h"
 
 #include <math.h>
 #ifdef __SSE2__
@@ -90,7 +91,7 @@ struct dd_wrap {
                                      the scans is exact (see w_lift)     */
     int oexact;                   /* every orientation o is exact         */
     int kexact;                   /* the cofactors K are exact integers
-                                     (w_sign_kp)                          */
+                                     (dd_lift_sign_kp)                          */
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
     int has_fma;                  /* the CPU has FMA (w_guess_f32_avx2)     */
     int lean;                     /* the wide guess is the lean one       */
