@@ -51,10 +51,7 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
 #ifdef W_AVX2
     if (w->flift_ok) {                               /* step 1 guessed (w_inf_f32) */
         uint32_t p = w_inf_f32(w_flift(w), w->n, a, b);
-#ifdef DD_TEST_BUILD
-        /* a wrong point (tests: wrap-single): refused                   */
-        if (p < w->n && w->f32_spoil) p = (p + 1) % w->n;
-#endif
+        if (p < w->n && W_F32_SPOIL(w)) p = (p + 1) % w->n;   /* tests: refused */
         if (p < w->n && p != a && p != b) {
             w_normal(w, b, a, p, N);
             if (w_all_behind(w, a, b, p, N, w->n)) { w->inf_kept++; return p; }

@@ -259,9 +259,7 @@ __attribute__((target("avx2,fma"))) uint32_t w_guess_f32(struct dd_wrap *w, uint
     float mn = fabsf(nf[0]) > fabsf(nf[1]) ? fabsf(nf[0]) : fabsf(nf[1]);
     mn = fabsf(nf[2]) > mn ? fabsf(nf[2]) : mn;
     const uint32_t p = w_guess_f32_avx2(F, w->n, a, nf, tf, W_F32_BAND * mn);
-#ifdef DD_TEST_BUILD
-    if (p < w->n && w->f32_spoil && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
-#endif
+    if (p < w->n && W_F32_SPOIL(w) && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
     return p;
 }
 

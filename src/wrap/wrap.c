@@ -144,19 +144,13 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     d->sstat[DD_WS_INTEGER] = w->exact ? 1u : w->kexact ? 2u : 0u;
     w->cosph = 0;
     w->narrow = DD_GUESS_WIDE;
-    w->avx2 = w->has_avx2;
-#ifdef DD_TEST_BUILD
-    w->avx2 = w->avx2 && !t->testctl[DD_TEST_SCALAR];   /* dtdel_stats.h */
-#endif
+    w->avx2 = w->has_avx2 && !W_TESTCTL(t, DD_TEST_SCALAR);
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
     /* the float lifts' scales stay finite (w_lift_f32) */
-    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
+    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50 && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
 #ifdef DD_TEST_BUILD
-    w->flift_ok = w->flift_ok && !t->testctl[DD_TEST_NO_SINGLE];
-    w->f32_spoil = t->testctl[DD_TEST_SPOIL_SINGLE] != 0;
-    w->narrower = t->testctl[DD_TEST_NARROWER] != 0;
-#else
-    w->narrower = 0;
+    w->narrower = W_TESTCTL(t, DD_TEST_NARROWER);
+    w->f32_spoil = W_TESTCTL(t, DD_TEST_SPOIL_SINGLE);
 #endif
     w->f32 = w->flift_ok;
     w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;

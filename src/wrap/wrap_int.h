@@ -108,9 +108,6 @@ struct dd_wrap {
     uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
                                      made in doubles (w_scan_inf)      */
     int f32_ready;                /* flift made for this deletion (w_flift) */
-#ifdef DD_TEST_BUILD
-    int f32_spoil;                /* answer a wrong point (tests)         */
-#endif
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
     uint64_t unf0;                /* the predicates' count of tests past
@@ -151,8 +148,25 @@ struct dd_wrap {
     uint32_t *cand;               /* the candidates of one facet          */
     int hub_last;                 /* the last link asked had a hub        */
     uint32_t lead;                /* local number of the least vertex id  */
-    int narrower;                 /* test build: shortest lists only      */
+#ifdef DD_TEST_BUILD
+    int narrower;                 /* DD_TEST_NARROWER: shortest lists only */
+    int f32_spoil;                /* DD_TEST_SPOIL_SINGLE: answer wrong
+                                     points in single precision          */
+#endif
 };
+
+/* Test controls (dtdel_stats.h), in test builds only: W_TESTCTL(t, k)
+ * is control k of triangulation t, W_NARROWER(w) and W_F32_SPOIL(w) the
+ * wrap's copies of two of them; all 0 in release builds.               */
+#ifdef DD_TEST_BUILD
+#define W_TESTCTL(t, k) ((t)->testctl[k] != 0)
+#define W_NARROWER(w) ((w)->narrower)
+#define W_F32_SPOIL(w) ((w)->f32_spoil)
+#else
+#define W_TESTCTL(t, k) 0
+#define W_NARROWER(w) 0
+#define W_F32_SPOIL(w) 0
+#endif
 
 enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
 
