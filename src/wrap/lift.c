@@ -1,69 +1,62 @@
 /*
- * lift.c -- the lifts and the filters' bounds of the gift wrap.
+ * lift.c -- the lifts of the gift wrap and its filters' bounds
+ * (docs/gift-wrap.md §2, §8).
+ *
+ * Owns: the rows L[k] = (x_k - q, |x_k - q|^2) of the neighbours, in
+ * doubles (w->lift) and, for the single-precision passes, in floats in
+ * units of m (w->flift); the shifted lifts; the error bounds ierr
+ * (in-sphere) and oerr (orientation) and the integer modes (w->exact,
+ * oexact, kexact).
+ *
+ * Invariant: every determinant the wrap certifies with is evaluated from
+ * these rows with at most the roundings counted below, so a value beyond
+ * its bound has the sign of the exact determinant; a bound of 0 means
+ * that the evaluation is exact, +inf that there is no filter (every sign
+ * goes to the exact predicates, and nothing is guessed).  The lifts are
+ * padded with NaN to a multiple of four (doubles) and of eight (floats)
+ * for the AVX2 passes.
  */
 #include "wrap/wrap_int.h"
 
-/* Lifts the neighbours relative to q and sets the filters' bounds.
+/* Lifts the neighbours relative to q (the rows of §2) and sets the
+ * filters' bounds, m being max_k max_i |x_k,i - q_i| and u = 2^-53.
  *
- * In-sphere.  For points a, b, c, x, p the in-sphere determinant equals
- * det4(L[b]-L[a], L[c]-L[a], L[x]-L[a], L[p]-L[a]) with L[y] = (y - q,
- * |y - q|^2) (translate, then add to the lift a combination of the first
- * three columns); negative when p is inside the sphere of the positively
- * oriented a, b, c, x.  These are the entries of qsmall.c's filter (rows
- * L[v] - L[p] there), with the same bounds: columns 0-2 at most 2m with
- * errors at most 4um, column 3 at most 3m^2 with errors at most 36um^2,
- * m = max |y_k - q_k|.  wrap_scan evaluates the determinant by 2x2
- * minors of the first two rows, 3x3 cofactors with the third, a dot
- * product with the fourth: at most 9 roundings on any product path, so
- * qsmall.c's bound (10 roundings) holds: |error| < 1.8e-12 m^5, and the
- * filter answers only beyond 1e-11 m^5.
+ * In-sphere, ierr = 1e-11 m^5 (dd_lift_err).  The in-sphere determinant
+ * of a, b, c, x, p is det(L[b]-L[a], L[c]-L[a], L[x]-L[a], L[p]-L[a]):
+ * qsmall.c's entries (rows L[v] - L[p] there), columns 0-2 at most 2m
+ * with errors at most 4um, column 3 at most 3m^2 with errors at most
+ * 36um^2.  Evaluated by 2x2 minors, 3x3 cofactors and a dot product, at
+ * most 9 roundings on any product path, so qsmall.c's bound (10
+ * roundings) holds: |error| < 1.8e-12 m^5.
  *
- * Orientation.  orient3d(a, b, c, p) = det3 of the first three columns of
- * the same rows: entries at most 2m with errors at most 4um; the 6 terms
- * move by at most 6 * 3 * (2m)^2 * 4um = 288u m^3 from the entry errors,
- * and the evaluation (2x2 minors, then a 3-term dot product: 5 roundings)
- * adds at most gamma_5 * 48 m^3 < 241u m^3: in all below 6e-14 m^3; the
- * filter answers beyond 1e-13 m^3.
+ * Orientation, oerr = 1e-13 m^3.  orient3d(a, b, c, p) is the det3 of
+ * the first three columns: the entry errors move its 6 terms by at most
+ * 6 * 3 * (2m)^2 * 4um = 288u m^3, and the 5 roundings of its evaluation
+ * (w_row_o) add at most gamma_5 * 48 m^3 < 241u m^3: below 6e-14 m^3.
  *
- * Both only for 1e-55 <= m <= 1e55 (no overflow; underflow errors far
- * below the bounds); otherwise the bounds are +inf and the exact
- * predicates decide every test.
+ * Both hold for 1e-55 <= m <= 1e55 (no overflow; underflow errors far
+ * below the bounds); outside, the bounds are +inf.
  *
- * Integer points.  When q and every neighbour have integer coordinates
- * and m <= W_INT_M = 400, each x_k - q is exact and every lift is an
- * integer: columns 0-2 at most m, column 3 at most 3m^2, so the rows'
- * entries are at most 2m and 3m^2.  Every quantity the scans certify
- * with is then a sum of products of integers below 2^53, computed
- * exactly: the minors at most 8m^2 (xyz) and 12m^3 (with the lift), o at
- * most 48m^3, the cofactors K at most 72m^4, the in-sphere determinant
- * K . P at most 576m^5 <= 5.9e15 < 2^53 (9.0e15; up to m = 434).  The
- * bounds become 0 (w->exact): a test
- * is decided by its sign, and 0 is exactly 0, where orient3d is 0 and the
- * in-sphere test is the perturbation's alone (w_symbolic): no
- * exact expansion at all (grids, cospheres, stacked layers, where they
- * were a quarter of a deletion).  t, which only ranks candidates, may
- * round.  (The bound was m <= 256 before: the cosphere, n = 4000, radius
- * 297, has neighbours up to 2r = 594 apart; at degree 8-31, 400 against
- * 256 took 16% fewer instructions a deletion, at 32-63 4%, callgrind.)
- *
- * Integer orientations.  o alone (the minors of the xyz columns, at most
- * 8m^2, times entries at most 2m: at most 48m^3) is exact further, up to
- * m = W_INT_O = 2^15 (48m^3 <= 1.6e15): the orientation filter's bound
- * is 0 there (w->oexact), a zero is exactly 0, and no orientation goes to
- * the exact predicate, while in-sphere tests keep their filter.  The
- * cosphere at degree 64-95 has neighbours up to 594 apart, where the
- * exact orient3d took 16% of a deletion.
- *
- * Integer cofactors.  Up to m = W_INT_K = 2^11 the cofactors K (at most
- * 72m^4 <= 1.3e15) are exact too, and the in-sphere determinant K . P
- * the filter leaves (products below 2^75) is summed exactly in 128-bit
- * integers (w_sign_kp): 0 goes to the perturbation (w_symbolic), as with
- * integer lifts, and no in-sphere test to the exact expansions (the
- * cosphere at degree 64-95: 15% of a deletion, w_cospherical's).       */
-#define W_INT_M 400.0
-#define W_INT_O 32768.0
+ * Integer points (q and every neighbour integral):
+ *  - m <= W_INT_M: every lift is an integer and every certified quantity
+ *    a sum of products of integers, computed exactly: the minors at most
+ *    8m^2 (xyz) and 12m^3 (with the lift), o at most 48m^3, the cofactors
+ *    K at most 72m^4, K . P at most 576m^5 <= 5.9e15 < 2^53 (this holds
+ *    up to m = 434).  Both bounds are 0 (w->exact): a 0 is exactly 0 and
+ *    goes to the perturbation on local numbers (w_symbolic), and no exact
+ *    expansion runs.  t, which only ranks candidates, may round.
+ *  - m <= W_INT_O: o alone is exact (48m^3 <= 1.6e15), so oerr = 0
+ *    (w->oexact); in-sphere tests keep their filter.
+ *  - m <= W_INT_K, with 128-bit integers: K is exact (72m^4 <= 1.3e15),
+ *    and a K . P that the filter leaves (products below 2^75) is summed
+ *    exactly in 128-bit integers (w_sign_kp), a 0 going to w_symbolic
+ *    (w->kexact).
+ * The shifted lifts are not tried where the filters are off or exact
+ * tests cheap.  O(n).                                                   */
+#define W_INT_M 400.0                             /* 576m^5 < 2^53 up to 434 */
+#define W_INT_O 32768.0                           /* 2^15: 48m^3 <= 1.6e15   */
 #if defined(__SIZEOF_INT128__)
-#define W_INT_K 2048.0
+#define W_INT_K 2048.0                            /* 2^11: 72m^4 <= 1.3e15   */
 #else
 #define W_INT_K 0.0                               /* no 128-bit integers */
 #endif
@@ -97,12 +90,13 @@ void w_lift(struct dd_wrap *w, const double *q)
     w->lex_ok = 0;
 }
 
-/* The single-precision lifts (w_guess_f32_avx2): x_k - q over m and
- * |x_k - q|^2 over m^2 (at most 1 and 3), rounded to floats, padded with
- * NaN to a multiple of eight; and the scales that take N and T (w_pencil)
- * to the same units: N's entries are at most 8m^2, T's are O(m^5) (xyz)
- * and O(m^4) (lift), so that o and t are O(1) or less there.  Only for
- * 1e-50 <= m <= 1e50 (dd_wrap_fill): no overflow of the scales.        */
+/* The single-precision lifts (simd.c): x_k - q over m and |x_k - q|^2
+ * over m^2 (at most 1 and 3), rounded to floats, padded with NaN to a
+ * multiple of eight; and the scales that take N and T (w_pencil) to the
+ * same units: N's entries are at most 8m^2, T's O(m^5) (xyz) and O(m^4)
+ * (lift), so that o and t are O(1) or less there.  Only for 1e-50 <= m
+ * <= 1e50 (w->flift_ok): the scales do not overflow.  Only ranks: every
+ * answer of the float passes is checked in doubles.  O(n).             */
 void w_lift_f32(struct dd_wrap *w)
 {
     const double s = 1.0 / w->m, s2 = s * s;
@@ -118,15 +112,15 @@ void w_lift_f32(struct dd_wrap *w)
     }
 }
 
-/* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
- * wrap_scan have the same entries and at most as many roundings), for
- * nearly cospherical cavities where the plain filter abstains.  Tried
- * once per deletion, with at least DD_SHIFT_FROM neighbours (below that
- * the exact expansions of the shift cost more than the tests they save,
- * as in qsmall.c): when a guess over every neighbour is refuted, which
- * is then made again (dd_wrap_fill), or when a fast scan first fails its
- * check, which is then run again.  0 when the shift is no tighter (the
- * lifts are kept).                                                      */
+/* Switches to the shifted lifts (docs §8; qsmall.c's dd_shift_lifts,
+ * whose bound holds here: the same entries, at most as many roundings)
+ * for nearly cospherical cavities, where the plain filter abstains: the
+ * lift becomes about the distance from a sphere through q and three
+ * neighbours.  Once per deletion (w->shifted), from DD_SHIFT_FROM
+ * neighbours on (below, the shift's exact expansions cost more than the
+ * tests they save): after a refuted wide guess, which is made again, or a
+ * fast scan's failed check, which is scanned again.  1: the bound is
+ * tighter and the lifts replaced; 0: the lifts kept.  O(n) expansions.  */
 int w_shift(struct dd_wrap *w)
 {
     w->shifted = 1;
