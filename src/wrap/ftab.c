@@ -1,41 +1,29 @@
 /*
- * ftab.c -- the facet table of the gift wrap.
+ * ftab.c -- the facet table of the gift wrap (docs/gift-wrap.md §11): an
+ * oriented triangle of local numbers -> its facet record, and the keys
+ * that name a triangle by the set of its corners.
+ *
+ * Owns: the table (open addressing, linear probing, emptied in O(1) by
+ * generation stamps), its growth, and the keys' words: bit k below 64
+ * local numbers, from 64 on the BCH code words of dd_wrap_code_words,
+ * made once and kept across deletions.  The probes are inline in
+ * wrap_int.h (w_fkey, w_fprobe, w_fslot_of, w_reserve_recs).
+ *
+ * Invariant: the table is at most half full and every record has its
+ * entry (it grows with the records and takes them again); two distinct
+ * sets of three local numbers below DD_WRAP_CODE_LEN have distinct keys
+ * (wrap.h).  A key is the exclusive or of the corners' words: symmetric,
+ * so no sorting of the corners and one 64-bit compare a probe.  The
+ * facet of a cell opposite vertex j has the cell's four words with word
+ * j xored out again (w_close_or_open, run.c).
  */
 #include "wrap/wrap_int.h"
-
-/* The facet table.  A triangle's key (w_fkey) is the exclusive or of
- * its corners' words, kword[k], which tells sets of three local numbers
- * apart: no sorting of the corners, and one 64-bit compare a probe.
- *  - Below 64 neighbours (the infinite vertex n included), bit k.
- *  - From 64 on, the code words of dd_wrap_code_words.  Before them the
- *    key was the sorted corners (21 bits each), whose sorting (dd_sort3u,
- *    no branches but a dozen operations) was 5.8% of the instructions
- *    of a deletion at bunny degree 72 (callgrind); with the code words,
- *    190k -> 182k instructions a deletion there, 17.55M -> 17.58M for
- *    100 deletions of a uniform vertex of degree 57 (the bits alike,
- *    read from w_bit_words).  In time, bunny degree 72 (one vertex),
- *    three runs of scripts/abbench.sh, 16, 30 and 40 runs a binary:
- *    +0.049 +- 0.040, +0.043 +- 0.035, -0.015 +- 0.034, no difference
- *    the bench can tell.
- * Beyond DD_WRAP_CODE_LEN - 1 neighbours there are no words: the wrap
- * declines (dd_wrap_fill).  In w_run a cell's facets take the key of its
- * four corners less one (a word is its own inverse under ^).
- * Open addressing, at most half full; every record has its entry, so
- * the table grows with the records and takes them again (w_ftab_grow).
- * Against the vertex-triple hash of mesh.h (with gid[n] and the inline
- * w_reserve_recs): uniform degree 24-31, 60.8k -> 57.0k instructions a
- * deletion, deletion / re-insertion 1.95 -> 1.85 (8 alternated runs of
- * 100 vertices); helix n = 4 000, degree 64-127, 230k -> 226k and 1.99
- * -> 1.89 (sorted keys there).  Keys that are symmetric functions of the
- * corners (sum, sum of squares and product, for n < 1024: no sort
- * either) took 0.9% more instructions than sorting on the helix; the
- * same table probed with one branch (& for &&), a quarter full, took
- * more instructions and ran no faster.                                 */
 
 #define W_CODE_M 21
 #define W_CODE_POLY ((1u << W_CODE_M) | (1u << 2) | 1u)   /* x^21 + x^2 + 1 */
 _Static_assert(DD_WRAP_CODE_LEN == (1u << W_CODE_M) - 1, "wrap: the code's length");
 
+/* x times alpha^times in GF(2^21): shift, and reduce by x^21 + x^2 + 1. */
 static inline uint32_t w_gf_times_alpha(uint32_t x, int times)
 {
     for (int i = 0; i < times; i++) {
@@ -59,8 +47,9 @@ void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t 
     }
 }
 
-/* The code words for local numbers below count (< DD_WRAP_CODE_LEN),
- * made once: the wrap keeps them for the next deletions.               */
+/* The code words of local numbers below count (< DD_WRAP_CODE_LEN), made
+ * once: the wrap keeps them for the next deletions.  O(count) the first
+ * time, O(1) after.                                                     */
 dd_status w_code_reserve(struct dd_wrap *w, uint32_t count)
 {
     if (count <= w->ncode) return DD_OK;
@@ -80,7 +69,9 @@ static const uint64_t w_bit_words[64] = {
 #undef W_B4
 };
 
-/* Empties the table, sized for about `expect` records. */
+/* Empties the table, sized for about `expect` records at most half full,
+ * and picks the keys' words for this cavity's n + 1 local numbers.  O(1)
+ * but for a larger table.                                               */
 dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
 {
     void *fs = w->fs;
@@ -91,7 +82,7 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
     return s;
 }
 
-/* Doubles the table and enters the records again. */
+/* Doubles the table and enters the records again: O(records).         */
 static dd_status w_ftab_grow(struct dd_wrap *w)
 {
     dd_status s = w_ftab_reset(w, w->fs_mask + 1);
@@ -102,6 +93,8 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
     return s;
 }
 
+/* Room for `more` more records: the record arrays doubled as needed,
+ * then the table until it is at most half full (w_reserve_recs).       */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
     if (w->nrec + more > w->cap_rec) {

@@ -1,15 +1,21 @@
 /*
- * guess.c -- the guesses of the gift wrap.
+ * guess.c -- the narrow guesses of the gift wrap and the known neighbours
+ * they take their candidates from (docs/gift-wrap.md §6).
+ *
+ * Owns: the known-neighbour lists (w->adj, w->nadj: up to W_ADJ_CAP per
+ * local number, none for a hub) and the candidates of a facet (w->cand,
+ * marked in w->seen by stamp).  w_open_link starts the lists from the
+ * link (w_adj_link, wrap_int.h) and w_run adds the edges of each new
+ * finite cell (w_adj_edge).  The wide guess (wrap_guess, wrap_int.h;
+ * simd.c) and the guess course of a facet (w_guess_apex, run.c) are
+ * inlined where they run.
+ *
+ * Invariant: the lists hold the link's edges, which are edges of
+ * DT(S \ q), and the edges of the fill cells made so far, which are if
+ * the guess is right; a wrong candidate only makes a wrong guess, which
+ * the proof refutes.  Each list holds a neighbour once.
  */
 #include "wrap/wrap_int.h"
-
-/* Known neighbours.  The fill cell on facet abc is a cell of DT(S \ q),
- * so its point is a neighbour of a, b and c there.  Edges of DT(S \ q)
- * known during the wrap: the link's (they bound cells outside the
- * cavity) and those of the fill cells made so far.  Each point keeps its
- * known neighbours in a short list, or none once it has more than
- * W_ADJ_CAP (a hub).                                                   */
-
 
 /* Whether v is among k's known neighbours (k not a hub).                */
 static inline int w_adj_has(const struct dd_wrap *w, uint32_t k, uint32_t v)
@@ -20,7 +26,8 @@ static inline int w_adj_has(const struct dd_wrap *w, uint32_t k, uint32_t v)
     return 0;
 }
 
-/* Records edge (k, v) of a new fill cell, unless known (or between hubs). */
+/* Records edge (k, v) of a new fill cell, unless known or between hubs.
+ * O(W_ADJ_CAP).                                                         */
 void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v)
 {
     if (w->nadj[k] == W_ADJ_FULL && w->nadj[v] == W_ADJ_FULL) return;
@@ -41,24 +48,20 @@ static inline uint32_t w_take_list(struct dd_wrap *w, uint32_t k, uint32_t nc)
     return nc;
 }
 
-/* The narrow guess on finite facet (a, b, c), pencil m, N, T: the least
- * t/o, as wrap_guess's, over candidates taken from the known neighbours,
- * the points of unsure orientation among them decided as there
- * (w_scan_exact on the same points).
- *  - DD_GUESS_SHORT: the lists of the corners that are at most 4s + 8
- *    long, s the shortest (a hub's are not used).  On the curves the
- *    wrap's order has met the edge from the cell's point to a corner of
- *    short list before nearly every cell: moment n = 128-1024, every cell
- *    with 2 candidates a facet; helix n = 4000-64000, degree 64-768, all
- *    but one cell in ~5000, with 2.4-4.6 candidates.
- *  - DD_GUESS_TWO_STEP: those lists and the lists of their points (that
- *    one cell: its point was a neighbour of the two hubs of its facet
- *    only, and of a neighbour of the third corner).
+/* The narrow guess on finite facet (a, b, c), pencil m, N, T (docs §6
+ * NARROW): the least t/o, as wrap_guess's, over candidates taken from the
+ * known neighbours, its points of unsure orientation decided exactly
+ * among the same candidates (w_scan_exact).
+ *  - DD_GUESS_SHORT: the lists of the corners at most 4s + 8 long, s the
+ *    shortest (a hub has none).  On the curves the depth-first wrap has
+ *    nearly always met the edge from the apex to a corner of short list.
+ *  - DD_GUESS_TWO_STEP: those lists and the lists of their points, for an
+ *    apex that is a neighbour of its facet's hubs only and of a neighbour
+ *    of the third corner.
  * W_NONE when every corner is a hub or no candidate is beyond abc: the
- * wide guess (wrap_guess) decides that facet.  A wrong point only makes
- * the proof refute the guess.                                           */
-uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                               const double m[6], const double N[4], const double T[4])
+ * wide guess decides that facet.  O(candidates).                         */
+uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
+                        const double N[4], const double T[4])
 {
     const uint32_t v[3] = {a, b, c};
     uint32_t s = W_ADJ_FULL;
@@ -70,10 +73,10 @@ uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, 
         w->stamp = 1;
     }
     w->seen[a] = w->seen[b] = w->seen[c] = w->stamp;
-    uint32_t nc = 0, bound = w->narrower ? s : 4 * s + 8;
+    uint32_t nc = 0, bound = W_NARROWER(w) ? s : 4 * s + 8;
     for (int i = 0; i < 3; i++)
         if (w->nadj[v[i]] <= bound) nc = w_take_list(w, v[i], nc);
-    for (uint32_t i = 0, n1 = nc; w->narrow == DD_GUESS_TWO_STEP && !w->narrower && i < n1; i++)
+    for (uint32_t i = 0, n1 = nc; w->narrow == DD_GUESS_TWO_STEP && !W_NARROWER(w) && i < n1; i++)
         if (w->nadj[w->cand[i]] != W_ADJ_FULL) nc = w_take_list(w, w->cand[i], nc);
     uint32_t uns, best = w_least_ratio(w, a, N, T, w->cand, nc, &uns);   /* a, b, c not among them */
     if (best != W_NONE && best != W_TIE && uns) best = w_scan_exact(w, pr, a, b, c, m, best, 1, w->cand, nc);

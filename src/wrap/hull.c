@@ -1,12 +1,21 @@
 /*
- * hull.c -- the hull step of the gift wrap.
+ * hull.c -- the hull step of the gift wrap (docs/gift-wrap.md §5): the
+ * fill cell on an open facet through the infinite vertex, by a Jarvis
+ * step around its hull edge, and w_all_behind, the test that makes a
+ * finite facet a facet of the hull of the neighbours.
+ *
+ * Invariant: a hull step's answer is certified (every other point surely
+ * behind the new hull facet in doubles or exactly, and the points of its
+ * plane checked by the perturbed in-circle rules), so the proof of a
+ * guessed fill takes it as it is (§7, property 5).  A step that its
+ * checks do not settle bails (W_BAIL): the wrap declines.
  */
 #include "wrap/wrap_int.h"
 
-/* Whether the points before `end`, but x, y, z, are surely behind the
- * plane of normal N through y (rows from y; o evaluated as in wrap_scan,
- * whose test this is).  With end = n and the corners of facet (x, y, z):
- * then the facet is a facet of the hull of the neighbours.              */
+/* Whether every point k < end but x, y, z is surely behind the plane of
+ * normal N through y (o < -oerr, rows from y, o as w_row_o: the scans'
+ * test).  With end = n and facet (x, y, z): the facet is a facet of the
+ * hull of the neighbours.  O(end), four points a vector with AVX2.      */
 int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end)
 {
 #ifdef W_AVX2
@@ -17,13 +26,12 @@ int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, co
     return 1;
 }
 
-/* The fill cell on open facet (a, b, INF) (local numbers, rotated so that
- * the infinite vertex comes last): the cell (a, b, INF, p) whose hull
- * facet (b, a, p) has no point beyond it and, among the points of its
- * plane, none in the perturbed circle of b, a, p (the conflict test of
- * the infinite cell: a flat face of the hull, a grid's or a cosphere's,
- * is triangulated by the coplanar in-circle rules).  Orientations are
- * filtered as in the scans (w_orient), else exact.
+/* The apex p of open facet (a, b, INF) (docs §5 HULLSTEP), the infinite
+ * vertex last: the cell (a, b, INF, p) whose hull facet (b, a, p) has no
+ * point beyond it and, among the points of its plane, none in the
+ * perturbed circle of b, a, p (the conflict test of the infinite cell: a
+ * flat face of the hull is triangulated by the coplanar in-circle rules).
+ * Orientations are filtered as in the scans (w_orient), else exact.
  *  1. Seen along the hull edge ab, the points lie in a wedge of at most a
  *     half-turn, and "x beyond the plane of b, a, p" orders them by
  *     angle: one pass keeping the point furthest round (Jarvis) finds the
@@ -41,8 +49,10 @@ int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, co
  *     the perturbed circles through a and b: one pass keeping the point
  *     in conflict with the best so far, then a check that none is.
  * W_BAIL, left to the conflict DT, when every point is in one plane or a
- * check fails.  With single-precision lifts, step 1 is first guessed in
- * floats (w_inf_f32) and taken when its check passes.                   */
+ * check fails; W_NONE when every point is on line ab.  With the float
+ * lifts, step 1 is first guessed in floats (w_inf_f32) and taken when
+ * its check passes in doubles.  O(n) a pass: one or two passes and the
+ * check; on flat faces a few more, with exact tests.                    */
 uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
 {
     const double *const *pt = w->pt;
@@ -51,10 +61,7 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
 #ifdef W_AVX2
     if (w->flift_ok) {                               /* step 1 guessed (w_inf_f32) */
         uint32_t p = w_inf_f32(w_flift(w), w->n, a, b);
-#ifdef DD_TEST_BUILD
-        /* a wrong point (tests: wrap-single): refused                   */
-        if (p < w->n && w->f32_spoil) p = (p + 1) % w->n;
-#endif
+        if (p < w->n && W_F32_SPOIL(w)) p = (p + 1) % w->n;   /* tests: refused */
         if (p < w->n && p != a && p != b) {
             w_normal(w, b, a, p, N);
             if (w_all_behind(w, a, b, p, N, w->n)) { w->inf_kept++; return p; }
@@ -81,9 +88,8 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
     }
     if (best == W_NONE) return W_NONE;
     /* The check (w_all_behind: every point but a, b, best surely behind),
-     * on the points before `last` only when every one after it was
-     * passed surely behind by the same test: on the helix (every point on
-     * the hull) the check was half of these passes.                    */
+     * on the points before `last` only when the pass met every one after
+     * it surely behind the final plane already.                         */
     if (w_all_behind(w, a, b, best, N, met ? w->n : last)) return best;
     int flat = 0;
     double *mark = w->o;

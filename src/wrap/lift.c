@@ -1,5 +1,20 @@
 /*
- * lift.c -- the lifts and the filters' bounds of the gift wrap.
+ * lift.c -- the lifts of the gift wrap and its filters' bounds
+ * (docs/gift-wrap.md §2, §8).
+ *
+ * Owns: the rows L[k] = (x_k - q, |x_k - q|^2) of the neighbours, in
+ * doubles (w->lift) and, for the single-precision passes, in floats in
+ * units of m (w->flift); the shifted lifts; the error bounds ierr
+ * (in-sphere) and oerr (orientation) and the integer modes (w->exact,
+ * oexact, kexact).
+ *
+ * Invariant: every determinant the wrap certifies with is evaluated from
+ * these rows with at most the roundings counted below, so a value beyond
+ * its bound has the sign of the exact determinant; a bound of 0 means
+ * that the evaluation is exact, +inf that there is no filter (every sign
+ * goes to the exact predicates, and nothing is guessed).  The lifts are
+ * padded with NaN to a multiple of four (doubles) and of eight (floats)
+ * for the AVX2 passes.
  */
 #include "wrap/wrap_int.h"
 
@@ -40,12 +55,13 @@ void w_lift(struct dd_wrap *w, const double *q)
     w->lex_ok = 0;
 }
 
-/* The single-precision lifts (w_guess_f32_avx2): x_k - q over m and
- * |x_k - q|^2 over m^2 (at most 1 and 3), rounded to floats, padded with
- * NaN to a multiple of eight; and the scales that take N and T (w_pencil)
- * to the same units: N's entries are at most 8m^2, T's are O(m^5) (xyz)
- * and O(m^4) (lift), so that o and t are O(1) or less there.  Only for
- * 1e-50 <= m <= 1e50 (dd_wrap_fill): no overflow of the scales.        */
+/* The single-precision lifts (simd.c): x_k - q over m and |x_k - q|^2
+ * over m^2 (at most 1 and 3), rounded to floats, padded with NaN to a
+ * multiple of eight; and the scales that take N and T (w_pencil) to the
+ * same units: N's entries are at most 8m^2, T's O(m^5) (xyz) and O(m^4)
+ * (lift), so that o and t are O(1) or less there.  Only for 1e-50 <= m
+ * <= 1e50 (w->flift_ok): the scales do not overflow.  Only ranks: every
+ * answer of the float passes is checked in doubles.  O(n).             */
 void w_lift_f32(struct dd_wrap *w)
 {
     const double s = 1.0 / w->m, s2 = s * s;
@@ -61,15 +77,15 @@ void w_lift_f32(struct dd_wrap *w)
     }
 }
 
-/* Shifted lifts (qsmall.c's, whose bound they keep: the determinants of
- * wrap_scan have the same entries and at most as many roundings), for
- * nearly cospherical cavities where the plain filter abstains.  Tried
- * once per deletion, with at least DD_SHIFT_FROM neighbours (below that
- * the exact expansions of the shift cost more than the tests they save,
- * as in qsmall.c): when a guess over every neighbour is refuted, which
- * is then made again (dd_wrap_fill), or when a fast scan first fails its
- * check, which is then run again.  0 when the shift is no tighter (the
- * lifts are kept).                                                      */
+/* Switches to the shifted lifts (docs §8; qsmall.c's dd_shift_lifts,
+ * whose bound holds here: the same entries, at most as many roundings)
+ * for nearly cospherical cavities, where the plain filter abstains: the
+ * lift becomes about the distance from a sphere through q and three
+ * neighbours.  Once per deletion (w->shifted), from DD_SHIFT_FROM
+ * neighbours on (below, the shift's exact expansions cost more than the
+ * tests they save): after a refuted wide guess, which is made again, or a
+ * fast scan's failed check, which is scanned again.  1: the bound is
+ * tighter and the lifts replaced; 0: the lifts kept.  O(n) expansions.  */
 int w_shift(struct dd_wrap *w)
 {
     w->shifted = 1;

@@ -1,15 +1,33 @@
 /*
- * run.c -- the wrap itself.
+ * run.c -- the wrap (docs/gift-wrap.md §3 WRAP): the link triangles
+ * opened as the first facet records, then the fill cells found one at a
+ * time from the open facets, made in the mesh and glued to each other.
+ *
+ * Owns: the facet records (w->tri, own, out, closed, stack), the fill's
+ * cells in local numbers (w->lcell), the star's cells kept aside
+ * (w->keep), and the matching handed to the sew (d->sew_out).
+ *
+ * Invariant: the k-th fill cell (d->fill.a[k]) is written over the k-th
+ * star cell and, past the star, into new cells, and nothing outside the
+ * cavity points at a fill cell before the sew, so w_drop_fill restores
+ * the mesh exactly as it was, whatever a wrap did.  An open record has
+ * its unknown cell on its positive side; a triangle bounds at most two
+ * cells; a link triangle is closed at most once.  The start facet
+ * depends on vertex ids only, so a deletion repeated is the same
+ * computation.
  */
 #include "wrap/wrap_int.h"
 
+/* The error of a wrap that cannot close, which only a broken
+ * triangulation makes (the caller restores the mesh).                   */
 static dd_status w_broken(dd_del *d, const char *what)
 {
     return dd_fail(d->t, DD_ERR_INTERNAL, "gift wrapping the cavity of point %u: %s", d->t->v2in[d->q], what);
 }
 
 /* Room for `room` fill cells in all, `made` of them made already (in the
- * star's cells, then in new ones: see w_run).                          */
+ * star's cells, then in new ones): cells in the mesh, d->fill,
+ * d->sew_out and w->lcell.                                              */
 static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_t room)
 {
     const size_t S = d->star.n, more = (room > S ? room - S : 0) - (made > S ? made - S : 0);
@@ -49,37 +67,27 @@ void w_drop_fill(dd_del *d, struct dd_wrap *w)
     d->fill.n = 0;
 }
 
-/* Opens the link triangles, oriented towards q, as the first records (all
- * in the table) and returns the record the wrap starts from, *start: of
- * the triangles through `lead`, the neighbour of least vertex id (for a
- * hull vertex the infinite vertex, so that the wrap's first step is
- * w_scan_inf: where it cannot settle the hull, W_BAIL, every
- * neighbour in one plane or one of its checks failing, the wrap declines
- * before any other work), the one whose two other corners have the
- * least ids, rotated to begin with its least id.  That choice goes by
- * vertex ids, not by the local numbers (the order in which collect_star
- * met the neighbours), so the whole wrap, and so the order and rotation
- * of the fill cells, does not depend on how the star was stored: the
- * same deletion repeated is the same computation (the facet table's
- * layout and the guesses' lanes apart, which decide nothing).  The
- * neighbours were sorted by id for that before (a rank sort, 2% of a
- * deletion at bunny degree 72, callgrind).
- * With hub not NULL it also makes the known neighbours at the start (see
- * w_guess_narrow): the link's edges between finite vertices.  The link
- * triangles make a closed oriented surface, where each edge is met once
- * in each direction: each triangle gives each corner the next one, and
- * every neighbour of a vertex comes once.  *hub: whether the link has a
- * hub.                                                                   */
+/* Opens the link triangles, oriented towards q (their other side: the
+ * mesh facet outside the cavity), as the first records, all in the
+ * table, and returns the record to wrap from, *start: of the triangles
+ * through `lead` (for a hull vertex the infinite vertex, so that the
+ * first step is the hull step and a flat hull bails before any other
+ * work; else the neighbour of least vertex id), the one whose other
+ * corners have the least ids, rotated to begin with its least id.  The
+ * choice goes by vertex ids, not local numbers, so the wrap does not
+ * depend on how the star was stored.  With hub not NULL it also starts
+ * the known-neighbour lists from the link's edges (each triangle gives
+ * each finite corner its successor: the link is a closed oriented
+ * surface, so each neighbour comes once) and sets *hub when the link has
+ * a hub.  Drops the fill made so far first.  O(d).                        */
 dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
 {
     dd_tri *t = d->t;
     const uint32_t n = w->n, inf = n;
     w_drop_fill(d, w);   /* d->qdt is not reset: the wrap uses only its predicates */
     w->nrec = 0;
-    /* Sized for 6n records: a wrap opens 2.9n (the curves) to 4.7n
-     * (uniform points, degree 48-63: up to 5.2n) with the link's; sized
-     * for 4n, the table grew and took its records again in most wraps
-     * there (callgrind: 2.5% of a deletion).                             */
+    /* Sized for 6n records: a wrap opens about 3n to 5n, the link's
+     * included (docs §11), so the table seldom grows in a wrap.          */
     dd_status s = w_ftab_reset(w, 6 * (size_t)n);
     if (s != DD_OK) return s;
     if ((s = w_reserve_recs(w, d->star.n)) != DD_OK) return s;
@@ -126,11 +134,9 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
     }
     if (w->nrec == 0) return w_broken(d, "no link triangle");
     if (hub) {
-        /* Without the last link's hub the puts were counted only (on
-         * uniform points and the bunny, no hubs, they were a third of this
-         * function); the lists are made here, from the records, where a
-         * count shows a hub.  A pass of its own: testing each put cost 25%
-         * more (callgrind).                                              */
+        /* Unless the last link had a hub, the loop only counted the puts
+         * (cheaper where links have none, as on uniform points); where a
+         * count shows a hub, the lists are made here, from the records.  */
         *hub = 0;
         for (uint32_t k = 0; k < n && !*hub; k++) *hub = w->nadj[k] == W_ADJ_FULL;
         if (*hub && !puts) {                     /* the lists, from the records */

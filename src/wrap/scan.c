@@ -1,11 +1,27 @@
 /*
- * scan.c -- the certified scans of the gift wrap.
+ * scan.c -- the certified scans of the gift wrap (docs/gift-wrap.md §4)
+ * and the perturbed tests on local numbers (§1, §8).
+ *
+ * Owns: the fast scan (wrap_scan: one pass without data-dependent
+ * branches, then a check of its candidate), the exact scan (w_scan_exact:
+ * each decision filtered, else exact), the scan of cospherical neighbours
+ * (wrap_scan_cosph), the flat-hull check (w_flat_hull), the test that the
+ * neighbours are cospherical (w_cospherical), and CGAL's symbolic
+ * perturbation evaluated on local numbers, with lexicographic ranks made
+ * once per deletion (w_symbolic, w_conflicts_near).
+ *
+ * Invariant: every answer is the apex that the exact perturbed predicates
+ * define; a sign is acted on only when a filter of lift.c certifies it,
+ * integer arithmetic makes it exact, or src/geom/ decides it.  The tests
+ * that the wrap's filters leave to the predicates are counted in
+ * w->nexact, for the budget (w_spent).
  */
 #include "wrap/wrap_int.h"
 
 /* Lexicographic ranks of the neighbours (w->lexr), made the first time
  * the perturbation is asked this deletion: index sort by dd_lex_cmp,
- * insertion while short, else bottom-up merges through w->tmp.          */
+ * insertion while short, else bottom-up merges through w->tmp.
+ * O(n log n) comparisons.                                               */
 static void w_lex_ranks(struct dd_wrap *w)
 {
     const uint32_t n = w->n;
@@ -65,17 +81,19 @@ static int w_symbolic_from(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4],
     return dd_lift_symbolic(rk, from, w_sym_orient, &c);
 }
 
+/* The perturbation's sign for y and cell lv: w_symbolic_from its start. */
 static inline int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], uint32_t y)
 {
     return w_symbolic_from(w, pr, lv, y, 0);
 }
 
-/* Whether point y is in conflict with fill cell (a, b, c, p) (local
- * numbers, positively oriented), K being w_cofactors of L[p] - L[a] with
- * the minors of abc (w_pencil): the filtered determinant of wrap_scan's
- * check, else the exact perturbed test.                               */
-__attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4],
-                                                       const double K[4], const double P[4], uint32_t y)
+/* w_conflicts where its filter abstains, out of line so that the rare
+ * path stays out of the callers' loops: with integer cofactors the sign
+ * of K . P in 128-bit integers (dd_lift_sign_kp; 0 with integer lifts,
+ * whose bound is 0), a 0 going to w_symbolic; else the exact perturbed
+ * in-sphere test, counted in w->nexact.  P = L[y] - L[lv[0]].           */
+__attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4],
+                                               const double P[4], uint32_t y)
 {
     const double *const *pt = w->pt;
     if (w->kexact) {
@@ -87,12 +105,13 @@ __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, c
 }
 
 /* Whether finite facet (a, b, c), with no point beyond it but some in its
- * plane, is a facet of the hull: no point of its plane in the perturbed
- * circle of a, b, c (the conflict test of the infinite cell (a, b, c,
- * INF), as in the conflict DT); else W_BAIL.  The points beyond none, the
- * cell on the facet's positive side can only be infinite; the check keeps
- * the wrap from building on a hull triangle that the coplanar rules of the
- * perturbation would split otherwise.                                    */
+ * plane, is a facet of the hull (docs §4 FLATHULL): W_NONE when no point
+ * of its plane is in the perturbed circle of a, b, c (the conflict test
+ * of the infinite cell (a, b, c, INF), as in the conflict DT), else
+ * W_BAIL.  With no point beyond, the cell on the facet's positive side
+ * can only be infinite; the check keeps the wrap from building on a hull
+ * triangle that the perturbation's coplanar rules would split.  O(n)
+ * exact tests.                                                          */
 static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
 {
     const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], NULL};
@@ -103,19 +122,18 @@ static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t
     return W_NONE;
 }
 
-
-
-/* The exact scan: one pass keeping the best point so far, each test
- * filtered (bounds of w_lift) and else decided by the exact perturbed
- * predicates.  Its branches depend on the data, which costs where the
- * pattern is new: wrap_scan runs it only when the fast scan cannot
- * certify its answer.  It starts from `best` (W_NONE: none yet); with
- * `unsure_only` it takes the points surely beyond as already compared
- * (the guess's minimum, best) and decides only those of unsure
- * orientation (see wrap_guess).                                         */
-uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
-                                const double m[6], uint32_t best, int unsure_only, const uint32_t *ks,
-                                uint32_t nk)
+/* The exact scan (docs §4 SCAN_EXACT) of facet (a, b, c), minors m: one
+ * pass over ks[0..nk) (NULL: 0..nk) keeping the best point beyond abc so
+ * far, each orientation and conflict filtered (lift.c) and else decided
+ * exactly.  It starts from `best` (W_NONE: none yet); with `unsure_only`
+ * it takes the points surely beyond as compared already (best is the
+ * guess's minimum among them) and decides only those of unsure
+ * orientation, with AVX2 found four at a time (w_next).  No point beyond
+ * but some in the plane: w_flat_hull's answer.  Its branches follow the
+ * data, so wrap_scan runs it only when its own check fails.  O(nk)
+ * tests.                                                                */
+uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
+                      uint32_t best, int unsure_only, const uint32_t *ks, uint32_t nk)
 {
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
@@ -162,28 +180,20 @@ static inline int w_orient_counted(struct dd_wrap *w, dd_pred *pr, const double 
     return w_sign_o(w, pr, o, a, b, c, k);
 }
 
-/* The scan for cospherical neighbours (w->cosph): the point beyond abc
- * that w_symbolic prefers to every other, found with the ranks first.
- * With y and the best so far, x, both beyond abc, w_symbolic's first
- * step looks at the largest of the five ranks:
- *  - y's: y is outside (x stays); x's: y is inside (orient3d(a, b, c, y)
- *    > 0 in x's place), so among points ranked above every corner the
- *    least ranked wins, and any point ranked below the top corner beats
- *    them all;
- *  - the top corner's, say a's: the sign of orient3d(y, b, c, x), which
- *    is orient3d(c, b, x, y) (in general orient3d(u0, u1, x, y) with u0,
- *    u1 the other corners, in the order below): one evaluation against
- *    the normal of the plane of u0, u1, x, kept until x changes; 0 (five
- *    points on one circle) goes to w_symbolic's second step (the first
- *    is this orientation: cosphere degree 64-95, the vertices with many
- *    circles took 2.4x a re-insertion, two fifths in w_symbolic).
- * So a first pass takes the points ranked below the top corner, and only
- * if none is beyond does a second take the least ranked of the others.
- * Each answer is w_symbolic's (the same orientations, exact or filtered
- * as w_orient's), so the point is the one w_scan_exact finds; at the
- * cosphere's degree 82 (1.7M instructions a deletion, three quarters in
- * the exact scan, two fifths in its w_symbolic calls, each making the
- * normal of a plane through y) a deletion costs less than half of that. */
+/* The scan for cospherical neighbours (w->cosph, docs §4): every
+ * in-sphere determinant is 0, so the apex is the point beyond abc that
+ * w_symbolic prefers to every other.  For x the best so far and y a
+ * candidate, both beyond abc, w_symbolic's first step looks at the
+ * largest of the five ranks: y's, y is outside; x's, y is inside; so
+ * among points ranked above every corner the least ranked wins, and any
+ * point ranked below the top corner beats them all.  The top corner's:
+ * the sign of orient3d(u0, u1, x, y), u0, u1 the other corners in cyclic
+ * order, one evaluation against the normal of plane (u0, u1, x), kept
+ * until x changes; a 0 (five points on a circle) goes to w_symbolic's
+ * second step.  So a first pass takes the points ranked below the top
+ * corner, and only if none is beyond does a second take the least ranked
+ * of the others.  Each answer is w_symbolic's, so the apex is
+ * w_scan_exact's.  O(n) orientations.                                    */
 static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c,
                                 const double N[4])
 {
@@ -222,15 +232,14 @@ static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
     return best == W_NONE && zero ? w_flat_hull(w, pr, a, b, c) : best;
 }
 
-/* The fast scan, without data-dependent branches: o and t for every
- * point, the minimum of t/o in doubles, then a check of that candidate x
- * with the filtered determinant w(x, p) for every other point p on the
- * positive side.  The check proves the answer (every such p surely
- * outside the sphere of a, b, c, x; every orientation sure); when it
- * cannot, w_scan_exact decides.  Rounding (or overflow) in t/o can
- * only make the check fail, never pass a wrong point.  (Written with
- * SSE2 vectors, two points at a time, it ran 10% slower: register
- * spills.)                                                               */
+/* The fast scan (docs §4 SCAN), without data-dependent branches: o and t
+ * for every point, the least t/o beyond abc, then a check of that
+ * candidate x with the filtered determinant w(x, p) for every other point
+ * p beyond.  The check proves the answer (every such p surely outside the
+ * sphere of a, b, c, x; every orientation sure); rounding or overflow in
+ * t/o can only make it fail.  Then W_SHIFT, once per deletion from
+ * DD_SHIFT_FROM neighbours on, else w_scan_exact.  Cospherical
+ * neighbours: wrap_scan_cosph.  Two passes, O(n).                        */
 static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
 {
     double *const *L = w->lift;
@@ -287,15 +296,15 @@ uint32_t w_scan_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uin
     return p == W_NONE && on_hull ? w->n : p;
 }
 
-/* Whether every neighbour lies on one sphere, exactly: the sphere of a
- * link triangle's corners and a first point off its plane holds each of
- * the others (in-sphere 0).  Then every in-sphere determinant of the
- * scans is 0 (five lifted points of one sphere lie in one hyperplane),
- * and the scans ask the perturbation alone (wrap_scan_cosph): integer
- * points of a sphere (the cosphere set), where the exact stages cost
- * most of a deletion otherwise.  The tests are the scans' (w_orient, and
- * the lifted determinant filtered by ierr, else dd_insphere; with
- * integer lifts both exact), so generic points stop at the first one.  */
+/* Whether every neighbour lies on one sphere, exactly (docs §3
+ * COSPHERICAL): for the first finite link triangle abc among the first
+ * nlink records and the first point e off its plane, every other point's
+ * in-sphere determinant with a, b, c, e is 0.  Then every in-sphere
+ * determinant of the scans is 0, and they ask the perturbation alone
+ * (wrap_scan_cosph).  The tests are the scans' (w_orient; the lifted
+ * determinant filtered by ierr, else exact: in integers with w->kexact,
+ * else dd_insphere), so generic neighbours stop at the first point.
+ * O(n).                                                                  */
 int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
 {
     double *const *L = w->lift;

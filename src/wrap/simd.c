@@ -1,53 +1,41 @@
 /*
- * simd.c -- the gift wrap's AVX2 passes.
+ * simd.c -- the gift wrap's AVX2 passes (docs/gift-wrap.md §5, §6): the
+ * wide guess, full and lean, in doubles four points a vector; the lean
+ * guess and the hull step in single precision, eight points a vector;
+ * and the passes that look for the points near a plane (w_next_avx2,
+ * w_all_behind_avx2).
+ *
+ * Invariant: o is evaluated with w_row_o's operations lane by lane, bit
+ * for bit, so the orientation bound of lift.c covers these passes and a
+ * pass agrees with the scalar code on every point; a lane of the NaN
+ * padding is never a candidate, never unsure and never behind.  The
+ * single-precision passes only rank: each answer is checked in doubles
+ * (w_make_cell, w_all_behind) or refuted by the proof, and made again in
+ * doubles.  Called only when the CPU has AVX2 (w->avx2), the single-
+ * precision passes only when it has FMA too (w->flift_ok).
  */
 #include "wrap/wrap_int.h"
 
 #ifdef W_AVX2
 #include <immintrin.h>
 
-/* The single-precision guess (w_guess_f32_avx2) abstains when a point
- * other than the facet's corners lies within W_F32_BAND max|N_i| of its
- * plane (o in the float lifts' units, w_lift_f32): there the rounding of
- * the floats (about 1e-7 of o's terms) could move o past 0.            */
+/* The single-precision guess abstains when a point other than the
+ * facet's corners lies within W_F32_BAND max|N_i| of its plane (o in the
+ * float lifts' units): the rounding of the floats, about 1e-7 of o's
+ * terms, could move o past 0 there.                                     */
 #define W_F32_BAND 1e-6f
 
-/* The guessing scan (see dd_wrap_fill): the point beyond abc of least
- * t/o as in wrap_scan, and no check.  Only its orientation is sure: it is
- * beyond abc by more than the filter's bound, o being evaluated as in
- * wrap_scan.  The ratios are compared as quotients r = t/o (a guess needs
- * no exact order, and a running minimum of quotients keeps the loop's
- * carried dependency to one min, where comparing t x o' < t' x o chained
- * two products, a compare and a blend per step: the guess at degree ~150,
- * 0.93 -> 0.75 ns a point).  With AVX2, four points at a time in the same
- * operations (the same o and r, bit for bit); the lifts are padded with
- * NaN to a multiple of four, never beyond.  W_TIE when two candidates'
- * quotients are equal: on cospherical points (grids) the perturbation
- * decides such ties, which a guess would get wrong about half the time
- * (grid 20^3: 198 of 300 guesses refuted), so the scans wrap at once
- * (scanning only the tied facets in the guessed wrap, which then proves
- * every cell too, measured 6-10% slower on the grid, and 4x on the
- * cosphere, where the scans' perturbation-only mode was then found only
- * after a refutation: w_cospherical, now asked first with integer
- * cofactors, dd_wrap_fill).  *unsure: whether points other than a,
- * b, c had unsure orientations, |o| <= oerr (a, b, c themselves always
- * do: o(a) is exactly 0, o(b), o(c) within the bound).  w_run then has
- * w_scan_exact decide them exactly and compare those beyond with the
- * guess's choice: on nearly degenerate cavities (the helix, the moment
- * curve) a point nearly in a facet's plane can be its apex, and leaving
- * it out refuted the whole guess (helix n = 64000, degree 563: at cell
- * 315 of 567, on 5 of 6 vertices), which from 40 neighbours declines.
- * Counting them costs 3 of the loop's ~27 vector operations; the
- * non-candidates' quotient being NaN rather than +inf (never equal to
- * the least, nor less) saved one back: moment n = 256, 80.4 -> 87.4 ->
- * 82.8 us a deletion.  Dividing only where a point may reach the least
- * quotient so far rs (t - rs o within 1e-12 (|t| + |rs| o): 5% of the
- * vectors at moment degree 512, 39% at uniform degree ~20), with FMA for
- * o and t, ran 5% slower (perf, the guess's time over the re-insertions'
- * find_conflicts in one run: 6.30 -> 6.66): the loop's other operations
- * bound it, not the division.                                           */
-
-
+/* The wide guess (docs §6 WIDE), four points a vector: the point beyond
+ * the facet (o > oerr, o as w_row_o) of least quotient t/o, W_TIE when a
+ * quotient equals the least so far or two lanes end equal (only the
+ * perturbation could break such a tie: the guess is refuted at once),
+ * W_NONE when no point is beyond.  A point not beyond gets a NaN
+ * quotient, which is never equal to the least, nor less.  Quotients, not
+ * cross products: a guess needs no exact order, and a running minimum
+ * keeps the loop's carried dependency to one min.  *unsure (unless
+ * `lean`): whether points other than a, b, c have |o| <= oerr (a, b, c
+ * always do); w_guess_apex then decides those exactly.  The lifts are
+ * padded with NaN to a multiple of four.  O(n).                          */
 __attribute__((target("avx2"), always_inline)) static inline uint32_t
 w_guess_body(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4], double oerr, int *unsure,
              const int lean)
@@ -91,29 +79,20 @@ w_guess_body(double *const *L, uint32_t n, uint32_t a, const double N[4], const 
     return (uint32_t)vi[__builtin_ctz(at)];
 }
 
-__attribute__((target("avx2"))) uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a,
-                                                             const double N[4], const double T[4], double oerr,
-                                                             int *unsure)
+/* The full wide guess: w_guess_body counting the unsure orientations.  */
+__attribute__((target("avx2"))) uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4],
+                                                      const double T[4], double oerr, int *unsure)
 {
     return w_guess_body(L, n, a, N, T, oerr, unsure, 0);
 }
 
-/* The lean guess (w->lean): the wide guess without the count of unsure
- * orientations (three of the loop's ~29 vector operations), from
- * W_LEAN_FROM neighbours on where the orientations are not exact.  Such
- * points, nearly in a facet's plane, are the apex about never on generic
- * points, so w_run neither decides them exactly nor takes the pass as
- * proof that a hull facet has every point behind it (w_all_behind then
- * tests it: wrap_guess's *unsure is W_UNCOUNTED).  Where they matter (nearly
- * degenerate cavities) a lean guess is refuted, and the full one is made
- * (dd_wrap_fill: on shifted lifts first where those apply).  Callgrind, a deletion: uniform degree
- * 48-63 -1.9%, bunny 48-95 -2.6%, sphere unchanged; the perturbed grid of
- * the tests: 4 of 300 guesses proved only on the shifted lifts after a
- * refuted lean one.  Dropping the ties' test too saved 1.7% more there
- * but kept refuted guesses running on the sphere, where a tie ends them
- * at once (degree 64-95: +24%).                                         */
+/* The lean wide guess (w->lean, from W_LEAN_FROM neighbours on): no count
+ * of unsure orientations, so w_guess_apex neither decides such points
+ * exactly nor takes the pass as proof that a hull facet has every point
+ * behind it (w_all_behind does).  Where such a point is the apex the
+ * proof refutes the guess, and the full one is made (w_next_guess).     */
 __attribute__((target("avx2"))) uint32_t w_guess_lean_avx2(double *const *L, uint32_t n, uint32_t a,
-                                                                  const double N[4], const double T[4], double oerr)
+                                                           const double N[4], const double T[4], double oerr)
 {
     int unsure;                                      /* not counted */
     return w_guess_body(L, n, a, N, T, oerr, &unsure, 1);
@@ -128,39 +107,18 @@ __attribute__((target("avx2"))) static inline uint32_t w_hsum_epi32(__m256i x)
     return (uint32_t)_mm_cvtsi128_si32(s);
 }
 
-/* The single-precision guess (w->f32): the lean guess (the point beyond
- * the facet of least t/o) over the float lifts (w_lift_f32), eight
- * points a vector where the double one takes four.  o and t are the
- * lifts' dot products with N and T less a's, in fused multiply-adds
- * (the f32 guess is made only on CPUs with FMA: 3 and 4 operations
- * where products and sums took 5 and 7; uniform degree 48-63, a
- * deletion 3% faster, callgrind -2%); o(a) is then a rounding error,
- * well inside the band.  It
- * abstains (W_NONE: the guess is made in doubles, wrap_guess) when a
- * point other than a, b, c lies within `band` of the plane, where the
- * floats could misplace it, or when two lanes tie.  With no point beyond
- * and none in the band it answers W_BEHIND, a hull facet, which w_run
- * then proves in doubles (w_all_behind; the lean guess in doubles made
- * before it found the same, 1.2% of a deletion at uniform degree 48-63,
- * hull vertices).  Its answer
- * is a guess like any other: w_run checks in doubles that the point is
- * beyond the facet, and the proof (local Delaunay facets, the cells
- * meeting as a triangulation) refutes a wrong one, which is then made
- * again in doubles in full (dd_wrap_fill).  Nothing else rests on the
- * floats.  Their errors (about 1e-7 of the terms) reorder two points
- * whose quotients differ by less: over the 1 998 vertices of degree 24
- * or more of the uniform set (n = 10^5) that refuted no guess, over the
- * bunny's 1 901 one, and 11 more of 300 wraps of the sphere (whose lean
- * guesses are refuted anyway, 278 of 300); 53 of the uniform set's
- * 84 000 guesses abstained.  Callgrind, uniform degree 48-63: the
- * guess's loop 5.07M -> 2.59M instructions for 140 deletions.  The
- * points not beyond get a NaN quotient from an all-ones o (no blend), the
- * band's count is made in integers, and the lane's number is read from
- * memory: 10% less time a guess alone (same answers on 4096 facets), and
- * with w_inf_f32's change 2-3% of the bench's deletion / re-insertion.  */
-__attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_guess_f32_avx2(float *const *F, uint32_t n,
-                                                                                    uint32_t a, const float nf[3],
-                                                                                    const float tf[4], float band)
+/* The lean guess in single precision (docs §6), eight points a vector,
+ * over the float lifts F with the pencil nf, tf in their units: the point
+ * beyond the facet of least t/o, o and t as fused multiply-adds less a's
+ * (o(a) is then a rounding error, well inside the band).  It abstains,
+ * W_NONE, when a point other than a, b, c lies within `band` of the plane
+ * (where the floats could misplace it) or two lanes tie; with no point
+ * beyond and none in the band it answers W_BEHIND (a hull facet, which
+ * w_all_behind then proves in doubles).  A point not beyond gets an
+ * all-ones o, a NaN quotient that neither compares below the least nor
+ * is taken by the min; the band's count is made in integers.  O(n).      */
+__attribute__((target("avx2,fma"), always_inline)) static inline uint32_t
+w_guess_f32_avx2(float *const *F, uint32_t n, uint32_t a, const float nf[3], const float tf[4], float band)
 {
     const __m256 n0 = _mm256_set1_ps(nf[0]), n1 = _mm256_set1_ps(nf[1]), n2 = _mm256_set1_ps(nf[2]);
     const __m256 t0 = _mm256_set1_ps(tf[0]), t1 = _mm256_set1_ps(tf[1]), t2 = _mm256_set1_ps(tf[2]),
@@ -175,7 +133,7 @@ __attribute__((target("avx2,fma"), always_inline)) static inline uint32_t w_gues
     const __m256 an = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(A0, n0), _mm256_mul_ps(A1, n1)), _mm256_mul_ps(A2, n2));
     const __m256 at = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(A0, t0), _mm256_mul_ps(A1, t1)),
                                     _mm256_add_ps(_mm256_mul_ps(A2, t2), _mm256_mul_ps(A3, t3)));
-    __m256 br = _mm256_set1_ps(INFINITY);        /* 1.0f / 0.0f was a division at run time */
+    __m256 br = _mm256_set1_ps(INFINITY);        /* a constant: 1.0f / 0.0f divides at run time */
     __m256i bi = _mm256_setzero_si256(), out = _mm256_setzero_si256(), kv = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     uint32_t k = 0;
     for (; k < n; k += 8) {
@@ -219,12 +177,11 @@ __attribute__((target("avx2"))) static inline __m256d w_o4_avx2(double *const *L
     return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(P0, n0), _mm256_mul_pd(P1, n1)), _mm256_mul_pd(P2, n2));
 }
 
-/* w_next with AVX2: four points at a time, o as w_row_o has it (the
- * same operations, bit for bit); a lane of the NaN padding past n is
- * never unsure, never behind, and is returned as n.                     */
-__attribute__((target("avx2"))) uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a,
-                                                            const double N[4], double oerr, uint32_t from,
-                                                            int unsure)
+/* w_next_to with AVX2, four points a vector: the first k >= from, k < n,
+ * unsure (|o| <= oerr) with `unsure`, else not surely behind (o >=
+ * -oerr); n if none.  A lane of the padding past n is returned as n.    */
+__attribute__((target("avx2"))) uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4],
+                                                     double oerr, uint32_t from, int unsure)
 {
     const __m256d ax = _mm256_set1_pd(L[0][a]), ay = _mm256_set1_pd(L[1][a]), az = _mm256_set1_pd(L[2][a]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]),
@@ -245,12 +202,13 @@ __attribute__((target("avx2"))) uint32_t w_next_avx2(double *const *L, uint32_t 
     return n;
 }
 
-/* The guess in single precision (w_guess_f32_avx2), with the pencil N, T
- * in the float lifts' units (w_lift_f32), or W_NONE.  The test build
- * answers a wrong point on one guess in 16 for vertices of index 4 mod 8
- * (w->f32_spoil), which the proof must refute (tests: wrap-single).   */
+/* The lean guess in single precision (w->f32): the pencil N, T taken to
+ * the float lifts' units (w_lift_f32, made at the first call of the
+ * deletion), the band scaled by max|N_i|; a point, W_BEHIND, or W_NONE
+ * (abstained: the guess is made in doubles).  Test builds answer a wrong
+ * point on one guess in 16 (W_F32_SPOIL), which the proof must refute.  */
 __attribute__((target("avx2,fma"))) uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4],
-                                                             const double T[4])
+                                                         const double T[4])
 {
     float *const *F = w_flift(w);                    /* and the scales */
     const double sn = w->f32_sn, st = w->f32_st, st3 = w->f32_st3;
@@ -259,28 +217,17 @@ __attribute__((target("avx2,fma"))) uint32_t w_guess_f32(struct dd_wrap *w, uint
     float mn = fabsf(nf[0]) > fabsf(nf[1]) ? fabsf(nf[0]) : fabsf(nf[1]);
     mn = fabsf(nf[2]) > mn ? fabsf(nf[2]) : mn;
     const uint32_t p = w_guess_f32_avx2(F, w->n, a, nf, tf, W_F32_BAND * mn);
-#ifdef DD_TEST_BUILD
-    if (p < w->n && w->f32_spoil && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
-#endif
+    if (p < w->n && W_F32_SPOIL(w) && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
     return p;
 }
 
-/* w_all_behind with AVX2: one pass, four points a vector, o as w_next_avx2
- * has it (w_o4_avx2), the lanes from `end` on left out.  It counts the
- * points not surely behind, and compares the count with that of the
- * corners among them (o of each evaluated again, w_row_o: the same
- * operations, bit for bit, hence the same answer), rather than leaving
- * the corners' lanes out by their numbers: 19 instructions a vector
- * where there were 24 (uniform degree 57, a hull vertex: 7.7k -> 6.9k
- * instructions a deletion in this pass, callgrind).  w_next_to from each point past a
- * corner took four passes with an exit a pass, most of a hull step's
- * proof on the helix (a knock-out of the proof: -5% a deletion there):
- * in the bench, dtdel bench --mode quick --dataset helix, degree >= 32,
- * deletion / re-insertion 1.696 -> 1.639 and 1.696 -> 1.656 (8 and 6
- * alternated runs, standard errors 0.025, 0.02); uniform points, with
- * fewer hull steps: -0.006 +- 0.017 (scripts/abbench.sh, 12 runs).     */
+/* w_all_behind with AVX2, one pass of four points a vector (w_o4_avx2),
+ * the lanes from `end` on left out: it counts the points not surely
+ * behind and compares the count with that of the corners among them (o
+ * of each evaluated again by w_row_o: the same answer, bit for bit), so
+ * no lane is masked by its number.  O(end).                             */
 __attribute__((target("avx2"))) int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y,
-                                                             uint32_t z, const double N[4], double oerr)
+                                                      uint32_t z, const double N[4], double oerr)
 {
     const __m256d ax = _mm256_set1_pd(L[0][y]), ay = _mm256_set1_pd(L[1][y]), az = _mm256_set1_pd(L[2][y]);
     const __m256d n0 = _mm256_set1_pd(N[0]), n1 = _mm256_set1_pd(N[1]), n2 = _mm256_set1_pd(N[2]),
@@ -309,37 +256,12 @@ __attribute__((target("avx2"))) int w_all_behind_avx2(double *const *L, uint32_t
     return total == corners;
 }
 
-/* Step 1 of w_scan_inf in single precision, eight points a vector:
- * the point furthest round the hull edge ab, or W_NONE.  Seen along ab
- * (each point's offset from b projected on E1, E2, perpendicular to
- * B = a - b with E1 x E2 a positive multiple of B), the plane of b, a, p
- * has x beyond it iff x is counter-clockwise of p, and the facet's point
- * is the furthest counter-clockwise.  Each lane keeps its furthest, in
- * two sets that take the vectors in turn (w_ccw_take), then the sets and
- * the lanes are compared, vectors again.  Only a guess: w_scan_inf
- * takes it when every other point is surely behind its plane in doubles
- * (w_all_behind), else makes the step in doubles.  The step in doubles
- * restarted its pass at each point beyond (7.6 passes a step on the helix, n = 1000, degree
- * 32-47, whose vertices are all on the hull: a third of a deletion's
- * instructions); with this guess, proved at every step on the bench's
- * helix and uniform hull vertices, a deletion there takes 10% fewer
- * instructions and 7.5% less time (alternated in one process; uniform
- * degree 48-63, hull corners of the cube: 1.6% and 2%).  One set of
- * lanes chained each vector's compare to the one before (a dozen cycles
- * a vector), and the lanes were then compared in scalars, with branches:
- * the two sets and the vector compare of lanes take a third less time
- * (150 -> 100 TSC ticks a step at 46 points alone, the same points
- * chosen on 4096 random steps; a tie between lanes may now go the other
- * way, and the check decides as before).  Deleting and re-inserting the
- * same vertex again and again showed no change: there the predictor
- * learns the lanes' branches.  In the bench, with the same session's
- * changes to w_guess_f32_avx2, deletion / re-insertion at uniform degree
- * >= 32 fell by 0.04-0.05 (scripts/abbench.sh, 12 and 16 runs).       */
-__attribute__((target("avx2,fma"))) static inline void w_ccw_take(__m256 u, __m256 wv, __m256 kv, __m256 pt, __m256 *bu,
-                                                              __m256 *bw, __m256 *bi, __m256 *has)
+/* Each lane: the point (u, wv) of number kv, if pt, replaces the lane's
+ * best (*bu, *bw, *bi) when counter-clockwise of it, or when the lane has
+ * none yet (*has).                                                      */
+__attribute__((target("avx2,fma"))) static inline void w_ccw_take(__m256 u, __m256 wv, __m256 kv, __m256 pt,
+                                                                  __m256 *bu, __m256 *bw, __m256 *bi, __m256 *has)
 {
-    /* each lane: the point (u, wv) of number kv, if pt, replaces the
-     * lane's (*bu, *bw) when counter-clockwise of it or the first      */
     const __m256 ccw = _mm256_cmp_ps(_mm256_fmsub_ps(*bu, wv, _mm256_mul_ps(*bw, u)), _mm256_setzero_ps(), _CMP_GT_OQ);
     const __m256 take = _mm256_and_ps(pt, _mm256_blendv_ps(pt, ccw, *has));
     *bu = _mm256_blendv_ps(*bu, u, take);
@@ -355,6 +277,16 @@ __attribute__((target("avx2,fma"))) static inline void w_ccw_take(__m256 u, __m2
 #define W_SWAP64(x) _mm256_permute_ps(x, 0x4e)
 #define W_SWAP32(x) _mm256_permute_ps(x, 0xb1)
 
+/* The hull step's point (docs §5) in single precision, eight points a
+ * vector: the point furthest round the hull edge ab, or W_NONE.  Seen
+ * along ab (each point's offset from b projected on E1, E2, perpendicular
+ * to B = a - b, E1 x E2 a positive multiple of B), x is beyond the plane
+ * of b, a, p iff x is counter-clockwise of p, so the facet's point is the
+ * furthest counter-clockwise.  Each lane keeps its furthest in two sets
+ * that take the vectors in turn (two independent chains of compares),
+ * then the sets and the lanes are folded, vectors again.  Only a guess:
+ * w_scan_inf takes it when every other point is surely behind its plane
+ * in doubles (w_all_behind), else makes the step in doubles.  O(n).     */
 __attribute__((target("avx2,fma"))) uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b)
 {
     const float B[3] = {F[0][a] - F[0][b], F[1][a] - F[1][b], F[2][a] - F[2][b]};
@@ -380,8 +312,7 @@ __attribute__((target("avx2,fma"))) uint32_t w_inf_f32(float *const *F, uint32_t
         /* a point: not a, b, nor the NaN padding                        */
         const __m256 notab = _mm256_and_ps(_mm256_cmp_ps(kv, fa, _CMP_NEQ_OQ), _mm256_cmp_ps(kv, fb, _CMP_NEQ_OQ));
         const __m256 pt = _mm256_and_ps(notab, _mm256_cmp_ps(u, u, _CMP_ORD_Q));
-        /* set c, named: taken as &bu[c], the sets went through the stack
-         * (28 stack accesses in the function against 22)                 */
+        /* set c, named: as &bu[c] the sets would go through the stack */
         if (c) w_ccw_take(u, wv, kv, pt, &bu[1], &bw[1], &bi[1], &has[1]);
         else w_ccw_take(u, wv, kv, pt, &bu[0], &bw[0], &bi[0], &has[0]);
         kv = _mm256_add_ps(kv, eight);

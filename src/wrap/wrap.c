@@ -1,27 +1,20 @@
 /*
- * wrap.c -- gift wrapping of a cavity (see wrap.h).
+ * wrap.c -- the gift wrap's driver (docs/gift-wrap.md §3 FILL):
+ * dd_wrap_fill numbers and lifts the neighbours, guesses the fill and
+ * proves it, falls back on the certified scans, and hands the fill to the
+ * sew or declines.
  *
- * Owns: struct dd_wrap (kept in d->wrap across deletions: no allocation
- * once warm), the local numbering of the neighbours (the infinite vertex
- * is number n), the table of open facets, the scans that find the fill
- * cell on a facet, the cells it writes into the mesh (over the star's,
- * kept aside in case the fill is not kept: w_run) and the matching it
- * hands to the sew (d->sew_out).
+ * Owns: the wrap's scratch as the deletion context keeps it across
+ * deletions (w_kind, dd_wrap_free), its per-neighbour arrays, and the
+ * names of the statistics (dd_wrap_stat_names).
  *
- * An open facet is a triangle (a, b, c) of local numbers whose fill cell
- * on the positive side (orient3d(a, b, c, p) > 0) is still unknown.  The
- * link triangles start open, oriented towards q (mesh.h: the facet
- * opposite q in a star cell, in dd_facet order, has q on its positive
- * side); each new cell (a, b, c, p) closes the facet it was found from
- * and, for each other facet, closes it if it is open already or opens it
- * reversed.  A triangle meets at most two cells, so a facet closed twice
- * means a broken input and the deletion stops before touching the mesh.
- * A hull vertex adds cells with the infinite vertex: a finite facet with
- * no point beyond it becomes a hull facet, and a facet through the
- * infinite vertex is wrapped around its hull edge (w_scan_inf).
+ * Invariant: dd_wrap_fill returns with the fill in the mesh
+ * (d->fill_in_mesh, d->sew_out for the sew), or with the mesh as it was
+ * (declined, or an error): every other course ends in w_drop_fill.
  */
 #include "wrap/wrap_int.h"
 
+/* Frees the wrap's scratch (NULL: nothing).                             */
 void dd_wrap_free(struct dd_wrap *w)
 {
     if (!w) return;
@@ -34,6 +27,8 @@ void dd_wrap_free(struct dd_wrap *w)
     free(w);
 }
 
+/* *p reallocated to n elements of `size` bytes: 1, or 0 (*p as it was)
+ * when out of memory.                                                   */
 int w_grow(void **p, size_t n, size_t size)
 {
     void *q = realloc(*p, n * size);
@@ -42,7 +37,8 @@ int w_grow(void **p, size_t n, size_t size)
     return 1;
 }
 
-/* Room for n neighbours, and local numbers for vertex ids below nv. */
+/* Room for n neighbours in the per-neighbour arrays (doubling), and
+ * local numbers for vertex ids below nv.                                */
 static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
 {
     if (n > w->cap_n) {
@@ -70,6 +66,7 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
     return DD_OK;
 }
 
+/* The names of the DD_WS_* statistics, in their order (wrap.h).         */
 const char *const dd_wrap_stat_names[DD_WS_COUNT] = {
     "wrap: course (1 proved, 2 refuted, 3 scanned, 4 declined)",
     "wrap: last guess (0 wide, 1 short lists, 2 two steps)",
@@ -84,6 +81,7 @@ const char *const dd_wrap_stat_names[DD_WS_COUNT] = {
     "wrap: tests left to the exact predicates",
 };
 
+/* The scratch kind by which the deletion context keeps and frees it.    */
 static void w_free_scratch(void *w) { dd_wrap_free(w); }
 static const dd_scratch_kind w_kind = {"gift wrapping", w_free_scratch};
 
@@ -144,19 +142,13 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     d->sstat[DD_WS_INTEGER] = w->exact ? 1u : w->kexact ? 2u : 0u;
     w->cosph = 0;
     w->narrow = DD_GUESS_WIDE;
-    w->avx2 = w->has_avx2;
-#ifdef DD_TEST_BUILD
-    w->avx2 = w->avx2 && !t->testctl[DD_TEST_SCALAR];   /* dtdel_stats.h */
-#endif
+    w->avx2 = w->has_avx2 && !W_TESTCTL(t, DD_TEST_SCALAR);
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
     /* the float lifts' scales stay finite (w_lift_f32) */
-    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50;
+    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50 && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
 #ifdef DD_TEST_BUILD
-    w->flift_ok = w->flift_ok && !t->testctl[DD_TEST_NO_SINGLE];
-    w->f32_spoil = t->testctl[DD_TEST_SPOIL_SINGLE] != 0;
-    w->narrower = t->testctl[DD_TEST_NARROWER] != 0;
-#else
-    w->narrower = 0;
+    w->narrower = W_TESTCTL(t, DD_TEST_NARROWER);
+    w->f32_spoil = W_TESTCTL(t, DD_TEST_SPOIL_SINGLE);
 #endif
     w->f32 = w->flift_ok;
     w->f32_kept = w->f32_back = w->inf_kept = w->inf_back = 0;
@@ -251,6 +243,8 @@ static dd_status w_finish(dd_del *d, struct dd_wrap *w, dd_status s, const struc
     return DD_OK;
 }
 
+/* See wrap.h.  The steps: the scratch; no facet keys, decline; number,
+ * lift and set the modes; guess and prove; else scan; hand over.       */
 dd_status dd_wrap_fill(dd_del *d, uint32_t wide_below, int *declined)
 {
     struct dd_wrap *w;

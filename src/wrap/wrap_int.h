@@ -1,5 +1,26 @@
 /*
- * wrap_int.h -- the gift wrap's internals, shared by the files of src/wrap/.
+ * wrap_int.h -- the gift wrap's internals, shared by the files of
+ * src/wrap/ (docs/gift-wrap.md states the algorithm; §12 names the parts).
+ *
+ * Owns: struct dd_wrap, the wrap's state, kept in the deletion context
+ * across deletions (no allocation once warm); the local numbering (q's
+ * neighbours are 0 .. n-1 in d->order's order, the infinite vertex is n);
+ * the sentinels and thresholds; and, static inline, what the hot loops of
+ * several files share: the pencil of a facet (§2), the filtered
+ * orientation and conflict tests, the scalar guess, the facet table's
+ * probes, the known-neighbour puts.
+ *
+ * Invariant: every sign the wrap acts on is certified, by a filter bound
+ * (lift.c), by exact integer arithmetic, or by the exact predicates of
+ * src/geom/; what only ranks candidates may round (§8).  o is evaluated by
+ * one sequence of operations everywhere (w_row_o, lane by lane in
+ * simd.c), so that one bound covers every pass.
+ *
+ * The files: wrap.c the driver (dd_wrap_fill); run.c the wrap (w_run) and
+ * the link; guess.c the narrow guesses and the known neighbours; scan.c
+ * the certified scans and the perturbation on local numbers; hull.c the
+ * hull step; lift.c the lifts and the bounds; ftab.c the facet table and
+ * its keys; simd.c the AVX2 passes.
  */
 #ifndef DD_WRAP_INT_H
 #define DD_WRAP_INT_H
@@ -15,63 +36,63 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The AVX2 passes (simd.c), taken when the CPU has AVX2 (w->avx2).      */
 #if defined(__GNUC__) && defined(__x86_64__)
 #define W_AVX2 1
 #endif
 
-#define W_NONE UINT32_MAX
+/* Answers of the scans and guesses that are not a local number.         */
+#define W_NONE UINT32_MAX         /* no point beyond the facet                */
 #define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
-#define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again */
+#define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again  */
 #define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
 #define W_BEHIND (UINT32_MAX - 4) /* single precision: every point behind     */
 
-/* On degenerate cavities the filters abstain on most tests and a wrap
- * makes about n^2/2 exact ones (integer points of a sphere, n = 50: 1183,
- * ~1 us each), where the conflict DT makes far fewer: from 40 neighbours
- * on, wrapping declines once its exact tests pass 2n (then, warm,
- * cosphere degree [48,64): 719 us wrapping against 383 us for
- * grr-neighbor; below 40 wrapping stayed ahead: [32,48) 294 vs 403 us).
- * The budget counts the tests of a guess's proof too, but what it counts
- * is their cost (w_spent): a test the wrap's own filters leave to the
- * predicates is mostly settled by the predicates' filters, at about a
- * sixteenth of the cost of their exact stages.  So w_spent counts the
- * tests past the predicates' filters, and the others one in 16.  On the
- * moment curve, n = 2048, the proof leaves 6 200-7 400 tests to the
- * predicates and 1 600-2 300 of them reach the exact stages: counted
- * whole, they declined every deletion (to GRR: 2.9-4.8 ms), where the
- * wrap takes 1.2-2.6 ms; at n = 1024, 1 700 tests, 95 past the filters.
- * From 40 neighbours on, a refuted guess declines too, without the scans:
- * such cavities are nearly degenerate, where the scans make O(n) exact
- * tests a cell (moment n = 272: refuted after ~140 exact tests, then
- * about 400 more, ~1 us each, before the budget declined anyway: 370-540
- * us against 200-250 us declining at once).  Neither holds for wholly
- * cospherical neighbours (w_cospherical): their in-sphere tests are the
- * perturbation's alone, cheap and not counted.                          */
+/* The exact-test budget (docs §10): from W_EXACT_FROM neighbours on, the
+ * wrap declines once this deletion's exact tests (w_spent) pass 2n, and
+ * after a refuted guess unless the neighbours are cospherical.  On
+ * degenerate cavities the scans make about n^2/2 exact tests where the
+ * conflict DT makes far fewer; below 40 neighbours the wrap stays ahead
+ * even there (build/dtdel bench --dataset cosphere: the gift-wrap and
+ * grr-neighbor rows by degree).                                          */
 #define W_EXACT_FROM 40
 
-/* The narrow guesses (w_guess_narrow), only where the link has a hub:
- * each point keeps up to W_ADJ_CAP known neighbours; one with more is a
- * hub (W_ADJ_FULL), whose list is not kept.  A hub has W_ADJ_CAP + 1
- * link neighbours, so there are none below W_NARROW_FROM neighbours.
- * On uniform points (bunny, degree 24-64) the link has no hub and the
- * fill's new edges are many: narrow guesses taken there regardless were
- * refuted for half the deletions, 2.4 -> 5.3 times a re-insertion.     */
+/* The known neighbours of the narrow guesses (docs §6): up to W_ADJ_CAP
+ * per local number, a list short enough to scan per edge (w_adj_has); a
+ * vertex with more is a hub (W_ADJ_FULL) and keeps none.  A hub has more
+ * than W_ADJ_CAP link neighbours, so there is none below W_NARROW_FROM
+ * neighbours.  Narrow guesses are made only where the link has a hub (the
+ * curves): elsewhere the fill has many new edges and a narrow guess is
+ * refuted too often (build/dtdel bench --dataset bunny).                 */
 #define W_ADJ_CAP 32
 #define W_ADJ_FULL (W_ADJ_CAP + 1)
 #define W_NARROW_FROM (W_ADJ_CAP + 2)
 
-/* The lean wide guess from this many neighbours on (w_guess_lean_avx2). */
+/* The lean wide guess from W_LEAN_FROM neighbours on (docs §6): the pass
+ * skips the count of unsure orientations, which pays once passes are
+ * long.  A point nearly in a facet's plane is hardly ever its apex on
+ * generic points; where it is, the proof refutes the lean guess and the
+ * full one follows (scripts/abbench.sh, uniform and bunny).              */
 #define W_LEAN_FROM 24
 
-/* wrap_guess's *unsure when it did not count: the lean guess, and the
- * single-precision one (whose point is not yet known beyond the facet). */
+/* wrap_guess's *unsure when its pass did not count: the lean guess, and
+ * the single-precision one (whose point is not yet known to be beyond). */
 enum { W_UNCOUNTED = -1, W_SINGLE = -2 };
 
+/* A wrap's outcome (w_run, dd_wrap_fill): the fill made; the cavity left
+ * to the conflict DT; the guessed cells are not the fill.                */
+enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
+
+/* An entry of the facet table (ftab.c): a triangle's key (w_fkey) and its
+ * facet record.                                                          */
 struct w_fslot {
     uint64_t key;
     uint32_t rec, gen;            /* used iff gen == w->fs_gen            */
 };
 
+/* The wrap's state: arrays indexed by local number (grown, never shrunk),
+ * the facet records and their table, the fill's cells, the known
+ * neighbours, and the deletion's modes and counters.                    */
 struct dd_wrap {
     uint32_t n, cap_n;            /* neighbours, capacity of the arrays  */
     const double **pt;            /* local -> point                       */
@@ -109,9 +130,6 @@ struct dd_wrap {
     uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
                                      made in doubles (w_scan_inf)      */
     int f32_ready;                /* flift made for this deletion (w_flift) */
-#ifdef DD_TEST_BUILD
-    int f32_spoil;                /* answer a wrong point (tests)         */
-#endif
     uint32_t nexact;              /* tests the filters left to the exact
                                      predicates, this deletion            */
     uint64_t unf0;                /* the predicates' count of tests past
@@ -152,10 +170,27 @@ struct dd_wrap {
     uint32_t *cand;               /* the candidates of one facet          */
     int hub_last;                 /* the last link asked had a hub        */
     uint32_t lead;                /* local number of the least vertex id  */
-    int narrower;                 /* test build: shortest lists only      */
+#ifdef DD_TEST_BUILD
+    int narrower;                 /* DD_TEST_NARROWER: shortest lists only */
+    int f32_spoil;                /* DD_TEST_SPOIL_SINGLE: answer wrong
+                                     points in single precision          */
+#endif
 };
 
-enum { W_DONE, W_DECLINED, W_WRONG_GUESS };
+/* Test controls (dtdel_stats.h), in test builds only: W_TESTCTL(t, k)
+ * is control k of triangulation t, W_NARROWER(w) and W_F32_SPOIL(w) the
+ * wrap's copies of two of them; all 0 in release builds.               */
+#ifdef DD_TEST_BUILD
+#define W_TESTCTL(t, k) ((t)->testctl[k] != 0)
+#define W_NARROWER(w) ((w)->narrower)
+#define W_F32_SPOIL(w) ((w)->f32_spoil)
+#else
+#define W_TESTCTL(t, k) 0
+#define W_NARROWER(w) 0
+#define W_F32_SPOIL(w) 0
+#endif
+
+/* ---- called across files ------------------------------------------------ */
 
 /* wrap.c */
 /* realloc *p to n elements of `size` bytes; 0 (and *p as it was) when out of memory. */
@@ -232,29 +267,19 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub);
 /* The wrap from record `start`, guessing or scanning; *outcome: W_DONE, W_DECLINED, W_WRONG_GUESS. */
 dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome);
 
-/* The fill cell on the positive side of open facet (a, b, c): the point p
- * with orient3d(a, b, c, p) > 0 whose sphere through a, b, c, p holds no
- * other such point (perturbed as CGAL does).  The spheres through a, b, c
- * are ordered along their pencil, so the point is a minimum; W_NONE if no
- * point is surely on the positive side (and none on abc's plane); if
- * none is beyond but some lie on the plane, what w_flat_hull says.
- *
- * With rows B = L[b]-L[a], C = L[c]-L[a] (see w_lift) and P = L[p]-L[a],
- * w(X, P) = det4(B, C, X, P) is the in-sphere determinant of a, b, c, x, p
- * (negative: p inside the sphere of the positively oriented a, b, c, x).
- * Its cofactors along the last row, K(X), give w(X, P) = K(X) . P; they
- * are made from the six 2x2 minors mij of B and C, whose three first
- * ones also give orient3d(a, b, c, p) = o(P) = n . P, n = (m12, -m02,
- * m01).  The form w is antisymmetric with kernel span(B, C), so with
- * N = (n, 0) and t(P) = K(N) . P,
- *     w(X, P) |n|^2 = o(X) t(P) - t(X) o(P),
- * and for x, p on the positive side, p is inside the sphere of a, b, c, x
- * iff t(p)/o(p) < t(x)/o(x): the fill cell's point minimises t/o.      */
+/* ---- the pencil of a facet (docs §2) -------------------------------------
+ * With the rows B = L[b] - L[a], C = L[c] - L[a] and P = L[p] - L[a] of
+ * the lifts (lift.c), w(X, P) = det(B, C, X, P) = K(X) . P is the
+ * in-sphere determinant of a, b, c, x, p (negative: p inside the sphere
+ * of the positively oriented a, b, c, x), K(X) its cofactors along the
+ * last row, made from the six 2x2 minors of B and C.  N = (m12, -m02,
+ * m01, 0) gives o(P) = N . P = orient3d(a, b, c, p), T = K(N) gives
+ * t(P) = T . P, and w(X, P) |N|^2 = o(X) t(P) - t(X) o(P): the apex of
+ * the fill cell beyond abc is the point beyond it of least t/o.          */
+
 #ifdef __SSE2__
 /* w_cofactors of X = (x01, x23), in registers: the same products, sums
- * and signs (bit for bit) two at a time.  w_run makes K and T for each
- * cell, scalar these took 5% of a deletion at uniform degree 48-63
- * (callgrind).                                                         */
+ * and signs, bit for bit, two at a time.                                 */
 static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const double m[6])
 {
     enum { M01, M02, M03, M12, M13, M23 };
@@ -270,6 +295,8 @@ static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const do
 }
 #endif
 
+/* K: the cofactors of X along the last row of det(B, C, X, P), from the
+ * minors m of B and C (w_minors).                                        */
 static inline void w_cofactors(double K[4], const double X[4], const double m[6])
 {
 #ifdef __SSE2__
@@ -314,15 +341,15 @@ static inline void w_normal_of(const double m[6], double N[4])
 
 /* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
  * and its orientation o(P) = N . P: the one evaluation of o that every
- * scan uses, so that the orientation filter's bound (w_lift) covers each
- * (the AVX2 guess repeats these operations lane by lane).                */
+ * scan uses, so that the orientation filter's bound (lift.c) covers each
+ * (the AVX2 passes repeat these operations lane by lane).               */
 static inline double w_row_o(double *const *L, uint32_t k, const double A[4], const double N[4], double P[4])
 {
     for (int i = 0; i < 4; i++) P[i] = L[i][k] - A[i];
     return P[0] * N[0] + P[1] * N[1] + P[2] * N[2];
 }
 
-/* t(P) = T . P (see w_cofactors).                                       */
+/* t(P) = T . P; with T = K(X), the in-sphere determinant w(X, P).      */
 static inline double w_t(const double P[4], const double T[4])
 {
     return P[0] * T[0] + P[1] * T[1] + P[2] * T[2] + P[3] * T[3];
@@ -339,12 +366,9 @@ static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
     w_minors(m, B, C);
 #ifdef __SSE2__
-    /* N in registers: written in scalars (w_normal_of) and read back in
-     * pairs by w_cofactors, a read the store buffer cannot forward from
-     * two writes, which waited for them to commit.  In the bench
-     * (scripts/abbench.sh, uniform, degree >= 32, 2 x 12 runs) deletion /
-     * re-insertion fell by 0.04-0.06, ~3%; the rows B, C and the new
-     * cell's X made in registers as well took it back up by 0.026.      */
+    /* N made in registers and handed over in them: written in scalars
+     * and read back in pairs, it would wait for the stores to commit (no
+     * store forwarding from two writes to one read).                     */
     const __m128d m01 = _mm_loadu_pd(m), m23 = _mm_loadu_pd(m + 2);
     const __m128d n01 = _mm_xor_pd(_mm_shuffle_pd(m23, m01, 3), _mm_set_pd(-0.0, 0.0));   /* (m3, -m1) */
     const __m128d n23 = _mm_unpacklo_pd(m01, _mm_setzero_pd());                             /* (m0, 0)   */
@@ -371,6 +395,8 @@ static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uin
     N[3] = 0;
 }
 
+/* ---- certified signs ---------------------------------------------------- */
+
 /* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
  * filter's answer, else 0 with integer orientations (o is exact), else
  * the exact predicate.                                                    */
@@ -392,7 +418,10 @@ static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uin
     return w_sign_o(w, pr, w_row_o(L, k, A, N, P), a, b, c, k);
 }
 
-/* (inline: the filter's answer; the rest in w_conflicts_near) */
+/* Whether point y is in conflict with the positively oriented fill cell
+ * lv = (a, b, c, p), K being the cofactors of L[p] - L[a] with abc's
+ * minors: the filtered determinant (lift.c's bound), else, out of line,
+ * the exact perturbed test (w_conflicts_near).                          */
 static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
 {
     double *const *L = w->lift;
@@ -404,15 +433,12 @@ static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[
     return w_conflicts_near(w, pr, lv, K, P, y);
 }
 
-/* The first point k >= from whose orientation to the plane of normal N
- * through a (o evaluated as in the scans) is, with `unsure`, within the
- * filter's bound (|o| <= oerr), else not surely behind (o not below
- * -oerr); n if none.  The passes over points nearly all surely on one
- * side look only at those: w_all_behind and the Jarvis pass of
- * w_scan_inf (helix n = 4000, degree [64,128): those two scalar
- * passes were 16% of a deletion, callgrind, 38 instructions a point),
- * and the guess's exact pass over the unsure points (moment n = 1024,
- * degree 1023: a third of a deletion, 23 passes of 52k instructions).  */
+/* The first k, from <= k < end, whose o to the plane of normal N through
+ * a (w_row_o) is unsure (|o| <= oerr) with `unsure`, else not surely
+ * behind (o >= -oerr); end if none.  The passes over points nearly all
+ * surely on one side look only at those: w_all_behind, the Jarvis pass
+ * of w_scan_inf, the exact pass over a guess's unsure points.  Cost
+ * O(end - from), four points a vector with AVX2.                        */
 static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from,
                                  uint32_t end, int unsure)
 {
@@ -428,101 +454,18 @@ static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const doub
     return end;
 }
 
+/* w_next_to up to n.                                                    */
 static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from, int unsure)
 {
     return w_next_to(w, a, N, from, w->n, unsure);
 }
 
-static inline uint64_t w_fkey(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
-{
-    return w->kword[a] ^ w->kword[b] ^ w->kword[c];
-}
-
-static inline struct w_fslot *w_fprobe(const struct dd_wrap *w, uint64_t key)
-{
-    uint32_t i = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> w->fs_shift);   /* the top bits */
-    while (w->fs[i].gen == w->fs_gen && w->fs[i].key != key) i = (i + 1) & w->fs_mask;
-    return &w->fs[i];
-}
-
-/* The entry of the triangle of key `key` (w_fkey): *found = 1 and its
- * record, or a new entry (*found = 0) that w_open fills.  The table has
- * room (w_reserve_recs).                                                */
-static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
-{
-    struct w_fslot *e = w_fprobe(w, key);
-    *found = e->gen == w->fs_gen;
-    if (!*found) *e = (struct w_fslot){key, W_NONE, w->fs_gen};
-    return &e->rec;
-}
-
-/* Room for `more` more facet records, in the arrays and in the table
- * (inline, the growth apart: w_run asks once a cell, for its three new
- * facets, where asking at each facet, table and records apart, cost 10
- * instructions a facet).                                                 */
-static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
-{
-    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
-}
-
-/* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
- * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
-static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
-{
-    uint32_t r = w->nrec++;
-    w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
-    w->own[r] = own;
-    w->closed[r] = 0;
-    *val = r;
-}
-
-/* The float lifts, made at their first use in a deletion: links where
- * the narrow guesses hold and no hull step is taken never pay for them. */
-static inline float *const *w_flift(struct dd_wrap *w)
-{
-    if (!w->f32_ready) {
-        w_lift_f32(w);
-        w->f32_ready = 1;
-    }
-    return w->flift;
-}
-
-/* Appends v to k's known neighbours (a hub's list is left as it is).  */
-static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
-{
-    uint8_t c = w->nadj[k];
-    if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
-    w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
-}
-
-/* The known neighbours that link triangle tr gives: each corner the next
- * one, between finite vertices (inf: the infinite vertex's number; read
- * from w->n it cost 0.9% of a deletion on the moment curve, n = 1024).  */
-static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
-{
-    for (int j = 0; j < 3; j++) {
-        uint32_t u = tr[j == 2 ? 0 : j + 1];
-        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
-    }
-}
-
-/* The predicates' tests past their filters so far (pred.h).             */
-static inline uint64_t w_unfiltered(const dd_pred *pr)
-{
-    return pr->orient_exact + pr->insphere_exact;
-}
-
-/* The exact tests of this deletion for W_EXACT_FROM's budget: those past
- * the predicates' filters, and one in 16 of the others left to them.   */
-static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
-{
-    return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
-}
+/* ---- guesses (docs §6) --------------------------------------------------- */
 
 /* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
  * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
  * W_TIE when two such quotients are equal; *unsure: how many had unsure
- * orientation.                                                          */
+ * orientation.  No data-dependent branch; O(nk).                         */
 static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const double N[4], const double T[4],
                                      const uint32_t *ks, uint32_t nk, uint32_t *unsure)
 {
@@ -545,12 +488,13 @@ static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const 
     return tie ? W_TIE : best;
 }
 
-/* The wide guess; *unsure: 1 when points other than a, b, c had unsure
- * orientations, 0 when none had, W_UNCOUNTED (the lean guess, on points
- * not of exact orientation from W_LEAN_FROM neighbours on and not in the
- * narrow guesses' course, see w_guess_lean_avx2), W_SINGLE (not counted
- * either, the point chosen in single precision, w_guess_f32, not yet
- * known to be beyond the facet).                                       */
+/* The wide guess (docs §6 WIDE): the point beyond abc of least t/o, one
+ * pass over the neighbours with no check, W_TIE on equal quotients;
+ * W_NONE if none is beyond.  With AVX2 the lean pass where w->lean, in
+ * single precision first where w->f32, else the full one; else scalar.
+ * *unsure: 1 when points other than a, b, c had unsure orientations, 0
+ * when none had, W_UNCOUNTED (the lean pass), W_SINGLE (chosen in single
+ * precision, not yet known to be beyond).                               */
 static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
 {
 #ifdef W_AVX2
@@ -577,6 +521,98 @@ static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[
     const uint32_t best = w_least_ratio(w, a, N, T, NULL, w->n, &uns);
     *unsure = uns != 3;                              /* a, b, c always are */
     return best;
+}
+
+/* ---- the facet table (ftab.c) ------------------------------------------- */
+
+/* A triangle's key: the exclusive or of its corners' words (ftab.c).    */
+static inline uint64_t w_fkey(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c)
+{
+    return w->kword[a] ^ w->kword[b] ^ w->kword[c];
+}
+
+/* The slot of key `key`, or the empty slot where it would go (linear
+ * probing from the top bits of a multiplicative hash).                  */
+static inline struct w_fslot *w_fprobe(const struct dd_wrap *w, uint64_t key)
+{
+    uint32_t i = (uint32_t)((key * 0x9E3779B97F4A7C15ull) >> w->fs_shift);   /* the top bits */
+    while (w->fs[i].gen == w->fs_gen && w->fs[i].key != key) i = (i + 1) & w->fs_mask;
+    return &w->fs[i];
+}
+
+/* The entry of the triangle of key `key` (w_fkey): *found = 1 and its
+ * record, or a new entry (*found = 0) that w_open fills.  The table has
+ * room (w_reserve_recs).                                                */
+static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
+{
+    struct w_fslot *e = w_fprobe(w, key);
+    *found = e->gen == w->fs_gen;
+    if (!*found) *e = (struct w_fslot){key, W_NONE, w->fs_gen};
+    return &e->rec;
+}
+
+/* Room for `more` more facet records, in the arrays and in the table;
+ * inline but for the growth, as w_run asks once a cell.                  */
+static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
+{
+    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
+}
+
+/* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
+ * a link triangle), as a new record; *val is its entry (w_fslot_of).    */
+static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t b, uint32_t c, uint32_t own)
+{
+    uint32_t r = w->nrec++;
+    w->tri[r][0] = a; w->tri[r][1] = b; w->tri[r][2] = c;
+    w->own[r] = own;
+    w->closed[r] = 0;
+    *val = r;
+}
+
+/* ---- the rest ------------------------------------------------------------ */
+
+/* The float lifts, made at their first use in a deletion: links where
+ * the narrow guesses hold and no hull step is taken never pay for them. */
+static inline float *const *w_flift(struct dd_wrap *w)
+{
+    if (!w->f32_ready) {
+        w_lift_f32(w);
+        w->f32_ready = 1;
+    }
+    return w->flift;
+}
+
+/* Appends v to k's known neighbours (a hub's list is left as it is).  */
+static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
+{
+    uint8_t c = w->nadj[k];
+    if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
+    w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
+}
+
+/* The known neighbours that link triangle tr gives: each corner the next
+ * one, between finite vertices (inf: the infinite vertex's number).     */
+static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
+{
+    for (int j = 0; j < 3; j++) {
+        uint32_t u = tr[j == 2 ? 0 : j + 1];
+        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
+    }
+}
+
+/* The predicates' tests past their filters so far (pred.h).             */
+static inline uint64_t w_unfiltered(const dd_pred *pr)
+{
+    return pr->orient_exact + pr->insphere_exact;
+}
+
+/* This deletion's exact tests, for W_EXACT_FROM's budget: those past the
+ * predicates' filters, and one in 16 of the others the wrap left to the
+ * predicates, whose own filters settle most of them at about a sixteenth
+ * of the cost.                                                          */
+static inline uint64_t w_spent(const struct dd_wrap *w, const dd_pred *pr)
+{
+    return w_unfiltered(pr) - w->unf0 + w->nexact / 16;
 }
 
 #endif
