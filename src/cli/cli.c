@@ -122,22 +122,29 @@ void write_tets(const int32_t *tets, size_t n)
         printf("%d %d %d %d\n", tets[4 * k], tets[4 * k + 1], tets[4 * k + 2], tets[4 * k + 3]);
 }
 
+int build_file(const char *cmd, const char *path, dd_tri **t)
+{
+    double *xyz;
+    uint32_t np;
+    int rc = load_file(cmd, path, &xyz, &np);
+    if (rc) return rc;
+    char msg[512];
+    dd_status s = dd_create(t, xyz, np, msg, sizeof msg);
+    free(xyz);
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel %s: %s: %s\n", cmd, path, msg);
+        return EXIT_INPUT;
+    }
+    return 0;
+}
+
 static int cmd_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("tets");
     if (argc != 2) return usage_error("tets", "expected exactly one FILE%s", "");
-    double *xyz;
-    uint32_t np;
-    int rc = load_file("tets", argv[1], &xyz, &np);
-    if (rc) return rc;
     dd_tri *t;
-    char msg[512];
-    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
-    free(xyz);
-    if (s != DD_OK) {
-        fprintf(stderr, "dtdel tets: %s: %s\n", argv[1], msg);
-        return EXIT_INPUT;
-    }
+    int rc = build_file("tets", argv[1], &t);
+    if (rc) return rc;
     if (dd_num_duplicates(t))
         fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
                 dd_num_duplicates(t));

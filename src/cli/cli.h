@@ -38,6 +38,9 @@ double now_seconds(void);
 /* The points of FILE (.xyz or .off, dd_read_points); 0, or EXIT_INPUT
  * after a message naming the problem.                                   */
 int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np);
+/* Reads FILE and builds its DT in *t; 0, or the exit status after a
+ * message on stderr naming the file and the problem.                    */
+int build_file(const char *cmd, const char *path, dd_tri **t);
 /* A canonical form on stdout, one line "a b c d" a cell. */
 void write_tets(const int32_t *tets, size_t n);
 

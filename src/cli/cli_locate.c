@@ -26,20 +26,11 @@ int cmd_locate(int argc, char **argv)
     double p[3];
     for (int c = 0; c < 3; c++)
         if (parse_coord(argv[2 + c], &p[c])) return usage_error("locate", "not a number: '%s'", argv[2 + c]);
-    double *xyz;
-    uint32_t np;
-    int rc = load_file("locate", argv[1], &xyz, &np);
-    if (rc) return rc;
     dd_tri *t;
-    char msg[512];
-    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
-    free(xyz);
-    if (s != DD_OK) {
-        fprintf(stderr, "dtdel locate: %s: %s\n", argv[1], msg);
-        return EXIT_INPUT;
-    }
+    int rc = build_file("locate", argv[1], &t);
+    if (rc) return rc;
     int32_t cell[4];
-    s = dd_locate(t, p, cell);
+    dd_status s = dd_locate(t, p, cell);
     if (s != DD_OK) {
         fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
         dd_free(t);
@@ -75,20 +66,12 @@ int cmd_move(int argc, char **argv)
     for (int c = 0; c < 3; c++, tok = strtok_r(NULL, ",", &save))
         if (!tok || parse_coord(tok, &p[c])) return usage_error("move", "--to expects X,Y,Z, got '%s'", to);
     if (tok) return usage_error("move", "--to expects X,Y,Z, got '%s'", to);
-    double *xyz;
-    uint32_t np;
-    int rc = load_file("move", file, &xyz, &np);
-    if (rc) return rc;
     dd_tri *t;
-    char msg[512];
-    dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
-    free(xyz);
-    if (s != DD_OK) {
-        fprintf(stderr, "dtdel move: %s: %s\n", file, msg);
-        return EXIT_INPUT;
-    }
+    int rc = build_file("move", file, &t);
+    if (rc) return rc;
     int32_t *tets = NULL;
     size_t n = 0;
+    dd_status s;
     if ((s = dd_move(t, (uint32_t)v, p)) != DD_OK) {
         fprintf(stderr, "dtdel move: cannot move vertex %llu: %s\n", (unsigned long long)v, dd_errmsg(t));
         rc = EXIT_INPUT;
