@@ -16,7 +16,7 @@
  * depends on vertex ids only, so a deletion repeated is the same
  * computation.
  */
-#include "wrap/wrap_int.h"
+#include "wrap/guess.h"
 
 /* The error of a wrap that cannot close, which only a broken
  * triangulation makes (the caller restores the mesh).                   */
