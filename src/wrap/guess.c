@@ -1,40 +1,15 @@
 /*
- * guess.c -- the narrow guesses of the gift wrap and the known neighbours
- * they take their candidates from (docs/gift-wrap.md §6).
+ * guess.c -- the narrow guesses of the gift wrap (docs/gift-wrap.md §6):
+ * the apex of a facet taken among the known neighbours of its corners
+ * (guess.h), a few candidates a cell where the link has a hub.
  *
- * Owns: the known-neighbour lists (w->adj, w->nadj: up to W_ADJ_CAP per
- * local number, none for a hub) and the candidates of a facet (w->cand,
- * marked in w->seen by stamp).  w_open_link starts the lists from the
- * link (w_adj_link, wrap_int.h) and w_run adds the edges of each new
- * finite cell (w_adj_edge).  The wide guess (wrap_guess, wrap_int.h;
- * simd.c) and the guess course of a facet (w_guess_apex, run.c) are
- * inlined where they run.
+ * Owns: the candidates of a facet (w->cand, marked in w->seen by stamp).
  *
- * Invariant: the lists hold the link's edges, which are edges of
- * DT(S \ q), and the edges of the fill cells made so far, which are if
- * the guess is right; a wrong candidate only makes a wrong guess, which
- * the proof refutes.  Each list holds a neighbour once.
+ * Invariant: the candidates are distinct and none is a corner of the
+ * facet; a narrow guess is only a guess, proved or refuted with the rest
+ * of the guessed fill (§7).
  */
-#include "wrap/wrap_int.h"
-
-/* Whether v is among k's known neighbours (k not a hub).                */
-static inline int w_adj_has(const struct dd_wrap *w, uint32_t k, uint32_t v)
-{
-    const uint32_t *l = w->adj + (size_t)k * W_ADJ_CAP;
-    for (uint32_t i = 0; i < w->nadj[k]; i++)
-        if (l[i] == v) return 1;
-    return 0;
-}
-
-/* Records edge (k, v) of a new fill cell, unless known or between hubs.
- * O(W_ADJ_CAP).                                                         */
-void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v)
-{
-    if (w->nadj[k] == W_ADJ_FULL && w->nadj[v] == W_ADJ_FULL) return;
-    if (w->nadj[k] != W_ADJ_FULL ? w_adj_has(w, k, v) : w_adj_has(w, v, k)) return;
-    w_adj_put(w, k, v);
-    w_adj_put(w, v, k);
-}
+#include "wrap/guess.h"
 
 /* Adds candidates: the known neighbours of k not seen yet.              */
 static inline uint32_t w_take_list(struct dd_wrap *w, uint32_t k, uint32_t nc)

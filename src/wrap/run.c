@@ -16,7 +16,7 @@
  * depends on vertex ids only, so a deletion repeated is the same
  * computation.
  */
-#include "wrap/wrap_int.h"
+#include "wrap/guess.h"
 
 /* The error of a wrap that cannot close, which only a broken
  * triangulation makes (the caller restores the mesh).                   */
@@ -160,10 +160,12 @@ static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
     return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
 }
 
-/* The cell being made: lv = (a, b, e, p), p the apex of facet abc; the
- * tests read these arrays in place.                                     */
+/* The arrays of the cell being made, which the tests read in place.  Its
+ * corners are in w_wrapping as scalars too: read from lv, they would be
+ * loaded again after each store to the mesh or the records (which might
+ * alias lv, whose address the tests take).                              */
 struct w_cell {
-    uint32_t lv[4];               /* local numbers                        */
+    uint32_t lv[4];               /* (a, b, e, p), as in w_wrapping       */
     double mb[6], N[4], T[4];     /* abc's pencil (w_pencil), guessing    */
     double K[4];                  /* the cell's cofactors (w_conflicts)   */
 };
@@ -180,6 +182,8 @@ struct w_wrapping {
     uint32_t nlink;               /* link triangles closed                */
     size_t room, limit;           /* fill cells reserved; at most         */
     const char *why;              /* what was wrong (W_WRONG_GUESS)       */
+    uint32_t a, b, e, p;          /* the cell being made: p, the apex of
+                                     facet abe (local numbers)            */
     uint32_t m;                   /* the new cell in the mesh             */
     size_t fp;                    /* its index in d->fill                 */
     uint32_t *tn, *so;            /* its neighbours, its sew_out entries  */
@@ -247,7 +251,10 @@ static int w_pick_apex(struct w_wrapping *x, uint32_t r)
     }
     if (p >= W_TIE)                                 /* W_TIE, W_BAIL, W_NONE */
         return p == W_BAIL ? W_DECLINED : w_wrong(x, "an open facet has no point beyond it");
-    x->c->lv[0] = a; x->c->lv[1] = b; x->c->lv[2] = e; x->c->lv[3] = p;
+    x->a = x->c->lv[0] = a;
+    x->b = x->c->lv[1] = b;
+    x->e = x->c->lv[2] = e;
+    x->p = x->c->lv[3] = p;
     x->finite = a != inf && b != inf && e != inf && p != inf;
     x->check = x->guess && x->finite;
     return W_DONE;
@@ -305,26 +312,23 @@ static int w_make_cell(struct w_wrapping *x, uint32_t r)
 {
     dd_del *d = x->d;
     struct dd_wrap *w = x->w;
-    const uint32_t *lv = x->c->lv, *gid = d->order.a;
+    const uint32_t a = x->a, b = x->b, e = x->e, p = x->p, *gid = d->order.a;
     x->fp = d->fill.n;
     if (x->fp >= x->limit) return w_wrong(x, "the fill does not close");
     x->m = x->fp < d->star.n ? d->star.a[x->fp] : dd_new_cell(d->t);
     d->fill.a[d->fill.n++] = x->m;                  /* at once: w_drop_fill */
-    uint32_t *tv = dd_tv(d->t, x->m);
+    uint32_t *tv = dd_tv(d->t, x->m), *lc = w->lcell + 4 * x->fp;
     x->tn = dd_tn(d->t, x->m);
     x->so = d->sew_out.a + 4 * x->fp;
-    for (int i = 0; i < 4; i++) {
-        tv[i] = gid[lv[i]];                         /* gid[n] = DD_INF */
-        w->lcell[4 * x->fp + i] = lv[i];
-    }
+    tv[0] = gid[a]; tv[1] = gid[b]; tv[2] = gid[e]; tv[3] = gid[p];   /* gid[n] = DD_INF */
+    lc[0] = a; lc[1] = b; lc[2] = e; lc[3] = p;
     if (w->narrow && x->finite) {
-        w_adj_edge(w, lv[3], lv[0]);
-        w_adj_edge(w, lv[3], lv[1]);
-        w_adj_edge(w, lv[3], lv[2]);
+        w_adj_edge(w, p, a);
+        w_adj_edge(w, p, b);
+        w_adj_edge(w, p, e);
     }
     if (x->check) {
         double *const *L = w->lift;
-        const uint32_t a = lv[0], p = lv[3];
         const double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
         w_cofactors(x->c->K, X, x->c->mb);
         /* o as w_row_o has it; the other guesses' apexes are beyond already */
@@ -343,7 +347,7 @@ static int w_make_cell(struct w_wrapping *x, uint32_t r)
 static int w_close_or_open(struct w_wrapping *x)
 {
     struct dd_wrap *w = x->w;
-    const uint32_t *lv = x->c->lv;
+    const uint32_t lv[4] = {x->a, x->b, x->e, x->p};
     uint64_t key[3];                                /* facet j's: the cell's less lv[j] */
     const uint64_t *kw = w->kword, set = kw[lv[0]] ^ kw[lv[1]] ^ kw[lv[2]] ^ kw[lv[3]];
     for (uint32_t j = 0; j < 3; j++) key[j] = set ^ kw[lv[j]];

@@ -85,24 +85,26 @@ const char *const dd_wrap_stat_names[DD_WS_COUNT] = {
 static void w_free_scratch(void *w) { dd_wrap_free(w); }
 static const dd_scratch_kind w_kind = {"gift wrapping", w_free_scratch};
 
-/* The wrap's scratch, kept in d across deletions (made at the first),
- * with room for this cavity's neighbours; the statistics named.          */
+/* Makes the wrap's scratch at the first deletion, with the CPU's
+ * features, and gives it to d to keep.                                   */
+static dd_status w_new_scratch(dd_del *d, struct dd_wrap **out)
+{
+    struct dd_wrap *w = *out = calloc(1, sizeof *w);
+    if (!w) return DD_ERR_NOMEM;
+#ifdef W_AVX2
+    w->has_avx2 = __builtin_cpu_supports("avx2");
+    w->has_fma = __builtin_cpu_supports("fma");
+#endif
+    return dd_del_keep_scratch(d, &w_kind, w);
+}
+
+/* The wrap's scratch, kept in d across deletions, with room for this
+ * cavity's neighbours; the statistics named.                            */
 static dd_status w_scratch(dd_del *d, struct dd_wrap **out)
 {
-    struct dd_wrap *w = dd_del_scratch(d, &w_kind);
-    dd_status s = DD_OK;
-    if (!w) {
-        w = calloc(1, sizeof *w);
-        if (!w) return DD_ERR_NOMEM;
-#ifdef W_AVX2
-        w->has_avx2 = __builtin_cpu_supports("avx2");
-        w->has_fma = __builtin_cpu_supports("fma");
-#endif
-        s = dd_del_keep_scratch(d, &w_kind, w);
-    }
-    *out = w;
+    dd_status s = (*out = dd_del_scratch(d, &w_kind)) ? DD_OK : w_new_scratch(d, out);
     dd_del_strategy_stats(d, dd_wrap_stat_names, DD_WS_COUNT);
-    if (s == DD_OK) s = w_reserve_n(w, (uint32_t)d->order.n, d->t->nvid);
+    if (s == DD_OK) s = w_reserve_n(*out, (uint32_t)d->order.n, d->t->nvid);
     if (s == DD_OK) s = dd_vec_room(&d->order, 1);
     return s;
 }

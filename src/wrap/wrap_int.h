@@ -7,8 +7,8 @@
  * neighbours are 0 .. n-1 in d->order's order, the infinite vertex is n);
  * the sentinels and thresholds; and, static inline, what the hot loops of
  * several files share: the pencil of a facet (§2), the filtered
- * orientation and conflict tests, the scalar guess, the facet table's
- * probes, the known-neighbour puts.
+ * orientation and conflict tests, the passes to the points near a plane,
+ * the facet table's probes.
  *
  * Invariant: every sign the wrap acts on is certified, by a filter bound
  * (lift.c), by exact integer arithmetic, or by the exact predicates of
@@ -17,10 +17,10 @@
  * simd.c), so that one bound covers every pass.
  *
  * The files: wrap.c the driver (dd_wrap_fill); run.c the wrap (w_run) and
- * the link; guess.c the narrow guesses and the known neighbours; scan.c
- * the certified scans and the perturbation on local numbers; hull.c the
- * hull step; lift.c the lifts and the bounds; ftab.c the facet table and
- * its keys; simd.c the AVX2 passes.
+ * the link; guess.h the guesses that w_run inlines, guess.c the narrow
+ * guess; scan.c the certified scans and the perturbation on local
+ * numbers; hull.c the hull step; lift.c the lifts and the bounds; ftab.c
+ * the facet table and its keys; simd.c the AVX2 passes.
  */
 #ifndef DD_WRAP_INT_H
 #define DD_WRAP_INT_H
@@ -250,13 +250,6 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b);
 /* Whether every point before `end` but x, y, z is surely behind the plane of normal N through y. */
 int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end);
 
-/* guess.c: the narrow guesses and the known neighbours */
-/* The narrow guess on finite facet (a, b, c), pencil m, N, T; W_NONE: the wide guess decides. */
-uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
-                        const double N[4], const double T[4]);
-/* Records edge (k, v) of a new fill cell among the known neighbours. */
-void w_adj_edge(struct dd_wrap *w, uint32_t k, uint32_t v);
-
 /* run.c: the wrap */
 /* Keeps the star's cells as they are, before w_run writes the fill over them. */
 dd_status w_keep_star(dd_del *d, struct dd_wrap *w);
@@ -460,69 +453,6 @@ static inline uint32_t w_next(const struct dd_wrap *w, uint32_t a, const double 
     return w_next_to(w, a, N, from, w->n, unsure);
 }
 
-/* ---- guesses (docs §6) --------------------------------------------------- */
-
-/* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
- * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
- * W_TIE when two such quotients are equal; *unsure: how many had unsure
- * orientation.  No data-dependent branch; O(nk).                         */
-static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const double N[4], const double T[4],
-                                     const uint32_t *ks, uint32_t nk, uint32_t *unsure)
-{
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, oerr = w->oerr;
-    double br = 1.0 / 0.0;
-    uint32_t best = W_NONE, uns = 0;
-    int tie = 0;
-    for (uint32_t i = 0; i < nk; i++) {
-        const uint32_t k = ks ? ks[i] : i;
-        double P[4], ok = w_row_o(L, k, A, N, P);
-        int pos = ok > oerr;
-        uns += !pos & (ok >= -oerr);
-        double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
-        tie |= pos & (r == br);
-        best = r < br ? k : best;
-        br = r < br ? r : br;
-    }
-    *unsure = uns;
-    return tie ? W_TIE : best;
-}
-
-/* The wide guess (docs §6 WIDE): the point beyond abc of least t/o, one
- * pass over the neighbours with no check, W_TIE on equal quotients;
- * W_NONE if none is beyond.  With AVX2 the lean pass where w->lean, in
- * single precision first where w->f32, else the full one; else scalar.
- * *unsure: 1 when points other than a, b, c had unsure orientations, 0
- * when none had, W_UNCOUNTED (the lean pass), W_SINGLE (chosen in single
- * precision, not yet known to be beyond).                               */
-static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4], int *unsure)
-{
-#ifdef W_AVX2
-    if (w->lean && !w->narrow) {
-        *unsure = W_UNCOUNTED;
-        if (w->f32) {
-            const uint32_t p = w_guess_f32(w, a, N, T);
-            if (p == W_BEHIND) {                     /* w_run asks w_all_behind */
-                w->f32_kept++;
-                return W_NONE;
-            }
-            if (p != W_NONE) {
-                w->f32_kept++;
-                *unsure = W_SINGLE;
-                return p;
-            }
-            w->f32_back++;
-        }
-        return w_guess_lean_avx2(w->lift, w->n, a, N, T, w->oerr);
-    }
-    if (w->avx2) return w_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
-#endif
-    uint32_t uns;
-    const uint32_t best = w_least_ratio(w, a, N, T, NULL, w->n, &uns);
-    *unsure = uns != 3;                              /* a, b, c always are */
-    return best;
-}
-
 /* ---- the facet table (ftab.c) ------------------------------------------- */
 
 /* A triangle's key: the exclusive or of its corners' words (ftab.c).    */
@@ -569,7 +499,7 @@ static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t
     *val = r;
 }
 
-/* ---- the rest ------------------------------------------------------------ */
+/* ---- the float lifts, the budget ---------------------------------------- */
 
 /* The float lifts, made at their first use in a deletion: links where
  * the narrow guesses hold and no hull step is taken never pay for them. */
@@ -580,24 +510,6 @@ static inline float *const *w_flift(struct dd_wrap *w)
         w->f32_ready = 1;
     }
     return w->flift;
-}
-
-/* Appends v to k's known neighbours (a hub's list is left as it is).  */
-static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
-{
-    uint8_t c = w->nadj[k];
-    if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
-    w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
-}
-
-/* The known neighbours that link triangle tr gives: each corner the next
- * one, between finite vertices (inf: the infinite vertex's number).     */
-static inline void w_adj_link(struct dd_wrap *w, const uint32_t tr[3], uint32_t inf)
-{
-    for (int j = 0; j < 3; j++) {
-        uint32_t u = tr[j == 2 ? 0 : j + 1];
-        if (tr[j] != inf && u != inf) w_adj_put(w, tr[j], u);
-    }
 }
 
 /* The predicates' tests past their filters so far (pred.h).             */
