@@ -46,11 +46,13 @@
 
 /* ---- the lift and the evaluations ------------------------------------ */
 
-/* The larger of a and b, NaN if either is (a frame with a NaN has no
- * filter: dd_lift_err(NaN) is +inf).                                    */
+/* The larger of a and b; NaN if either is NaN, or if b is infinite (a
+ * frame with such a point has no filter: dd_lift_err(NaN) is +inf, as
+ * for m = +inf).  Free of branches, which the frame's sizes would
+ * mispredict: b - b is 0 for a finite b, NaN otherwise.                 */
 static inline double dd_lift_max(double a, double b)
 {
-    return b > a || b != b ? b : a;
+    return (b > a ? b : a) + (b - b);
 }
 
 /* l = (x - q, |x - q|^2), each coordinate difference rounded once and the

@@ -20,9 +20,17 @@
  * cells a flip replaces are only killed once the repair succeeds, and the
  * new cells are given back in reverse (dd_unmake_cells).
  *
+ * The first pass over the star (star_test) is the relocation filter: the
+ * orientations and in-sphere tests of the star's cells are evaluated in
+ * one frame lifted at p (geom/lift.h), each cell's three other vertices
+ * lifted once and its in-sphere tests reduced to one dot product per
+ * facet; only the facets the filter cannot certify, or that fail, go to
+ * Lawson's loop, which tests them exactly.
+ *
  * Cost: O(star) tests, plus O(1) a flip.
  */
 #include "mesh/mesh.h"
+#include "geom/lift.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -37,6 +45,7 @@ typedef struct flip_state {
     dd_tri *t;
     dd_vec *made, *gone, *log, *stack, *later;   /* t's scratch, reused   */
     dd_mark touched;            /* stamp of a cell logged already          */
+    dd_mark replaced;           /* stamp of a cell a flip replaced         */
     int flips;
 } flip_state;
 
@@ -67,55 +76,69 @@ static void undo(flip_state *f, uint32_t ncell0)
 
 static int is_gone(const flip_state *f, uint32_t c)
 {
-    for (size_t k = 0; k < f->gone->n; k++)
-        if (f->gone->a[k] == c) return 1;
-    return 0;
+    return f->t->stamp[c] == f->replaced;
 }
 
-static void sort3(uint32_t *a)
+/* The five vertices of a flip, loc[0..5), name its facets: a facet is the
+ * mask of the local indices of its three vertices.                       */
+static uint32_t cell_mask(const uint32_t loc[5], const uint32_t *w, uint32_t bit[4])
 {
-    dd_sort3u(&a[0], &a[1], &a[2]);
+    uint32_t all = 0;
+    for (int i = 0; i < 4; i++) {
+        int k = 0;
+        while (k < 4 && loc[k] != w[i]) k++;
+        bit[i] = 1u << k;
+        all |= bit[i];
+    }
+    return all;
 }
 
 /* Replaces the k old cells old[] by the m new cells of vertices nv[4m]
- * (positively oriented): facets shared by two new cells are glued to each
- * other, the others to the outside facet of the old cell that has them.
- * Pushes every facet of the new cells for testing.                      */
-static dd_status replace(flip_state *f, const uint32_t *old, int k, const uint32_t (*nv)[4], int m)
+ * (positively oriented), all on the five vertices loc[]: a facet of a new
+ * cell that was on the old cells' boundary is glued to the outside cell
+ * there, the others to each other.  Pushes the boundary facets for
+ * testing; the facets between new cells are locally Delaunay already (a
+ * flip trades the two triangulations of five points, and the one it
+ * leaves failed the same five-point in-sphere test).                     */
+static dd_status replace(flip_state *f, const uint32_t loc[5], const uint32_t *old, int k, const uint32_t (*nv)[4],
+                         int m)
 {
     dd_tri *t = f->t;
-    uint32_t nc[3], key[4][3], okey[3][4][3];
-    dd_status s = DD_OK;
-    for (int a = 0; a < k; a++)
-        for (uint32_t i = 0; i < 4; i++) {
-            for (int j = 0; j < 3; j++) okey[a][i][j] = dd_tv(t, old[a])[dd_facet[i][j]];
-            sort3(okey[a][i]);
-            if ((s = touch(f, dd_tn(t, old[a])[i] >> 2)) != DD_OK) return s;   /* its back pointer is rewritten */
+    uint32_t outside[32], pending[32], has_out = 0, has_pend = 0, bit[4];
+    dd_status s = dd_vec_room(f->stack, 4 * (size_t)m);
+    for (int a = 0; a < k && s == DD_OK; a++) {
+        const uint32_t all = cell_mask(loc, dd_tv(t, old[a]), bit);
+        for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
+            const uint32_t g = dd_tn(t, old[a])[i], n = g >> 2;
+            if (n == old[0] || n == old[1] || (k == 3 && n == old[2])) continue;
+            outside[all & ~bit[i]] = g;
+            has_out |= 1u << (all & ~bit[i]);
+            s = touch(f, n);                   /* its back pointer is rewritten */
         }
-    for (int b = 0; b < m; b++) {
-        nc[b] = dd_new_cell(t);
-        memcpy(dd_tv(t, nc[b]), nv[b], 4 * sizeof **nv);
-        if ((s = dd_vec_push(f->made, nc[b])) != DD_OK) return s;
     }
-    for (int b = 0; b < m; b++)
-        for (uint32_t i = 0; i < 4; i++) {
-            for (int j = 0; j < 3; j++) key[i][j] = nv[b][dd_facet[i][j]];
-            sort3(key[i]);
-            uint32_t g = DD_NONE;
-            for (int b2 = 0; b2 < m && g == DD_NONE; b2++)        /* another new cell */
-                for (uint32_t i2 = 0; i2 < 4 && b2 != b; i2++) {
-                    uint32_t k2[3] = {nv[b2][dd_facet[i2][0]], nv[b2][dd_facet[i2][1]], nv[b2][dd_facet[i2][2]]};
-                    sort3(k2);
-                    if (!memcmp(k2, key[i], sizeof k2)) { g = 4 * nc[b2] + i2; break; }
-                }
-            for (int a = 0; a < k && g == DD_NONE; a++)           /* the outside */
-                for (uint32_t i2 = 0; i2 < 4; i2++)
-                    if (!memcmp(okey[a][i2], key[i], sizeof key[i])) { g = dd_tn(t, old[a])[i2]; break; }
-            if (g == DD_NONE) return DD_ERR_INTERNAL;
-            dd_glue(t, 4 * nc[b] + i, g);
-            if ((s = dd_vec_push(f->stack, 4 * nc[b] + i)) != DD_OK) return s;
+    for (int b = 0; b < m && s == DD_OK; b++) {
+        const uint32_t nc = dd_new_cell(t), all = cell_mask(loc, nv[b], bit);
+        memcpy(dd_tv(t, nc), nv[b], 4 * sizeof **nv);
+        s = dd_vec_push(f->made, nc);
+        for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
+            const uint32_t key = all & ~bit[i];
+            if (has_out >> key & 1) {
+                dd_glue(t, 4 * nc + i, outside[key]);
+                f->stack->a[f->stack->n++] = 4 * nc + i;
+            } else if (has_pend >> key & 1) {
+                dd_glue(t, 4 * nc + i, pending[key]);
+                has_pend &= ~(1u << key);
+            } else {
+                pending[key] = 4 * nc + i;
+                has_pend |= 1u << key;
+            }
         }
-    for (int a = 0; a < k && s == DD_OK; a++) s = dd_vec_push(f->gone, old[a]);
+    }
+    if (s == DD_OK && has_pend) return DD_ERR_INTERNAL;
+    for (int a = 0; a < k && s == DD_OK; a++) {
+        s = dd_vec_push(f->gone, old[a]);
+        t->stamp[old[a]] = f->replaced;
+    }
     f->flips++;
     return s;
 }
@@ -140,6 +163,7 @@ static int flip(flip_state *f, uint32_t c, uint32_t i, dd_status *err)
     dd_tri *t = f->t;
     const uint32_t g = dd_tn(t, c)[i], n = g >> 2, x = dd_tv(t, c)[i], o = dd_tv(t, n)[g & 3];
     const uint32_t tri[3] = {dd_tv(t, c)[dd_facet[i][0]], dd_tv(t, c)[dd_facet[i][1]], dd_tv(t, c)[dd_facet[i][2]]};
+    const uint32_t loc[5] = {tri[0], tri[1], tri[2], o, x};
     uint32_t nv[3][4];
     int reflex = -1;
     for (int e = 0; e < 3; e++) {     /* cell (p, q, o, x) for edge pq of the facet */
@@ -150,7 +174,7 @@ static int flip(flip_state *f, uint32_t c, uint32_t i, dd_status *err)
     }
     if (reflex < 0) {
         const uint32_t old[2] = {c, n};
-        *err = replace(f, old, 2, (const uint32_t(*)[4])nv, 3);
+        *err = replace(f, loc, old, 2, (const uint32_t(*)[4])nv, 3);
         return 0;
     }
     /* 3-2: the third cell around edge pq must hold x and o */
@@ -169,7 +193,7 @@ static int flip(flip_state *f, uint32_t c, uint32_t i, dd_status *err)
     }
     if (side[0] == side[1]) return 1;        /* pq does not cross rxo */
     const uint32_t old[3] = {c, n, m};
-    *err = replace(f, old, 3, (const uint32_t(*)[4])two, 2);
+    *err = replace(f, loc, old, 3, (const uint32_t(*)[4])two, 2);
     return 0;
 }
 
@@ -206,54 +230,109 @@ static int lawson(flip_state *f, dd_status *err)
     return ok && *err == DD_OK;
 }
 
+/* Positions but i, in an order that makes (i, after[i][0..3)) an even
+ * permutation of (0, 1, 2, 3): the orientation of a cell, with vertex i
+ * first.                                                                 */
+static const uint8_t after[4][3] = {{1, 2, 3}, {0, 3, 2}, {3, 0, 1}, {2, 1, 0}};
+
+/* The relocation filter, v now at p: every finite cell of v's star
+ * positively oriented, and each facet of the star (a facet through v
+ * from the cell of lesser id, a link facet from the star) locally
+ * Delaunay.  In the frame lifted at p, where v's row is 0, a cell's
+ * orientation is det3 of its other three rows R (in `after` order) and
+ * its in-sphere test against an apex o is the cofactors K of R dotted
+ * with L[o]: K . L[o] < 0 iff o is inside the cell's sphere (lift.h).
+ * Pushes the facets the filter cannot certify, or that fail, on
+ * f->stack (room made by the caller) for Lawson's exact tests; hull
+ * cells go there whole.  0 when a star cell is not positively oriented. */
+static int star_test(flip_state *f, uint32_t v, const double *p)
+{
+    dd_tri *t = f->t;
+    const dd_vec *star = &t->conflict;
+    dd_vec *stack = f->stack;
+    for (size_t k = 0; k < star->n; k++) {
+        const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
+        const uint32_t i = w[0] == v ? 0 : w[1] == v ? 1 : w[2] == v ? 2 : 3;
+        if (has(w, DD_INF)) {
+            for (uint32_t j = 0; j < 4; j++)
+                if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+            continue;
+        }
+        double R[3][4], mi[6], K[4], m = 0;
+        for (int a = 0; a < 3; a++) m = dd_lift_max(m, dd_lift_row(R[a], dd_pt(t, w[after[i][a]]), p));
+        dd_lift_minors(mi, R[0], R[1]);
+        if (dd_lift_orient(mi, R[2]) > dd_lift_orient_err(m)) {
+#ifdef DD_TEST_BUILD
+            if (orient4(t, w) <= 0) __builtin_trap();   /* the filter is never wrong */
+#endif
+        } else if (orient4(t, w) <= 0) {
+            return 0;
+        }
+        dd_lift_cofactors(K, R[2], mi);
+        for (uint32_t j = 0; j < 4; j++) {
+            if (j != i && c > nb[j] >> 2) continue;
+            const uint32_t apex = dd_tv(t, nb[j] >> 2)[nb[j] & 3];
+            if (apex != DD_INF) {
+                double L[4];
+                const double ma = dd_lift_max(m, dd_lift_row(L, dd_pt(t, apex), p));
+                if (dd_lift_dot4(K, L) > dd_lift_err(ma)) {
+#ifdef DD_TEST_BUILD
+                    if (dd_cell_conflict(t, c, dd_pt(t, apex))) __builtin_trap();
+#endif
+                    continue;
+                }
+            }
+            stack->a[stack->n++] = 4 * c + j;
+        }
+    }
+    return 1;
+}
+
+/* The repair succeeded: vertex links, the count of finite cells (every
+ * flipped cell is finite: + the new ones, - the replaced ones; a cell
+ * made and replaced counts in both), the replaced cells killed.         */
+static void commit(flip_state *f)
+{
+    dd_tri *t = f->t;
+    for (size_t k = 0; k < f->made->n; k++) {
+        const uint32_t c = f->made->a[k];
+        if (is_gone(f, c)) continue;
+        for (int i = 0; i < 4; i++) t->vcell[dd_tv(t, c)[i]] = c;
+    }
+    t->nfinite += (uint32_t)f->made->n;
+    t->nfinite -= (uint32_t)f->gone->n;
+    for (size_t k = 0; k < f->gone->n; k++) dd_kill_cell(t, f->gone->a[k]);
+    for (size_t k = f->made->n; k > 0; k--)
+        if (!is_gone(f, f->made->a[k - 1])) {
+            t->hint = f->made->a[k - 1];
+            break;
+        }
+}
+
 int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_status *err)
 {
     *flips = 0;
     *err = dd_star_cells(t, v, &t->conflict);
     if (*err != DD_OK) return 0;
-    double *x = t->xyz + 3 * (size_t)v, old[3] = {x[0], x[1], x[2]};
-    x[0] = p[0], x[1] = p[1], x[2] = p[2];
-    for (size_t k = 0; k < t->conflict.n; k++) {   /* the star stays a triangulation */
-        const uint32_t *w = dd_tv(t, t->conflict.a[k]);
-        if (has(w, DD_INF)) continue;
-        if (orient4(t, w) <= 0) {
-            x[0] = old[0], x[1] = old[1], x[2] = old[2];
-            return 0;
-        }
-    }
     dd_vec *sc = t->flip;
     for (int k = 0; k < 5; k++) sc[k].n = 0;
-    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], dd_new_epoch(t, 1), 0};
+    if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;
+    const dd_mark mark = dd_new_epoch(t, 2);
+    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0};
+    double *x = t->xyz + 3 * (size_t)v, old[3] = {x[0], x[1], x[2]};
+    x[0] = p[0], x[1] = p[1], x[2] = p[2];
+    if (!star_test(&f, v, p)) {
+        x[0] = old[0], x[1] = old[1], x[2] = old[2];
+        return 0;
+    }
     const uint32_t ncell0 = t->ncell;
     *err = dd_reserve_cells(t, 3 * DD_FLIP_MAX);
-    /* every facet of the star once: a facet through v (between two star
-     * cells) from the cell of lesser id, a link facet from the star     */
-    for (size_t k = 0; *err == DD_OK && k < t->conflict.n; k++) {
-        const uint32_t c = t->conflict.a[k];
-        for (uint32_t i = 0; i < 4 && *err == DD_OK; i++)
-            if (dd_tv(t, c)[i] == v || c < dd_tn(t, c)[i] >> 2) *err = dd_vec_push(f.stack, 4 * c + i);
-    }
     const int ok = *err == DD_OK && lawson(&f, err);
     if (!ok) {
         undo(&f, ncell0);
         x[0] = old[0], x[1] = old[1], x[2] = old[2];
     } else {
-        /* vertex links; the count of finite cells (every flipped cell is
-         * finite): + the new ones kept, - the old ones replaced          */
-        for (size_t k = 0; k < f.made->n; k++) {
-            const uint32_t c = f.made->a[k];
-            if (is_gone(&f, c)) continue;
-            for (int i = 0; i < 4; i++) t->vcell[dd_tv(t, c)[i]] = c;
-            t->nfinite++;
-        }
-        for (size_t k = 0; k < f.gone->n; k++) {
-            const uint32_t c = f.gone->a[k];
-            int made = 0;
-            for (size_t j = 0; j < f.made->n && !made; j++) made = f.made->a[j] == c;
-            if (!made) t->nfinite--;
-            dd_kill_cell(t, c);
-        }
-        if (f.made->n) t->hint = f.made->a[f.made->n - 1];
+        commit(&f);
         *flips = f.flips;
     }
     return ok;
