@@ -249,10 +249,15 @@ dd_status dd_reserve_cells(dd_tri *t, uint32_t k)
     return resize_cells(t, (uint32_t)cap);
 }
 
+/* Room kept past the cells in use: an edit makes its new cells before it
+ * frees the old ones, so with no room the first edit after construction
+ * would grow, and copy, the whole array.  A few stars' worth.           */
+#define CELL_SLACK 4096u
+
 void dd_shrink_cells(dd_tri *t)
 {
-    uint32_t cap = t->ncell ? t->ncell : 1;
-    if (cap < t->cap_c) resize_cells(t, cap);   /* cannot fail: see there */
+    uint64_t cap = (uint64_t)t->ncell + CELL_SLACK;
+    if (cap < t->cap_c) resize_cells(t, (uint32_t)cap);   /* cannot fail: see there */
 }
 
 uint32_t dd_new_cell(dd_tri *t)
