@@ -252,7 +252,7 @@ static int star_test(flip_state *f, uint32_t v, const double *p)
     dd_vec *stack = f->stack;
     for (size_t k = 0; k < star->n; k++) {
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
-        const uint32_t i = w[0] == v ? 0 : w[1] == v ? 1 : w[2] == v ? 2 : 3;
+        const uint32_t i = dd_slot_of(w, v);
         if (has(w, DD_INF)) {
             for (uint32_t j = 0; j < 4; j++)
                 if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;

@@ -292,6 +292,14 @@ static inline int dd_index_of(const dd_tri *t, uint32_t c, uint32_t x)
     return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : v[3] == x ? 3 : -1;
 }
 
+/* The position of x among a cell's vertices v[0..4), x being one of them:
+ * free of branches, since where x sits is data no processor predicts.   */
+static inline uint32_t dd_slot_of(const uint32_t *v, uint32_t x)
+{
+    const uint32_t at3 = v[3] == x;       /* bits: 1 at 1 or 3, 2 at 2 or 3 */
+    return ((uint32_t)(v[1] == x) | at3) | ((uint32_t)(v[2] == x) | at3) << 1;
+}
+
 /* Reserves `step` (at most DD_EPOCH_STEP_MAX) fresh mark values for a
  * pass and returns the first; the pass may use first .. first + step - 1. */
 static inline dd_mark dd_new_epoch(dd_tri *t, uint32_t step)

@@ -9,7 +9,7 @@
  * made once and kept across deletions.  The probes are inline in
  * wrap_int.h (w_fkey, w_fprobe, w_fslot_of, w_reserve_recs).
  *
- * Invariant: the table is at most half full and every record has its
+ * Invariant: the table is at most a quarter full and every record has its
  * entry (it grows with the records and takes them again); two distinct
  * sets of three local numbers below DD_WRAP_CODE_LEN have distinct keys
  * (wrap.h).  A key is the exclusive or of the corners' words: symmetric,
@@ -69,13 +69,14 @@ static const uint64_t w_bit_words[64] = {
 #undef W_B4
 };
 
-/* Empties the table, sized for about `expect` records at most half full,
- * and picks the keys' words for this cavity's n + 1 local numbers.  O(1)
- * but for a larger table.                                               */
+/* Empties the table, sized for about `expect` records at most a quarter
+ * full (a probe then nearly always stops at its first slot: the exit of
+ * its loop is a branch no processor predicts), and picks the keys' words
+ * for this cavity's n + 1 local numbers.  O(1) but for a larger table.  */
 dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
 {
     void *fs = w->fs;
-    dd_status s = dd_gen_table_reset(&fs, &w->fs_alloc, &w->fs_gen, &w->fs_mask, 2 * expect, sizeof *w->fs);
+    dd_status s = dd_gen_table_reset(&fs, &w->fs_alloc, &w->fs_gen, &w->fs_mask, 4 * expect, sizeof *w->fs);
     w->fs = fs;
     w->fs_shift = 64u - (uint32_t)__builtin_popcount(w->fs_mask);
     w->kword = w->n < 64 ? w_bit_words : w->code;   /* made for n + 1 (dd_wrap_fill) */
@@ -94,7 +95,7 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
 }
 
 /* Room for `more` more records: the record arrays doubled as needed,
- * then the table until it is at most half full (w_reserve_recs).       */
+ * then the table until it is at most a quarter full (w_reserve_recs). */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
     if (w->nrec + more > w->cap_rec) {
@@ -107,6 +108,6 @@ dd_status w_grow_recs(struct dd_wrap *w, size_t more)
         w->cap_rec = cap;
     }
     dd_status s = DD_OK;
-    while (s == DD_OK && 2 * (w->nrec + more) > w->fs_mask + 1) s = w_ftab_grow(w);
+    while (s == DD_OK && 4 * (w->nrec + more) > w->fs_mask + 1) s = w_ftab_grow(w);
     return s;
 }

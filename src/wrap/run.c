@@ -105,7 +105,7 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
     for (size_t k = 0; k < d->star.n; k++) {
         uint32_t c = d->star.a[k];
         const uint32_t *v = dd_tv(t, c);
-        int i = dd_index_of(t, c, d->q);
+        const uint32_t i = dd_slot_of(v, d->q);
         uint32_t lv[3];
         for (int j = 0; j < 3; j++) {
             uint32_t g = v[dd_facet[i][j]];
@@ -157,7 +157,7 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
 /* Whether (a, b, c) is a rotation of triangle r: the same orientation.  */
 static inline int w_same_turn(const uint32_t r[3], uint32_t a, uint32_t b)
 {
-    return (r[0] == a && r[1] == b) | (r[1] == a && r[2] == b) | (r[2] == a && r[0] == b);
+    return ((r[0] == a) & (r[1] == b)) | ((r[1] == a) & (r[2] == b)) | ((r[2] == a) & (r[0] == b));
 }
 
 /* The arrays of the cell being made, which the tests read in place.  Its
