@@ -332,7 +332,7 @@ static void auto_least_degree(tl_state *st, uint32_t n)
     free(p);
 }
 
-/* The exact-test budget of gift wrapping (wrap.c, W_EXACT_FROM) weighs
+/* The exact-test budget of gift wrapping (wrap_int.h, W_EXACT_FROM) weighs
  * the tests it leaves to the predicates by their cost (w_spent): on the
  * moment curve, n = 2048, a deletion's proof leaves thousands of tests
  * to the predicates, most of them settled by the predicates' filters,
@@ -366,7 +366,7 @@ static void auto_wraps_dense_moment(tl_state *st, uint32_t v)
     free(p);
 }
 
-/* Gift wrapping (wrap.c) builds the fill's cells and no others: the
+/* Gift wrapping (src/wrap) builds the fill's cells and no others: the
  * cells it reports built equal the cells the deletion added, counted from
  * the mesh (a link of degree d, the infinite vertex included, is a
  * triangulated sphere: 2d - 4 star cells go).  On generic points, interior
@@ -425,7 +425,7 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
 /* Two concentric shells of n sphere points each, radii 1 and 2 (the outer
  * one turned by a fixed rotation), every radius times 1 + 10^-e * [-1,1):
  * each inner point is an interior vertex whose neighbours are nearly
- * cospherical, so gift wrapping's guesses (wrap.c) are close calls.
+ * cospherical, so gift wrapping's guesses (wrap/guess.c) are close calls.
  * Even indices are the inner shell.                                     */
 static double *shells(uint32_t n, int e, uint32_t *np)
 {
@@ -470,7 +470,7 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     return 1;
 }
 
-/* Wrap courses (wrap.c, dd_wrap_fill), checked against CGAL with
+/* Wrap courses (wrap/wrap.c, dd_wrap_fill), checked against CGAL with
  * wrap_one: deletes up to k vertices with `variant`, of the given parity
  * (-1: any) or, when hull_below > 0, hull vertices of lower degree only,
  * or, when deg_from > 0, vertices of at least that degree only, and
@@ -480,7 +480,7 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
  *  - The guess proved and refuted (wrap-guess/): whatever the proof
  *    decides, kept or refuted and wrapped again by the scans, the result
  *    is CGAL's; both sides of the proof must be exercised.
- *  - Flat faces of the hull (wrap-flat-hull/; wrap.c: w_flat_hull,
+ *  - Flat faces of the hull (wrap-flat-hull/; wrap/scan.c: w_flat_hull,
  *    wrap_scan_inf): on a grid, a cosphere or stacked layers the hull's
  *    faces hold many coplanar points, which the coplanar in-circle rules
  *    of the perturbation triangulate.  Every hull vertex of degree below
@@ -564,13 +564,13 @@ static dd_cgal *wrap_setup(tl_state *st, char *tn, size_t ntn, const char *kind,
     return g;
 }
 
-/* The narrow guesses (wrap.c, w_guess_narrow), on a point set whose
+/* The narrow guesses (wrap/guess.c, w_guess_narrow), on a point set whose
  * links have hubs: deletes vertices lo..hi-1 with `variant`, each result
  * CGAL's (wrap_one), none declined, and counts the kept guesses by where
  * their candidates came from.  want: bit 0, some short-list guess kept
  * at once; bit 1, some two-step guess kept after a refuted short one;
  * bit 2, some wide guess kept after two refuted narrow ones (the
- * sanitizer build's narrower lists, wrap.c).                            */
+ * sanitizer build's narrower lists, wrap/wrap.c).                            */
 static void wrap_narrow_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
                                uint32_t lo, uint32_t hi, int want)
 {
@@ -598,7 +598,7 @@ static void wrap_narrow_course(tl_state *st, const char *name, const double *pts
     dd_free(t);
 }
 
-/* The single-precision guess (wrap.c, w_guess_f32_avx2) and hull step
+/* The single-precision guess (wrap/simd.c, w_guess_f32_avx2) and hull step
  * (w_inf_f32): the sanitizer build makes them for vertices of index
  * 0 mod 4 only, and answers a wrong point on one guess in 16 and on
  * each hull step of those of index 4 mod 8.  Every vertex of index 0
@@ -659,7 +659,7 @@ static void wrap_flat_hull(tl_state *st, const char *name, const double *pts, ui
     wrap_course(st, tn, pts, n, variant, -1, 40, 0, UINT32_MAX, 4, -1);
 }
 
-/* Integer lifts (wrap.c, w_lift): when q and its neighbours have integer
+/* Integer lifts (wrap/lift.c, w_lift): when q and its neighbours have integer
  * coordinates and lie within W_INT_M = 400 of each other per coordinate,
  * every test of the wrap is exact in doubles: none may be left to the
  * exact predicates, and a zero is decided by the perturbation alone.  A
@@ -861,7 +861,7 @@ int main(int argc, char **argv)
     /* The vertex of highest degree among 3000 integer points of a sphere:
      * its cavity (degree 50 or more) is wholly degenerate, every in-sphere
      * test a tie.  Gift wrapping sees that its neighbours are cospherical
-     * and asks the perturbation alone (wrap.c, w_cospherical), so it wraps
+     * and asks the perturbation alone (wrap/scan.c, w_cospherical), so it wraps
      * the cavity itself instead of declining at its budget of exact tests
      * (W_EXACT_FROM); every variant must give CGAL's result.             */
     {
@@ -928,7 +928,7 @@ int main(int argc, char **argv)
         wrap_guess_course(&st, "uniform-2000", p, np, -1, small ? 40 : 150, 1);
         free(p);
         /* proved; since the guess decides points of unsure orientation
-         * (wrap.c, wrap_guess) it is refuted on 2 of 300 vertices only, so
+         * (wrap/guess.h, wrap_guess) it is refuted on 2 of 300 vertices only, so
          * the refuted side is asked of the sphere and the shells below  */
         p = gen("grid-perturbed", 512, &np);
         wrap_guess_course(&st, "grid-perturbed-512", p, np, -1, small ? 100 : 300, 1);
@@ -956,7 +956,7 @@ int main(int argc, char **argv)
         free(p);
         /* The moment curve at t = i/512, n = 300: each cavity has facets
          * with a point nearly in their plane, of unsure orientation, that
-         * is the apex; the guess must take such points (wrap.c,
+         * is the apex; the guess must take such points (wrap/guess.h,
          * wrap_guess's *unsure), so that every guess is proved.          */
         p = gen("moment", 300, &np);
         wrap_guess_course(&st, "moment-300", p, np, -1, small ? 2 : 6, 5);
@@ -992,7 +992,7 @@ int main(int argc, char **argv)
      * Deleting a vertex of that face, the guess meets finite facets in
      * the plane z = 0 with points in it and none beyond, which are hull
      * facets only if the coplanar in-circle rules allow: the scan's step
-     * decides them (wrap.c, the guess's wrap_scan_exact, w_flat_hull). */
+     * decides them (src/wrap: the guess's w_scan_exact, w_flat_hull). */
     {
         uint32_t np;
         double *p = gen("uniform", small ? 300 : 600, &np);

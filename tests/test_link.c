@@ -196,7 +196,7 @@ static void run_case(tl_state *st, const char *name, const double *pts, uint32_t
 }
 
 /* dd_unmake_cells (mesh.c), which gives back the cells gift wrapping made
- * for a fill it does not keep (wrap.c, w_drop_fill): after deleting and
+ * for a fill it does not keep (wrap/run.c, w_drop_fill): after deleting and
  * re-inserting vertices (a free list of some cells), k cells are made,
  * from the free list and, past it, from the end, then unmade: the free
  * list (cell by cell), the cell counts and dd_check as before; then the

@@ -270,7 +270,7 @@ static dd_status sew(dd_del *d)
     dd_tri *t = d->t, *x = d->qdt;
     size_t nf = d->fill.n;
     if (d->fill_in_mesh) {
-        /* The fill is in the mesh already (wrap.c), over the star's first
+        /* The fill is in the mesh already (src/wrap), over the star's first
          * cells and past them in new ones, glued inside and matched to
          * the link: glue it to the outside.  Against making it in d->qdt
          * and copying it here: see w_run.                                */

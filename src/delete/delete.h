@@ -92,7 +92,7 @@ typedef struct dd_del {
     int fill_in_mesh;     /* the strategy made the fill in the mesh, over
                              the star's cells and in new ones, glued to
                              each other, and matched it to the link
-                             (gift wrapping, wrap.c)                     */
+                             (gift wrapping, src/wrap)                     */
     dd_vec cellmap;       /* scratch: qdt cell -> new mesh cell           */
     uint64_t rng;         /* dd_del_rand's state, seeded by q            */
 

@@ -33,7 +33,7 @@
 typedef struct dd_pred {
     mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused            */
     /* tests past the filters (the exact stages), in every build: the gift
-     * wrap's budget counts them (wrap.c, w_spent)                        */
+     * wrap's budget counts them (wrap_int.h, w_spent)                        */
     uint64_t orient_exact, insphere_exact;
 #ifdef DD_COUNTERS
     uint64_t orient_calls, insphere_calls;

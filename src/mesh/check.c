@@ -64,7 +64,7 @@ dd_status dd_check(dd_tri *t)
         return dd_fail(t, DD_ERR_INTERNAL, "cell counts wrong: %zu live (recorded %u), %zu finite (recorded %u)",
                        live, t->nlive, finite, t->nfinite);
     /* every other cell is free, once, on the free list: none lost (the
-     * cells a strategy gives back, wrap.c's w_drop_fill)                 */
+     * cells a strategy gives back, wrap/run.c's w_drop_fill)                 */
     size_t nfree = 0;
     for (uint32_t c = t->free_head; c != DD_NONE; c = dd_tn(t, c)[0])
         if (c >= t->ncell || dd_tv(t, c)[0] != DD_DEAD || ++nfree > t->nfree)
