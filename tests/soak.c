@@ -19,7 +19,10 @@
  *    (dimension drop) compared with CGAL's; "churn", deletions interleaved
  *    with insertions of new points (dd_insert, dd_cgal_insert: points
  *    held back from the set, coordinates of deleted points under new
- *    indices, and points equal to a vertex, which both must refuse).
+ *    indices, and points equal to a vertex, which both must refuse) and
+ *    with moves (dd_move, CGAL's move_if_no_collision: steps of up to
+ *    the mean spacing, onto points held back or deleted, onto another
+ *    vertex's point, which both must refuse, or onto the vertex's own).
  * Every deletion takes the next of the engine's strategies in turn
  * (dd_variant_name), so each takes a share.  Each deletion is checked
  * locally: the cells incident to the deleted vertex's neighbours (taken
@@ -30,8 +33,8 @@
  * engine's triangulation.
  *
  * --jobs J forks J workers that take the cases from a queue, the dearest
- * first; the parent waits for them and sums.  The last line is
- * "soak: N deletions, I insertions, M mismatches".  On a mismatch the
+ * first; the parent waits for them and sums.  The last line is "soak:
+ * N deletions, I insertions, V moves, M mismatches".  On a mismatch the
  * worker names the case (dataset, transform, mode, seed), the round and
  * step, the variant and vertex, and the whole run exits 1; `--case K`
  * reruns that case alone.
@@ -142,7 +145,7 @@ static uint32_t below(rng *r, uint32_t m) { return (uint32_t)(next_u64(r) % m); 
 /* ---- the state of a worker ------------------------------------------------- */
 
 typedef struct stats {
-    uint64_t deletions, insertions, mismatches, refusals, sets, checks;
+    uint64_t deletions, insertions, moves, mismatches, refusals, sets, checks;
     uint64_t per_variant[SOAK_MAX_VARIANTS];
 } stats;
 
@@ -553,6 +556,69 @@ static int pair_insert(soak *s, pair *p, const double q[3])
     return maybe_full_check(s, p, what);
 }
 
+/* Moves input vertex v to q on both sides (dd_move, CGAL's
+ * move_if_no_collision).  0 moved, 1 refused by both the same way (q is
+ * another vertex's point, or only coplanar points would remain), -1
+ * mismatch.  Checks the cells around v and its neighbours, before the
+ * move and after.                                                       */
+static int pair_move(soak *s, pair *p, uint32_t v, const double q[3])
+{
+    char what[160];
+    snprintf(what, sizeof what, "moving vertex %u to (%.17g, %.17g, %.17g)", v, q[0], q[1], q[2]);
+    uint32_t k0 = dd_neighbors(p->t, v, p->nb, p->nbcap / 2);
+    dd_status st = dd_move(p->t, v, q);
+    int rc = dd_cgal_move(p->c, v, q);
+    if ((st == DD_ERR_DUPLICATE && rc == 2) || (st == DD_ERR_DIMENSION && rc == 3)) return 1;
+    if (st != DD_OK || rc != 0 || k0 > p->nbcap / 2) {
+        mismatch(s, "%s: engine %s (%s), CGAL %s", what, dd_status_name(st), dd_errmsg(p->t),
+                 rc == 2 ? "found another vertex there" : rc == 3 ? "refused (coplanar)" : rc ? "failed" : "moved it");
+        return -1;
+    }
+    memcpy(p->xyz + 3 * (size_t)v, q, 3 * sizeof *q);
+    s->st.moves++;
+    uint32_t k1 = dd_neighbors(p->t, v, p->nb + k0, p->nbcap / 2 - 1);
+    if (k1 > p->nbcap / 2 - 1) {
+        mismatch(s, "%s: vertex %u has %u neighbours", what, v, k1);
+        return -1;
+    }
+    p->nb[k0 + k1] = v;
+    if (pair_local_check(s, p, p->nb, k0 + k1 + 1, what)) return -1;
+    return maybe_full_check(s, p, what);
+}
+
+/* Where churn moves vertex v: by a step of about `h` per coordinate
+ * (a fraction of the spacing), onto a point held back or deleted, onto
+ * another vertex's point (refused by both) or onto its own (no change). */
+static void move_target(rng *r, const pair *p, uint32_t v, double h, const double *spare, uint32_t nspare,
+                        double q[3])
+{
+    const uint32_t coin = below(r, 100);
+    const double *x = p->xyz + 3 * (size_t)v;
+    if (coin < 70) {
+        for (int c = 0; c < 3; c++) q[c] = x[c] + h * ((double)below(r, 2001) / 1000.0 - 1.0);
+    } else if (coin < 85 && nspare > 0) {
+        memcpy(q, spare + 3 * (size_t)below(r, nspare), 3 * sizeof *q);
+    } else if (coin < 95) {
+        memcpy(q, p->xyz + 3 * (size_t)p->alive[below(r, p->nalive)], 3 * sizeof *q);
+    } else {
+        memcpy(q, x, 3 * sizeof *q);
+    }
+}
+
+/* Half the edge of the points' bounding box over the cube root of their
+ * number: a step about the mean spacing.                                */
+static double mean_spacing(const double *xyz, uint32_t n)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, e = 0;
+    for (uint32_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], xyz[3 * (size_t)i + c]);
+            hi[c] = fmax(hi[c], xyz[3 * (size_t)i + c]);
+        }
+    for (int c = 0; c < 3; c++) e = fmax(e, hi[c] - lo[c]);
+    return 0.5 * e / cbrt(n > 0 ? n : 1);
+}
+
 /* ---- the modes ---------------------------------------------------------------- */
 
 /* Picks n of the np points at random (order kept), in place. */
@@ -692,6 +758,7 @@ static int run_churn(soak *s, const soak_case *c, rng *r)
         if (!gone) { pair_free(&p); free(xyz); return -1; }
         uint64_t goal = n0 / 2;
         if (goal > c->quota - done) goal = c->quota - done;
+        const double h = mean_spacing(xyz, n0);
         uint64_t start = s->st.deletions;
         for (s->step = 0; s->st.deletions - start < goal; s->step++) {
             int rc;
@@ -700,6 +767,14 @@ static int run_churn(soak *s, const soak_case *c, rng *r)
                 uint32_t v = p.alive[below(r, p.nalive)];
                 rc = pair_delete(s, &p, v);
                 if (rc == 0 && ngone < np) memcpy(gone + 3 * (size_t)ngone++, p.xyz + 3 * (size_t)v, 3 * sizeof *gone);
+            } else if (coin < 75) {
+                double q[3];
+                const uint32_t v = p.alive[below(r, p.nalive)];
+                if (ngone > 0 && coin % 2)
+                    move_target(r, &p, v, h / (1 + below(r, 20)), gone, ngone, q);
+                else
+                    move_target(r, &p, v, h / (1 + below(r, 20)), xyz + 3 * (size_t)next, np - next, q);
+                rc = pair_move(s, &p, v, q);
             } else {
                 double q[3];
                 if (coin < 85 && next < np)
@@ -729,13 +804,14 @@ static int run_case(soak *s, const soak_case *c)
     s->cs = c;
     s->round = 0;
     s->step = 0;
-    uint64_t d0 = s->st.deletions, i0 = s->st.insertions;
+    uint64_t d0 = s->st.deletions, i0 = s->st.insertions, m0 = s->st.moves;
     double t0 = now_s();
     int rc = c->mode == MODE_SEQ ? run_seq(s, c, &r) : c->mode == MODE_DOWN ? run_down(s, c, &r) : run_churn(s, c, &r);
     if (!s->quiet || rc)
-        printf("[w%d] case %3d %-14s %-8s %-5s %7llu deletions %6llu insertions %6.1f s%s\n", s->worker, c->index,
-               c->dataset, tf_names[c->tf], mode_names[c->mode], (unsigned long long)(s->st.deletions - d0),
-               (unsigned long long)(s->st.insertions - i0), now_s() - t0, rc ? "  FAILED" : "");
+        printf("[w%d] case %3d %-14s %-8s %-5s %7llu deletions %6llu insertions %6llu moves %6.1f s%s\n", s->worker,
+               c->index, c->dataset, tf_names[c->tf], mode_names[c->mode], (unsigned long long)(s->st.deletions - d0),
+               (unsigned long long)(s->st.insertions - i0), (unsigned long long)(s->st.moves - m0), now_s() - t0,
+               rc ? "  FAILED" : "");
     fflush(stdout);
     return rc;
 }
@@ -876,6 +952,7 @@ int main(int argc, char **argv)
         got++;
         tot.deletions += one.deletions;
         tot.insertions += one.insertions;
+        tot.moves += one.moves;
         tot.mismatches += one.mismatches;
         tot.refusals += one.refusals;
         tot.sets += one.sets;
@@ -893,7 +970,7 @@ int main(int argc, char **argv)
            "checks, %.0f s, %.0f deletions/s\n",
            (unsigned long long)tot.sets, (unsigned long long)tot.refusals, (unsigned long long)tot.checks, secs,
            (double)tot.deletions / (secs > 0 ? secs : 1));
-    printf("soak: %llu deletions, %llu insertions, %llu mismatches\n", (unsigned long long)tot.deletions,
-           (unsigned long long)tot.insertions, (unsigned long long)tot.mismatches);
+    printf("soak: %llu deletions, %llu insertions, %llu moves, %llu mismatches\n", (unsigned long long)tot.deletions,
+           (unsigned long long)tot.insertions, (unsigned long long)tot.moves, (unsigned long long)tot.mismatches);
     return failed || tot.mismatches ? 1 : 0;
 }

@@ -575,6 +575,32 @@ int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index)
     }
 }
 
+int dd_cgal_move(dd_cgal *c, uint32_t v, const double p[3])
+{
+    if (c == NULL || p == NULL || !has_vertex(c, v))
+        return 1;
+    for (int k = 0; k < 3; k++)
+        if (!std::isfinite(p[k]))
+            return 1;
+    try {
+        const Point pt = to_point(p), old = c->pts[v];
+        if (pt == old)
+            return 0;
+        Vertex_handle h = c->dt.move_if_no_collision(c->vh[v], pt);
+        if (h->info() != v)
+            return 2;                      /* p is another vertex's point */
+        if (c->dt.dimension() != 3) {      /* put back: refused, as dd_move does */
+            c->vh[v] = c->dt.move_if_no_collision(h, old);
+            return c->dt.dimension() == 3 && c->vh[v]->info() == v ? 3 : 1;
+        }
+        c->vh[v] = h;
+        c->pts[v] = pt;
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
 uint32_t dd_cgal_num_input(const dd_cgal *c)
 {
     return c == NULL ? 0 : static_cast<uint32_t>(c->pts.size());

@@ -52,6 +52,12 @@ int dd_cgal_reinsert(dd_cgal *c, uint32_t v);
  * Returns 0 when inserted, 2 when p equals a vertex (nothing changes, no
  * index taken: dd_insert's DD_ERR_DUPLICATE), 1 on any other failure.  */
 int dd_cgal_insert(dd_cgal *c, const double p[3], uint32_t index);
+/* Moves input vertex v to p with CGAL's move_if_no_collision, v keeping
+ * its index.  Returns 0 when moved (or p is v's point), 2 when p is
+ * another vertex's point and 3 when only coplanar points would remain
+ * (nothing changes: dd_move's DD_ERR_DUPLICATE and DD_ERR_DIMENSION), 1
+ * on any other failure.                                                  */
+int dd_cgal_move(dd_cgal *c, uint32_t v, const double p[3]);
 /* Number of input points so far (given to dd_cgal_build, then inserted). */
 uint32_t dd_cgal_num_input(const dd_cgal *c);
 
