@@ -54,6 +54,20 @@ int parse_u64(const char *s, uint64_t *out)
     return 0;
 }
 
+int parse_num_opts(const char *cmd, int argc, char **argv, const num_opt *opts, int n)
+{
+    for (int i = 1; i < argc; i++) {
+        const int positional = argv[i][0] != '-';
+        int k = 0;
+        while (k < n && (positional ? opts[k].flag != NULL : !opts[k].flag || strcmp(argv[i], opts[k].flag))) k++;
+        if (k == n) return usage_error(cmd, "unknown option '%s'", argv[i]);
+        const char *val = positional ? argv[i] : i + 1 < argc ? argv[++i] : NULL;
+        if (!val || parse_u64(val, opts[k].dst) || *opts[k].dst > 50000000)
+            return usage_error(cmd, "bad number for '%s'", argv[i]);
+    }
+    return 0;
+}
+
 double now_seconds(void)
 {
     struct timespec ts;

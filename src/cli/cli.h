@@ -33,6 +33,19 @@ int wants_help(int argc, char **argv);
 int print_help(const char *cmd);
 /* Parses a non-negative decimal integer, all of s; 0 on success. */
 int parse_u64(const char *s, uint64_t *out);
+/* A numeric option of a bench command: its flag, or NULL for the
+ * positional N, and where its value goes.                               */
+typedef struct num_opt {
+    const char *flag;
+    uint64_t *dst;
+} num_opt;
+/* Parses argv[1..argc) into opts[0..n): each a number at most 5e7;
+ * 0, or usage_error's status naming the option.                         */
+int parse_num_opts(const char *cmd, int argc, char **argv, const num_opt *opts, int n);
+/* Whether t's triangulation is the CGAL one's (cgal/cgal_query.h),
+ * simplex for simplex.                                                  */
+struct dd_cgalq;
+int same_as_cgalq(dd_tri *t, const struct dd_cgalq *g);
 /* A monotonic clock, in seconds. */
 double now_seconds(void);
 /* The points of FILE (.xyz or .off, dd_read_points); 0, or EXIT_INPUT

@@ -22,30 +22,11 @@ typedef struct eb_opts {
 static int parse_opts(int argc, char **argv, eb_opts *o)
 {
     *o = (eb_opts){100000, 2, 200000, 1};
-    for (int i = 1; i < argc; i++) {
-        uint64_t *dst = !strcmp(argv[i], "--passes") ? &o->passes
-                        : !strcmp(argv[i], "--set")  ? &o->m
-                        : !strcmp(argv[i], "--seed") ? &o->seed
-                        : argv[i][0] != '-'          ? &o->n
-                                                     : NULL;
-        const char *val = dst == &o->n ? argv[i] : i + 1 < argc ? argv[++i] : NULL;
-        if (!dst) return usage_error("edit-bench", "unknown option '%s'", argv[i]);
-        if (!val || parse_u64(val, dst) || *dst > 50000000)
-            return usage_error("edit-bench", "bad number for '%s'", argv[i]);
-    }
+    const num_opt opts[] = {{NULL, &o->n}, {"--passes", &o->passes}, {"--set", &o->m}, {"--seed", &o->seed}};
+    int rc = parse_num_opts("edit-bench", argc, argv, opts, (int)(sizeof opts / sizeof *opts));
+    if (rc) return rc;
     if (o->n < 8 || o->m < 8) return usage_error("edit-bench", "N and --set must be at least %s", "8");
     return 0;
-}
-
-static int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
-{
-    int32_t *a = NULL, *b = NULL;
-    size_t na = 0, nb = 0;
-    int same = dd_canonical(t, &a, &na) == DD_OK && !dd_cgalq_canonical(g, &b, &nb) && na == nb &&
-               !memcmp(a, b, 4 * na * sizeof *a);
-    free(a);
-    free(b);
-    return same;
 }
 
 /* Interleaves the low 21 bits of x, y, z (a Morton code). */

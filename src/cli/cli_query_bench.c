@@ -34,18 +34,10 @@ typedef struct qb_opts {
 static int parse_opts(int argc, char **argv, qb_opts *o)
 {
     *o = (qb_opts){200000, 50000, 50000, 1, 100000, 12};
-    for (int i = 1; i < argc; i++) {
-        uint64_t *dst = !strcmp(argv[i], "--inserts")  ? &o->inserts
-                        : !strcmp(argv[i], "--queries") ? &o->queries
-                        : !strcmp(argv[i], "--seed")    ? &o->seed
-                        : !strcmp(argv[i], "--live")    ? &o->live
-                        : !strcmp(argv[i], "--rounds")  ? &o->rounds
-                        : argv[i][0] != '-'             ? &o->n
-                                                        : NULL;
-        const char *val = dst == &o->n ? argv[i] : i + 1 < argc ? argv[++i] : NULL;
-        if (!dst) return usage_error("query-bench", "unknown option '%s'", argv[i]);
-        if (!val || parse_u64(val, dst) || *dst > 50000000) return usage_error("query-bench", "bad number for '%s'", argv[i]);
-    }
+    const num_opt opts[] = {{NULL, &o->n},          {"--inserts", &o->inserts}, {"--queries", &o->queries},
+                            {"--seed", &o->seed},   {"--live", &o->live},       {"--rounds", &o->rounds}};
+    int rc = parse_num_opts("query-bench", argc, argv, opts, (int)(sizeof opts / sizeof *opts));
+    if (rc) return rc;
     if (o->n < 4 || o->live < 8) return usage_error("query-bench", "N and --live must be at least %s", "8");
     return 0;
 }
@@ -61,7 +53,7 @@ static void print_row(const char *what, uint64_t k, const qb_row *r, const char 
            check, r->bad ? "NO" : "yes");
 }
 
-static int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
+int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
 {
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
