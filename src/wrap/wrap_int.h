@@ -295,11 +295,7 @@ static inline void w_cofactors(double K[4], const double X[4], const double m[6]
 #ifdef __SSE2__
     w_cofactors_v(K, _mm_loadu_pd(X), _mm_loadu_pd(X + 2), m);
 #else
-    enum { M01, M02, M03, M12, M13, M23 };
-    K[0] = -(X[1] * m[M23] - X[2] * m[M13] + X[3] * m[M12]);
-    K[1] = X[0] * m[M23] - X[2] * m[M03] + X[3] * m[M02];
-    K[2] = -(X[0] * m[M13] - X[1] * m[M03] + X[3] * m[M01]);
-    K[3] = X[0] * m[M12] - X[1] * m[M02] + X[2] * m[M01];
+    dd_lift_cofactors(K, X, m);
 #endif
 }
 
@@ -317,12 +313,7 @@ static inline void w_minors(double m[6], const double B[4], const double C[4])
     _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)),
                                     _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
 #else
-    m[0] = B[0] * C[1] - B[1] * C[0];
-    m[1] = B[0] * C[2] - B[2] * C[0];
-    m[2] = B[0] * C[3] - B[3] * C[0];
-    m[3] = B[1] * C[2] - B[2] * C[1];
-    m[4] = B[1] * C[3] - B[3] * C[1];
-    m[5] = B[2] * C[3] - B[3] * C[2];
+    dd_lift_minors(m, B, C);
 #endif
 }
 
