@@ -21,6 +21,7 @@
 
 #include "datasets.h"
 #include "readers.h"
+#include "tokens.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -406,50 +407,11 @@ typedef struct points {
     size_t n, cap;           /* in points */
 } points;
 
-static const char *skip_blank(const char *p)
-{
-    while (*p != '\0' && isspace((unsigned char)*p)) p++;
-    return p;
-}
-
 /* 1 if nothing but blanks or a comment remains at p. */
 static int at_end(const char *p)
 {
     p = skip_blank(p);
     return *p == '\0' || *p == '#';
-}
-
-static int ends_token(char c)
-{
-    return c == '\0' || isspace((unsigned char)c);
-}
-
-/* Parses one number token at *pp; on success advances *pp past it. */
-static int parse_number(const char **pp, double *v)
-{
-    const char *p = skip_blank(*pp);
-    if (*p == '\0' || *p == '#') return 0;
-    char *end;
-    *v = strtod(p, &end);
-    if (end == p || !ends_token(*end)) return 0;
-    *pp = end;
-    return 1;
-}
-
-/* Parses one nonnegative decimal integer token (digits only). */
-static int parse_count(const char **pp, uint64_t *v)
-{
-    const char *p = skip_blank(*pp);
-    if (!isdigit((unsigned char)*p)) return 0;
-    uint64_t x = 0;
-    for (; isdigit((unsigned char)*p); p++) {
-        if (x > (UINT64_MAX - 9) / 10) return 0;
-        x = 10 * x + (uint64_t)(*p - '0');
-    }
-    if (!ends_token(*p)) return 0;
-    *v = x;
-    *pp = p;
-    return 1;
 }
 
 /* A printable copy of the current line for messages: at most 40 chars,
@@ -627,8 +589,8 @@ static dd_status parse_off(reader *rd, points *pts, char *msg, size_t msglen)
         p = rd->line;
     }
     uint64_t nv, nf, ne;
-    if (!parse_count(&p, &nv) || !parse_count(&p, &nf)
-        || (!at_end(p) && !parse_count(&p, &ne)) || !at_end(p)) {
+    if (!parse_count_tok(&p, &nv, 0) || !parse_count_tok(&p, &nf, 0)
+        || (!at_end(p) && !parse_count_tok(&p, &ne, 0)) || !at_end(p)) {
         quote_line(rd, q, sizeof q);
         set_msg(msg, msglen, "%s:%lu: expected counts 'nv nf ne', got '%s'",
                 rd->name, rd->lineno, q);

@@ -19,6 +19,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "readers.h"
+#include "tokens.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -247,44 +248,7 @@ static dd_status check_finite(double v, int c, const char *where, uint64_t verte
     return DD_OK;
 }
 
-/* ---- text tokens -------------------------------------------------------- */
-
-static int ends_token(char c) { return c == '\0' || isspace((unsigned char)c); }
-
-static const char *skip_blank(const char *p)
-{
-    while (*p && isspace((unsigned char)*p)) p++;
-    return p;
-}
-
-/* One number token (strtod syntax, C locale); advances *pp. */
-static int parse_number(const char **pp, double *v)
-{
-    const char *p = skip_blank(*pp);
-    if (*p == '\0') return 0;
-    char *end;
-    *v = strtod(p, &end);
-    if (end == p || !ends_token(*end)) return 0;
-    *pp = end;
-    return 1;
-}
-
-/* One non-negative decimal integer token; advances *pp. */
-static int parse_count(const char **pp, uint64_t *v)
-{
-    const char *p = skip_blank(*pp);
-    if (*p == '+') p++;
-    if (!isdigit((unsigned char)*p)) return 0;
-    uint64_t x = 0;
-    for (; isdigit((unsigned char)*p); p++) {
-        if (x > (UINT64_MAX - 9) / 10) return 0;
-        x = 10 * x + (uint64_t)(*p - '0');
-    }
-    if (!ends_token(*p)) return 0;
-    *v = x;
-    *pp = p;
-    return 1;
-}
+/* ---- text tokens (and tokens.h) ----------------------------------------- */
 
 /* The next token of p copied to out (at most len - 1 chars); advances. */
 static size_t take_word(const char **pp, char *out, size_t len)
@@ -411,7 +375,7 @@ static dd_status ply_header(ply *p, char *msg, size_t msglen)
             memset(e, 0, sizeof *e);
             e->line = ln;
             size_t n = take_word(&l, e->name, sizeof e->name);
-            if (n == 0 || n >= MAX_NAME || !parse_count(&l, &e->count) || *skip_blank(l)) {
+            if (n == 0 || n >= MAX_NAME || !parse_count_tok(&l, &e->count, 1) || *skip_blank(l)) {
                 set_msg(msg, msglen, "%s:%lu: expected 'element NAME COUNT' (a name of at most %d characters, "
                         "a non-negative integer count)", name, ln, MAX_NAME - 1);
                 return DD_ERR_PARSE;
@@ -645,7 +609,7 @@ static dd_status ply_ascii_elem(ply *p, const ply_elem *e, int is_vertex, points
             double x;
             if (pr->count_type != T_NONE) {
                 uint64_t n;
-                if (!parse_count(&l, &n)) {
+                if (!parse_count_tok(&l, &n, 1)) {
                     set_msg(msg, msglen, "%s:%lu: element '%s' %llu: expected the count of list '%s' (a "
                             "non-negative integer)", s->name, s->lineno, e->name, (unsigned long long)i,
                             pr->name);
