@@ -34,8 +34,7 @@ void w_lift(struct dd_wrap *w, const double *q)
         for (int i = 0; i < 3; i++) {
             L[i][k] = p[i] - q[i];
             integral = integral && floor(p[i]) == p[i];
-            const double a = fabs(L[i][k]);
-            m = a > m ? a : m;                      /* no branch */
+            m = dd_lift_max(m, fabs(L[i][k]));
         }
         L[3][k] = L[0][k] * L[0][k] + L[1][k] * L[1][k] + L[2][k] * L[2][k];
     }
