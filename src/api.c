@@ -80,7 +80,7 @@ static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_varian
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
 }
 
-dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
+dd_status dd_delete_with(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
@@ -90,6 +90,8 @@ dd_status dd_delete(dd_tri *t, uint32_t input, const char *variant)
     if (s == DD_OK) note_deleted(t, q);
     return s;
 }
+
+dd_status dd_delete(dd_tri *t, uint32_t v) { return dd_delete_with(t, v, NULL); }
 
 /* The predicate counters of t and of its deletions' conflict DT. */
 void dd_get_counters(const dd_tri *t, dd_counters *c)
@@ -214,7 +216,7 @@ static void prefetch_stars(const dd_tri *t, const uint32_t *next, size_t n)
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out
  * of memory) re-inserts those done, in reverse, which restores DT(S).   */
-dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
     const dd_variant *var;
     dd_status s = resolve_variant(t, variant, &var);
@@ -265,6 +267,11 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *var
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     free(ids);
     return s;
+}
+
+dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n)
+{
+    return dd_delete_set_with(t, vs, n, NULL);
 }
 
 /* Collects the star of input vertex v for the queries below. */

@@ -133,12 +133,14 @@ static inline int dd_is_infinite(int32_t v) { return v < 0; }
 
 /* ---- deletion (paper: DELETEVERTEX) ------------------------------------ */
 
-/* Deletes input vertex v with the named strategy (NULL = the default, the
- * fastest correct one).  The result is DT(S minus v), identical to CGAL's.
+/* Deletes input vertex v with the default strategy, the fastest correct
+ * one (dd_delete_with names another: research and benchmarks; NULL there
+ * is the default too; dd_variant_name lists them).  The result is DT(S minus v), identical to CGAL's.
  * Refused with DD_ERR_DIMENSION when fewer than 4 or only coplanar points
  * would remain; DD_ERR_UNKNOWN_VERTEX / DD_ERR_UNKNOWN_VARIANT for bad
  * names.  On any failure the triangulation is unchanged.                 */
-dd_status dd_delete(dd_tri *t, uint32_t v, const char *variant);
+dd_status dd_delete(dd_tri *t, uint32_t v);
+dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
 
 /* Deletes the input vertices vs[0..n), a set: the result is DT of the
  * points left whatever the order, and the order taken is the engine's
@@ -148,7 +150,8 @@ dd_status dd_delete(dd_tri *t, uint32_t v, const char *variant);
  * that is no vertex or is listed twice, DD_ERR_DIMENSION when fewer than
  * 4 or only coplanar points would be left, checked before any deletion;
  * on any failure the triangulation is unchanged.                         */
-dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
+dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n);
+dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
 /* Moves input vertex v to p; v keeps its index.  The result is DT of the
  * moved point set, identical to CGAL's.  DD_ERR_DUPLICATE if p is the

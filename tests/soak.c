@@ -459,7 +459,7 @@ static int pair_delete(soak *s, pair *p, uint32_t v)
     }
     char what[96];
     snprintf(what, sizeof what, "deleting vertex %u with %s", v, var);
-    dd_status st = dd_delete(p->t, v, var);
+    dd_status st = dd_delete_with(p->t, v, var);
     int rc = dd_cgal_remove(p->c, v);
     if (st == DD_ERR_DIMENSION && rc) return 1;
     if (st != DD_OK || rc) {
@@ -509,7 +509,7 @@ static int pair_delete_set(soak *s, pair *p, rng *r, uint32_t m)
     }
     char what[128];
     snprintf(what, sizeof what, "deleting the set of %u vertices %u, %u, ... with %s", m, vs[0], vs[1], var);
-    dd_status st = dd_delete_set(p->t, vs, m, var);
+    dd_status st = dd_delete_set_with(p->t, vs, m, var);
     if (st != DD_OK) {
         mismatch(s, "%s: engine %s (%s)", what, dd_status_name(st), dd_errmsg(p->t));
         return -1;

@@ -242,7 +242,7 @@ static void check_sequence(tl_state *st, const char *ds, uint32_t n, uint32_t op
             uint32_t v = (uint32_t)((x >> 8) % hi);
             if (!live[v]) continue;
             tl_controls_for(t, v);
-            bad += dd_delete(t, v, NULL) != DD_OK;
+            bad += dd_delete(t, v) != DD_OK;
             live[v] = 0;
             deleted++;
         } else if (next < nn) {                        /* insert a new point */
@@ -294,7 +294,7 @@ static void check_churn(tl_state *st, uint32_t n, uint32_t rounds)
             uint32_t j = i + (uint32_t)(x % (np - i)), s = live[i];
             live[i] = live[j], live[j] = s;
         }
-        bad += dd_delete_set(t, live, half, NULL) != DD_OK;
+        bad += dd_delete_set(t, live, half) != DD_OK;
         for (uint32_t i = 0; i < half && !bad; i++) {
             x ^= x << 13, x ^= x >> 7, x ^= x << 17;
             double q[3] = {(double)(x & 0xfffff) / 1048576.0, (double)((x >> 20) & 0xfffff) / 1048576.0,
@@ -332,7 +332,7 @@ static void check_bad_input(tl_state *st)
     uint32_t nv = dd_nearest_vertex(t, nanp);
     double q[3];
     dd_status s4 = dd_point(t, 100000, q);
-    dd_delete(t, 7, NULL);                       /* a failed insert keeps 7's slot */
+    dd_delete(t, 7);                       /* a failed insert keeps 7's slot */
     dd_status s5 = dd_insert(t, p + 3 * 8, &idx), s6 = dd_reinsert(t, 7);
     dd_canonical(t, &after, &na);
     int same = na == nb && !memcmp(before, after, 4 * na * sizeof *after);

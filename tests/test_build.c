@@ -112,7 +112,7 @@ int main(int argc, char **argv)
             for (int k = 0; k < 2; k++) {
                 dd_counters c0, c1;
                 tl_controls_for(t, vs[k]);
-                failed += dd_delete(t, vs[k], "auto") != DD_OK;
+                failed += dd_delete_with(t, vs[k], "auto") != DD_OK;
                 dd_get_counters(t, &c0);
                 failed += dd_reinsert(t, vs[k]) != DD_OK;
                 dd_get_counters(t, &c1);

@@ -90,7 +90,7 @@ static void single_deletions(tl_state *st, const char *name, const double *pts, 
             tally *ta = &tv[vi];
             ta->total++;
             tl_controls_for(t, v);
-            dd_status s = dd_delete(t, v, var);
+            dd_status s = dd_delete_with(t, v, var);
             if (refused) {
                 canon now = ours(t);
                 if (s != DD_ERR_DIMENSION || !same(now, orig))
@@ -170,7 +170,7 @@ static void sequence(tl_state *st, const char *name, const double *pts, uint32_t
         if (!dd_is_vertex(t, v)) continue;
         int cg = dd_cgal_remove(g, v);
         tl_controls_for(t, v);
-        dd_status s = dd_delete(t, v, var);
+        dd_status s = dd_delete_with(t, v, var);
         if (cg != 0) {   /* CGAL refuses: we must refuse too, and change nothing */
             if (s != DD_ERR_DIMENSION) { ok = 0; snprintf(why, sizeof why, "vertex %u: CGAL refuses, we say %s", v, dd_status_name(s)); }
             continue;
@@ -212,7 +212,7 @@ static void delete_set(tl_state *st, const char *name, const double *pts, uint32
     int ok = 1;
     for (uint32_t i = 0; i < m && ok; i++)
         if (dd_cgal_remove(g, vs[i])) { ok = 0; snprintf(why, sizeof why, "CGAL refuses vertex %u", vs[i]); }
-    dd_status s = dd_delete_set(t, vs, m, var);
+    dd_status s = dd_delete_set_with(t, vs, m, var);
     if (ok && s != DD_OK) { ok = 0; snprintf(why, sizeof why, "%s", dd_errmsg(t)); }
     if (ok) {
         canon a = ours(t), b = theirs(g);
@@ -233,7 +233,7 @@ static void set_refused(tl_state *st, const char *name, dd_tri *t, const uint32_
                         dd_status want)
 {
     canon before = ours(t);
-    dd_status s = dd_delete_set(t, vs, n, var);
+    dd_status s = dd_delete_set_with(t, vs, n, var);
     canon after = ours(t);
     char tn[160];
     snprintf(tn, sizeof tn, "delete-set-refused/%s", name);
@@ -274,7 +274,7 @@ static int delete_each(dd_tri *t, uint32_t v, const char *const vars[2], canon g
 {
     for (int k = 0; k < 2; k++) {
         tl_controls_for(t, v);
-        dd_status s = dd_delete(t, v, vars[k]);
+        dd_status s = dd_delete_with(t, v, vars[k]);
         dd_last_delete_stats(t, &ds[k]);
         got[k] = ours(t);
         dd_status c = s == DD_OK ? dd_check(t) : DD_OK;
@@ -390,7 +390,7 @@ static void wrap_builds_only_fill(tl_state *st, const char *ds, uint32_t n, cons
         if (!dd_is_vertex(t, v) || dd_degree(t, v) >= 256) continue;
         size_t before = dd_num_tets(t), star = 2 * (size_t)dd_degree(t, v) - 4;
         tl_controls_for(t, v);
-        if (dd_delete(t, v, variant) != DD_OK) {
+        if (dd_delete_with(t, v, variant) != DD_OK) {
             snprintf(why, sizeof why, "deleting %u: %s", v, dd_errmsg(t));
             ok = 0;
             break;
@@ -456,7 +456,7 @@ static int wrap_one(dd_tri *t, dd_cgal *g, uint32_t v, const char *variant, long
     canon ref = theirs(g);
     dd_cgal_reinsert(g, v);
     tl_controls_for(t, v);
-    dd_status s = dd_delete(t, v, variant);
+    dd_status s = dd_delete_with(t, v, variant);
     canon now = ours(t);
     dd_last_delete_stats(t, out);
     course[out->strategy[DD_WS_COURSE]]++;
@@ -692,20 +692,20 @@ static void refusals(tl_state *st)
     dd_tri *t;
     dd_create(&t, pyr, 6, msg, sizeof msg);   /* point 5 duplicates point 1 */
     canon before = ours(t);
-    dd_status s = dd_delete(t, 4, NULL);
+    dd_status s = dd_delete(t, 4);
     canon after = ours(t);
     tl_check(st, s == DD_ERR_DIMENSION && same(before, after), "refuse/apex-leaves-coplanar",
              "status %s, unchanged %d", dd_status_name(s), same(before, after));
     free(after.a);
-    s = dd_delete(t, 5, NULL);
+    s = dd_delete(t, 5);
     after = ours(t);
     tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && same(before, after) && strstr(dd_errmsg(t), "duplicate"),
              "refuse/duplicate-index", "status %s: %s", dd_status_name(s), dd_errmsg(t));
     free(after.a);
-    s = dd_delete(t, 77, NULL);
+    s = dd_delete(t, 77);
     tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && strstr(dd_errmsg(t), "77"), "refuse/unknown-index",
              "status %s: %s", dd_status_name(s), dd_errmsg(t));
-    s = dd_delete(t, 0, "no-such-variant");
+    s = dd_delete_with(t, 0, "no-such-variant");
     after = ours(t);
     tl_check(st, s == DD_ERR_UNKNOWN_VARIANT && same(before, after), "refuse/unknown-variant",
              "status %s", dd_status_name(s));
@@ -716,7 +716,7 @@ static void refusals(tl_state *st)
     /* a tetrahedron: no deletion possible */
     double tet[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
     dd_create(&t, tet, 4, msg, sizeof msg);
-    s = dd_delete(t, 2, NULL);
+    s = dd_delete(t, 2);
     tl_check(st, s == DD_ERR_DIMENSION, "refuse/four-points", "status %s", dd_status_name(s));
     dd_free(t);
 
@@ -724,9 +724,9 @@ static void refusals(tl_state *st)
     uint32_t np;
     double *p = gen("uniform", 200, &np);
     dd_create(&t, p, np, msg, sizeof msg);
-    dd_delete(t, 10, NULL);
+    dd_delete(t, 10);
     canon b2 = ours(t);
-    s = dd_delete(t, 10, NULL);
+    s = dd_delete(t, 10);
     canon a2 = ours(t);
     tl_check(st, s == DD_ERR_UNKNOWN_VERTEX && same(a2, b2), "refuse/deleted-twice", "status %s", dd_status_name(s));
     free(a2.a);
@@ -879,7 +879,7 @@ int main(int argc, char **argv)
         if (dd_create(&t, p, np, msg, sizeof msg) == DD_OK) {
             dd_delete_stats ds_ = {0};
             tl_controls_for(t, best);
-            dd_status s = dd_delete(t, best, "gift-wrap");
+            dd_status s = dd_delete_with(t, best, "gift-wrap");
             dd_last_delete_stats(t, &ds_);
             tl_check(&st, s == DD_OK && ds_.strategy[DD_WS_COURSE] != DD_WRAP_DECLINED, "cosphere-3000-max-degree/wrapped",
                      "status %s, course %d (declined: %d)", dd_status_name(s), ds_.strategy[DD_WS_COURSE], DD_WRAP_DECLINED);
@@ -1070,7 +1070,7 @@ int main(int argc, char **argv)
             set_refused(&st, "unknown-vertex", t, unknown, 2, NULL, DD_ERR_UNKNOWN_VERTEX);
             set_refused(&st, "unknown-last", t, bad_last, 4, "grr-edge", DD_ERR_UNKNOWN_VERTEX);
             set_refused(&st, "unknown-variant", t, twice, 2, "nope", DD_ERR_UNKNOWN_VARIANT);
-            dd_status s = dd_delete(t, 9, NULL);
+            dd_status s = dd_delete(t, 9);
             uint32_t deleted[] = {4, 9};
             if (s == DD_OK) set_refused(&st, "deleted-before", t, deleted, 2, NULL, DD_ERR_UNKNOWN_VERTEX);
             else tl_check(&st, 0, "delete-set-refused/deleted-before", "dd_delete: %s", dd_errmsg(t));
@@ -1081,7 +1081,7 @@ int main(int argc, char **argv)
             set_refused(&st, "rolled-back", t, vs, 40, "auto", DD_ERR_NOMEM);
             dd_test_control(t, DD_TEST_SET_FAIL_AT, 0);
 #endif
-            tl_check(&st, m == 64 && dd_delete_set(t, vs, 0, NULL) == DD_OK, "delete-set/empty",
+            tl_check(&st, m == 64 && dd_delete_set(t, vs, 0) == DD_OK, "delete-set/empty",
                      "layer of %u points; %s", m, dd_errmsg(t));
             free(vs);
             dd_free(t);
@@ -1116,7 +1116,7 @@ int main(int argc, char **argv)
                 if (apex == 3000) set_refused(&st, "plane-and-both-apexes", t, both, 3, NULL, DD_ERR_DIMENSION);
                 int cg = 0;
                 for (uint32_t i = 0; i < 11; i++) cg |= dd_cgal_remove(g, set[i] = i < 10 ? 290 * i + 1 : apex);
-                dd_status s = dd_delete_set(t, set, 11, NULL);
+                dd_status s = dd_delete_set(t, set, 11);
                 canon a = ours(t), b = theirs(g);
                 tl_check(&st, !cg && s == DD_OK && same(a, b) && dd_check(t) == DD_OK, name, "CGAL %d, status %s: %s",
                          cg, dd_status_name(s), dd_errmsg(t));

@@ -215,7 +215,7 @@ static void unmake_cells(tl_state *st, uint32_t k)
     }
     for (uint32_t v = 0; v < 40; v += 7) {            /* free cells, then none */
         tl_controls_for(t, v);
-        if (dd_delete(t, v, NULL) != DD_OK || dd_reinsert(t, v) != DD_OK) break;
+        if (dd_delete(t, v) != DD_OK || dd_reinsert(t, v) != DD_OK) break;
     }
     uint32_t before[512], nb = 0, head = t->free_head, nfree = t->nfree, ncell = t->ncell, nlive = t->nlive;
     for (uint32_t c = t->free_head; c != DD_NONE && nb < 512; c = dd_tn(t, c)[0]) before[nb++] = c;

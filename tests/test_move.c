@@ -140,7 +140,7 @@ static void set_course(tl_state *st, const char *ds, uint32_t n, double fraction
     uint64_t x = 99;
     for (uint32_t i = 1; i < np; i++)   /* 0 stays: the points deleted become copies of it for CGAL */
         if (dd_is_vertex(t, i) && (double)(step(&x) >> 11) / 9007199254740992.0 < fraction) vs[k++] = i;
-    dd_status s = dd_delete_set(t, vs, k, NULL);
+    dd_status s = dd_delete_set(t, vs, k);
     double *left = malloc(3 * (size_t)np * sizeof *left);
     memcpy(left, p, 3 * (size_t)np * sizeof *left);
     for (uint32_t j = 0; j < k; j++) memcpy(left + 3 * (size_t)vs[j], p, 3 * sizeof *left);   /* merged into 0 */

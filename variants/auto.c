@@ -1,6 +1,6 @@
 /*
- * auto.c -- the default strategy (first in registry.c: dd_delete(t, v,
- * NULL) takes it), the fastest correct course by the cavity's degree d:
+ * auto.c -- the default strategy (first in registry.c: dd_delete(t, v)
+ * takes it), the fastest correct course by the cavity's degree d:
  *  1. gift wrapping (wrap.h), which builds only the fill's cells: narrow
  *     guesses where the link has a hub (the curves), the wide guess, O(d)
  *     a cell, only below AUTO_WIDE_BELOW_DEGREE;

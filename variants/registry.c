@@ -1,7 +1,7 @@
 /*
  * registry.c -- the table of deletion strategies (DESIGN 6).  Adding a
  * variant is one file in variants/ and one line here.  The first entry is
- * the default of dd_delete(..., NULL) and of the CLI: the fastest correct
+ * the default of dd_delete(...) and of the CLI: the fastest correct
  * one, as measured by the bench.
  */
 #include "delete/delete.h"

@@ -278,7 +278,7 @@ static int time_insert(dd_tri *t, const bench_vertex *bv, const uint32_t *nb, in
     *match = *del_match = 0;
     while (reps < runs_for(keep) && (reps == 0 || spent < pair_budget_s)) {
         double t0 = now_seconds();
-        if (dd_delete(t, bv->v, NULL) != DD_OK) return -1;
+        if (dd_delete(t, bv->v) != DD_OK) return -1;
         double t1 = now_seconds();
         uint64_t h = 0;
         if (reps == 0)
@@ -647,9 +647,9 @@ static double seq_run(const double *xyz, uint32_t np, dd_tri *t, const uint32_t 
     double t0 = now_seconds();
     dd_status s = DD_OK;
     uint32_t i = 0;
-    if (set) s = dd_delete_set(t, order, k, var);
+    if (set) s = dd_delete_set_with(t, order, k, var);
     else
-        while (i < k && (s = dd_delete(t, order[i], var)) == DD_OK) i++;
+        while (i < k && (s = dd_delete_with(t, order[i], var)) == DD_OK) i++;
     secs = now_seconds() - t0;
     if (s != DD_OK) {
         fprintf(stderr, "dtdel seq-bench: %s cannot delete %s%u: %s\n", var, set ? "the set, " : "vertex ",

@@ -40,7 +40,7 @@ int find_row(const char *name, row *out)
 int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed)
 {
     switch (r->kind) {
-    case ROW_ENGINE: return dd_delete(t, v, r->name) != DD_OK;
+    case ROW_ENGINE: return dd_delete_with(t, v, r->name) != DD_OK;
     case ROW_CGAL: return dd_cgal_remove(g, v);
     default: return dd_cgal_remove_rnd(g, v, seed);
     }
@@ -56,7 +56,7 @@ int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v)
  * the deletion failed, -2 when the re-insertion did (dd_errmsg says why). */
 static int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
 {
-    if (dd_delete(t, v, NULL) != DD_OK) return -1;
+    if (dd_delete(t, v) != DD_OK) return -1;
     double t0 = now_seconds();
     dd_status st = dd_reinsert(t, v);
     *secs = now_seconds() - t0;
@@ -162,14 +162,14 @@ int cmd_delete(int argc, char **argv)
     }
     int rc = load_both("delete", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
     if (rc) { free(vs); return rc; }
-    if (set && dd_delete_set(t, vs, nv, r.name) != DD_OK) {
+    if (set && dd_delete_set_with(t, vs, nv, r.name) != DD_OK) {
         fprintf(stderr, "dtdel delete: cannot delete the set: %s\n", dd_errmsg(t));
         rc = EXIT_INPUT;
     }
     for (size_t k = 0; k < nv && !rc && !set; k++) {
         if (r.kind == ROW_ENGINE) {
             dd_reset_counters(t);
-            if (dd_delete(t, vs[k], r.name) != DD_OK) {
+            if (dd_delete_with(t, vs[k], r.name) != DD_OK) {
                 fprintf(stderr, "dtdel delete: cannot delete vertex %u: %s\n", vs[k], dd_errmsg(t));
                 rc = EXIT_INPUT;
             } else if (stats) {

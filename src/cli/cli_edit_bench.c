@@ -117,7 +117,7 @@ static int set_deletion(const eb_opts *o, double fraction)
     }
     if (!rc) {
         double t0 = now_seconds();
-        rc |= dd_delete_set(t, vs, k, NULL) != DD_OK;
+        rc |= dd_delete_set(t, vs, k) != DD_OK;
         double t1 = now_seconds();
         rc |= dd_cgalq_remove_set(g, vs, k) != 0;
         double t2 = now_seconds();

@@ -180,7 +180,7 @@ static int churn(const qb_opts *o)
             live[i] = live[j];
             live[j] = s;
         }
-        rc |= dd_delete_set(t, live, half, NULL) != DD_OK;
+        rc |= dd_delete_set(t, live, half) != DD_OK;
         for (uint32_t i = 0; !rc && i < half; i++) {
             double q[3] = {(rand_below(&x, 1u << 30) + 0.5) / (1u << 30), (rand_below(&x, 1u << 30) + 0.5) / (1u << 30),
                            (rand_below(&x, 1u << 30) + 0.5) / (1u << 30)};

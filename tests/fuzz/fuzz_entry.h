@@ -262,7 +262,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             uint32_t v = fz_vertex(s, fz_byte(&in));
             const char *var = fz_variant(fz_byte(&in));
             snprintf(what, sizeof what, "delete of %u with %s", v, var);
-            st = dd_delete(s->t, v, var);
+            st = dd_delete_with(s->t, v, var);
             if (st == DD_OK) bad = fz_verify(s, what);
             else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
             else {
@@ -323,7 +323,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             }
             const char *var = fz_variant(fz_byte(&in));
             snprintf(what, sizeof what, "delete_set of %u vertices with %s", k, var);
-            st = dd_delete_set(s->t, vs, k, var);
+            st = dd_delete_set_with(s->t, vs, k, var);
             if (st == DD_OK) bad = fz_verify(s, what);
             else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
             else {
