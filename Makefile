@@ -1,12 +1,13 @@
 # dtdel -- vertex deletion for 3D Delaunay triangulations, checked against CGAL.
 #
-#   make              build/dtdel (CLI) and build/libdtdel.a (+ src/dtdel.h)
+#   make              build/dtdel (CLI), build/libdtdel.so and build/libdtdel.a
 #   make deps         install the Debian packages (or say what to install)
 #   make test         release and sanitizer (ASan+UBSan) test suites
 #   make bench        the full benchmark, tables and plots into results/
 #   make bench-quick  a short benchmark (about 2 minutes)
 #   make plots        redraw the plots from results/*.csv
-#   make install      PREFIX=/usr/local: library, header and CLI
+#   make install      PREFIX=/usr/local [DESTDIR=]: libraries, headers,
+#                     dtdel.pc and the CLI
 #   make clean
 #
 # Three builds share the sources: build/ (release, -O2), build/asan/
@@ -22,7 +23,12 @@ CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L -Isrc -I.
 # -O3 for our engine and for the CGAL shim alike (CGAL's own CMake Release
 # default), so the bench compares like with like.
 OPT      = -O3 -DNDEBUG -ffp-contract=off
-CFLAGS_R = $(CSTD) $(WARN) $(OPT)
+# Position-independent, so that the objects make the shared library and a
+# static archive that can go into one; -fvisibility=hidden exports only
+# what dtdel.h and dtdel_stats.h declare (DD_API_BEGIN), and lets the
+# library's internal calls bind locally, as -fPIE's do.
+PIC      = -fPIC -fvisibility=hidden
+CFLAGS_R = $(CSTD) $(WARN) $(OPT) $(PIC)
 CFLAGS_A = $(CSTD) $(WARN) -O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-omit-frame-pointer -DDD_TEST_BUILD
 CFLAGS_C = $(CFLAGS_R) -DDD_COUNTERS
 CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
@@ -31,6 +37,13 @@ CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
 # minutes.  CXXFLAGS_A only links the sanitizer runtime in.
 CXXFLAGS_A = -std=c++17 -O1 -fsanitize=address,undefined
 LIBS     = -lgmp -lmpfr -lm
+# What the library itself needs (the CLI and tests add CGAL's MPFR).
+LIB_LIBS = -lgmp -lm
+
+# The version, read from its one source, dtdel.h.
+version_part = $(shell sed -n 's/^\#define DD_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' src/dtdel.h)
+VERSION  := $(call version_part,MAJOR).$(call version_part,MINOR).$(call version_part,PATCH)
+SONAME   := libdtdel.so.$(call version_part,MAJOR)
 
 # The engine's layers, bottom up (docs/architecture.md): each folder of
 # src/ uses only those before it; variants/ and src/api.c sit on top.
@@ -61,7 +74,7 @@ TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
 .PHONY: all deps test test-release test-asan bench bench-quick plots install clean
 .DEFAULT_GOAL := all
 
-all: deps $(B)/dtdel $(B)/libdtdel.a
+all: deps $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc
 
 deps:
 	@sh scripts/deps.sh
@@ -73,15 +86,33 @@ $(B)/obj/%.o: %.c $(HDRS)
 $(B)/obj/%.o: %.cpp $(HDRS)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS_R) -c $< -o $@
+# The installed static archive: one object, linked partially, whose
+# hidden (internal) names are made local, so that it defines only the
+# public names, as the shared library exports them.
 $(B)/libdtdel.a: $(LIB_OBJ_R)
+	@rm -f $@ $(B)/obj/libdtdel.o
+	$(LD) -r -o $(B)/obj/libdtdel.o $^
+	objcopy --localize-hidden $(B)/obj/libdtdel.o
+	ar rcs $@ $(B)/obj/libdtdel.o
+# The tests' archive: every object, internal names included (tests call
+# the layers directly); never installed.
+$(B)/libdtdel-internal.a: $(LIB_OBJ_R)
 	@rm -f $@
 	ar rcs $@ $^
+$(B)/libdtdel.so.$(VERSION): $(LIB_OBJ_R)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,-z,defs $^ -o $@ $(LIB_LIBS)
+$(B)/libdtdel.so: $(B)/libdtdel.so.$(VERSION)
+	ln -sf libdtdel.so.$(VERSION) $(B)/$(SONAME)
+	ln -sf $(SONAME) $@
+$(B)/dtdel.pc: dtdel.pc.in src/dtdel.h
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS_PRIVATE@|$(LIB_LIBS)|' $< >$@
+# The CLI uses only the public calls: it links the installed archive.
 $(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
 $(A)/obj/%.o: %.c $(HDRS)
@@ -119,7 +150,7 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h
 # Both suites run; the runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
-	@$(MAKE) --no-print-directory $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
+	@$(MAKE) --no-print-directory all $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
 	@sh tests/run.sh $(B) $(A)
 
 # ---- bench --------------------------------------------------------------------
@@ -134,11 +165,19 @@ bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
 plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
+# dtdel.pc names PREFIX: `make install PREFIX=...` remakes it for that
+# prefix (DESTDIR only stages the files).
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
+	@grep -qx 'prefix=$(PREFIX)' $(B)/dtdel.pc || rm -f $(B)/dtdel.pc
+	@$(MAKE) --no-print-directory $(B)/dtdel.pc
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
-	install -m 644 src/dtdel.h $(DESTDIR)$(PREFIX)/include/dtdel.h
+	install -m 755 $(B)/libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libdtdel.so.$(VERSION)
+	ln -sf libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libdtdel.so
+	install -m 644 $(B)/dtdel.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
+	install -m 644 src/dtdel.h src/dtdel_stats.h $(DESTDIR)$(PREFIX)/include/
 
 clean:
 	rm -rf build
