@@ -104,8 +104,10 @@ $(B)/libdtdel.so.$(VERSION): $(LIB_OBJ_R)
 $(B)/libdtdel.so: $(B)/libdtdel.so.$(VERSION)
 	ln -sf libdtdel.so.$(VERSION) $(B)/$(SONAME)
 	ln -sf $(SONAME) $@
+# pkg-config's file for PREFIX (make install writes its own for its PREFIX)
+MAKE_PC = sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS_PRIVATE@|$(LIB_LIBS)|' dtdel.pc.in
 $(B)/dtdel.pc: dtdel.pc.in src/dtdel.h
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS_PRIVATE@|$(LIB_LIBS)|' $< >$@
+	$(MAKE_PC) >$@
 # The CLI uses only the public calls: it links the installed archive.
 $(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
@@ -165,18 +167,16 @@ bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
 plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
-# dtdel.pc names PREFIX: `make install PREFIX=...` remakes it for that
-# prefix (DESTDIR only stages the files).
+# DESTDIR only stages the files: dtdel.pc names PREFIX.
 install: all
-	@grep -qx 'prefix=$(PREFIX)' $(B)/dtdel.pc || rm -f $(B)/dtdel.pc
-	@$(MAKE) --no-print-directory $(B)/dtdel.pc
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
 	install -m 755 $(B)/libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libdtdel.so.$(VERSION)
 	ln -sf libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libdtdel.so
-	install -m 644 $(B)/dtdel.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
+	$(MAKE_PC) >$(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
+	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
 	install -m 644 src/dtdel.h src/dtdel_stats.h $(DESTDIR)$(PREFIX)/include/
 
 clean:

@@ -27,7 +27,8 @@
  *  - A list written into a caller's array of `max` entries (dd_neighbors,
  *    dd_incident_cells) is truncated as snprintf truncates: at most max
  *    entries are written, and the return value is the full count, so a
- *    return value above max says the array was too short.
+ *    return value above max says the array was too short (with max 0 the
+ *    array may be NULL: a call that only counts).
  *  - dd_errmsg(t) is the message of the last call on t that failed; a
  *    later success leaves it.  Only calls taking a non-const dd_tri *
  *    write it; read-only calls (const dd_tri *) report by status alone.

@@ -32,6 +32,8 @@ done
 run "release layers" sh scripts/layers.sh "$REL/obj"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
+run "release exports" sh tests/test_exports.sh "$REL"
+run "release install" sh tests/test_install.sh "$REL"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     run "asan $(basename "$t")" "$t" small
