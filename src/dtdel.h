@@ -228,7 +228,7 @@ dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
  * a random order).  All or nothing: DD_ERR_UNKNOWN_VERTEX for an index
  * that is no vertex, DD_ERR_ARG for one listed twice, DD_ERR_DIMENSION
  * when fewer than 4 or only coplanar points would be left, checked before
- * any deletion; on any failure the triangulation is unchanged.                       */
+ * any deletion; on any failure the triangulation is unchanged.          */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n);
 dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
@@ -248,10 +248,10 @@ dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
  * the call; so memory stays bounded by the live size under churn, and an
  * index deleted before a dd_insert may name the new point after it
  * (dd_reinsert of it then fails).  With DD_STABLE_INDICES (dd_create_ex)
- * the index is always dd_num_input() before the call.  DD_ERR_DUPLICATE if p equals a
- * vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p; on failure nothing
- * changes.  The walk starts near p (as dd_locate): expected O(1) cells
- * on evenly spread points, plus the O(degree) update.                    */
+ * the index is always dd_num_input() before the call.  DD_ERR_DUPLICATE
+ * if p equals a vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p; on
+ * failure nothing changes.  The walk starts near p (as dd_locate):
+ * expected O(1) cells on evenly spread points, plus the O(degree) update. */
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
 /* Puts back input vertex v after dd_delete (same index, same point). */
 dd_status dd_reinsert(dd_tri *t, uint32_t v);
