@@ -80,7 +80,9 @@ static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_varian
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
 }
 
-dd_status dd_delete_with(dd_tri *t, uint32_t input, const char *variant)
+/* The public edits below are each the body of a dd_edit_begin / end
+ * pair: the cells they make become dd_created_cells' list.            */
+static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
@@ -89,6 +91,12 @@ dd_status dd_delete_with(dd_tri *t, uint32_t input, const char *variant)
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
     if (s == DD_OK) note_deleted(t, q);
     return s;
+}
+
+dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant)
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, delete_one(t, v, variant));
 }
 
 dd_status dd_delete(dd_tri *t, uint32_t v) { return dd_delete_with(t, v, NULL); }
@@ -216,7 +224,7 @@ static void prefetch_stars(const dd_tri *t, const uint32_t *next, size_t n)
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out
  * of memory) re-inserts those done, in reverse, which restores DT(S).   */
-dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
     const dd_variant *var;
     dd_status s = resolve_variant(t, variant, &var);
@@ -239,6 +247,7 @@ dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char
     if (s == DD_OK) s = check_left(t, ids, n);
     if (s == DD_OK && rebuild_is_cheaper(t, n)) {
         s = dd_rebuild_without(t, ids, n);
+        if (s == DD_OK) dd_note_all(t);
         for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
         free(ids);
         return s;
@@ -267,6 +276,12 @@ dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     free(ids);
     return s;
+}
+
+dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, delete_set(t, vs, n, variant));
 }
 
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n)
@@ -340,7 +355,7 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
 
 /* ---- insertion ----------------------------------------------------------- */
 
-dd_status dd_reinsert(dd_tri *t, uint32_t input)
+static dd_status reinsert(dd_tri *t, uint32_t input)
 {
     t->err[0] = 0;
     if (input >= t->np)
@@ -351,6 +366,12 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     if (t->vcell[v] != DD_NONE)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
     return dd_insert_vertex(t, v);
+}
+
+dd_status dd_reinsert(dd_tri *t, uint32_t v)
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, reinsert(t, v));
 }
 
 
@@ -376,7 +397,7 @@ static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
     return DD_OK;
 }
 
-dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+static dd_status insert_point(dd_tri *t, const double p[3], uint32_t *index)
 {
     t->err[0] = 0;
     for (int c = 0; c < 3; c++) {
@@ -406,3 +427,8 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
     return DD_OK;
 }
 
+dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, insert_point(t, p, index));
+}

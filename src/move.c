@@ -69,7 +69,7 @@ static dd_status move_by_reinsertion(dd_tri *t, uint32_t v, const double p[3])
     return DD_OK;
 }
 
-dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
+static dd_status move_vertex(dd_tri *t, uint32_t input, const double p[3])
 {
     t->err[0] = 0;
     for (int c = 0; c < 3; c++) {
@@ -92,4 +92,10 @@ dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
     s = move_by_reinsertion(t, v, p);
     if (s == DD_OK) dd_grid_note(t, v);
     return s;
+}
+
+dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, move_vertex(t, input, p));
 }

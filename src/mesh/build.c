@@ -300,6 +300,7 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
     dd_shrink_cells(t);     /* the reserve above was a guess */
+    if (dd_publish_all_cells(t) != DD_OK) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     *out = t;
     return DD_OK;
 }

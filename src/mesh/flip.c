@@ -302,6 +302,7 @@ static void commit(flip_state *f)
     t->nfinite += (uint32_t)f->made->n;
     t->nfinite -= (uint32_t)f->gone->n;
     for (size_t k = 0; k < f->gone->n; k++) dd_kill_cell(t, f->gone->a[k]);
+    dd_note_made(t, f->made->a, f->made->n);    /* the replaced ones are dead now */
     for (size_t k = f->made->n; k > 0; k--)
         if (!is_gone(f, f->made->a[k - 1])) {
             t->hint = f->made->a[k - 1];

@@ -185,6 +185,18 @@ typedef struct dd_grid {
     uint32_t made_for;        /* t->nvert when it was made                */
 } dd_grid;
 
+/* The cells an edit makes (cells.c): noted where the edit commits them,
+ * published as the public list (dd_created_cells) when the outermost
+ * edit ends.                                                           */
+typedef struct dd_made {
+    dd_vec raw;               /* noted in this edit: repeats, dead ones too */
+    int64_t *list;            /* the last edit's: live, each once        */
+    size_t n, cap;
+    int depth;                /* edits open (a set's rollback re-inserts) */
+    int all;                  /* this edit replaced every cell            */
+    int raw_lost, lost;       /* a note, the list, could not be kept      */
+} dd_made;
+
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
@@ -228,6 +240,8 @@ struct dd_tri {
                                      DD_STAR_MAXV^2 entries, made lazily  */
     struct dd_edge_slot *ehash;   /* edge -> facet, see glue_new_cells   */
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
+
+    dd_made made;             /* the cells the last edit made (cells.c)   */
 
     char err[256];
 #ifdef DD_TEST_BUILD
@@ -422,7 +436,7 @@ void dd_grid_note(dd_tri *t, uint32_t v);
 void dd_grid_free(dd_grid *g);
 /* A live cell near p to start a walk from: the cell of a vertex of p's
  * box or a box next to it, else t->hint, else the infinite cell.        */
-uint32_t dd_start_near(dd_tri *t, const double *p);
+uint32_t dd_start_near(const dd_tri *t, const double *p);
 /* The cells incident to vertex v, in out (reset first), O(star).        */
 dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
 /* A vertex nearest to p (exactly; any one of ties), by greedy descent
@@ -499,6 +513,37 @@ void dd_tri_destroy(dd_tri *t);
 /* Room for one more vertex id (t->nvid < cap_v) and input index (t->np <
  * cap_in), the arrays doubled if needed: DD_ERR_NOMEM if they cannot.  */
 dd_status dd_reserve_vertex(dd_tri *t);
+
+/* ---- cell handles (cells.c) -------------------------------------------- */
+
+/* An edit of t begins and ends (the public edits of src/ call them;
+ * nested pairs count as one, the outermost).  dd_edit_end(t, s) returns
+ * s and publishes the cells noted since dd_edit_begin, the live ones
+ * once each, as the list of dd_created_cells, unless the edit failed
+ * with nothing noted (then the list stays as it was).  O(cells noted). */
+void dd_edit_begin(dd_tri *t);
+dd_status dd_edit_end(dd_tri *t, dd_status s);
+/* Notes cells made by the edit under way (nothing outside an edit, as in
+ * the scratch triangulations).  Where the edit commits them: the star of
+ * an insertion, the fill a deletion sews in, the flips a move keeps.
+ * Never fails: a note that cannot be kept makes dd_created_cells say
+ * DD_ERR_NOMEM.  dd_note_all: the edit replaced every cell.            */
+void dd_note_made(dd_tri *t, const uint32_t *cells, size_t n);
+void dd_note_all(dd_tri *t);
+static inline void dd_note_cell(dd_tri *t, uint32_t c)
+{
+    if (t->made.depth) dd_note_made(t, &c, 1);
+}
+/* Publishes every live cell as made (dd_create).  DD_ERR_NOMEM.        */
+dd_status dd_publish_all_cells(dd_tri *t);
+void dd_made_free(dd_made *m);
+/* The exact visibility walk from live cell `start` to a cell whose
+ * closure holds p, or an infinite cell whose hull facet p sees (strictly
+ * beyond it); writes nothing to t (pr: the caller's predicate context,
+ * rng: the caller's dd_xorshift state, not 0).  DD_ERR_INTERNAL if it
+ * does not end (a broken mesh).                                       */
+dd_status dd_walk_const(const dd_tri *t, dd_pred *pr, uint64_t *rng, const double *p, uint32_t start,
+                        uint32_t *out);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
