@@ -56,7 +56,7 @@ size_t dd_memory_bytes(const dd_tri *t)
          + t->grid.cap * sizeof(uint32_t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0)
-         + t->made.raw.cap * sizeof(uint32_t) + t->made.cap * sizeof(int64_t);
+         + t->made.cap * sizeof(int64_t);
 }
 
 static void sort4(int32_t *a)

@@ -6,12 +6,14 @@
  * cells and makes others in their slots or in new ones; a live cell it
  * does not touch keeps its slot.  The edit notes the cells it makes where
  * it commits them (mesh.c's star of an insertion, delete.c's sewn fill,
- * flip.c's kept flips), into made.raw; the outermost dd_edit_end keeps
- * those still alive, each once (a mark of the current epoch), as the
- * public list.  A cell made and killed within one edit (by a later
- * deletion of a set, by the second half of a move) is dead by then, or
- * its slot was made again and noted again: so the list is exactly the
- * live cells whose slot the edit (re)filled.  Cost: O(1) a cell made.
+ * flip.c's kept flips), straight into the public list.  An edit of one
+ * step (an insertion, a deletion) notes each of its cells once, all
+ * alive at its end; an edit of several steps may note a cell that a
+ * later step kills (a set's next deletion, a move's second half) or
+ * whose slot it fills again, so the outermost dd_edit_end then keeps
+ * the live ones, each once (a mark of a fresh epoch).  So the list is
+ * exactly the live cells whose slot the edit (re)filled.  Cost: O(1) a
+ * cell made.
  *
  * The walk.  dd_walk_locate (mesh.c) keeps its statistics and its random
  * state in t; dd_walk_const takes them from the caller, so a read-only
@@ -26,28 +28,48 @@
 
 void dd_made_free(dd_made *m)
 {
-    dd_vec_free(&m->raw);
     free(m->list);
     memset(m, 0, sizeof *m);
 }
 
-void dd_edit_begin(dd_tri *t)
+/* Room for `more` entries past m->n, doubling; a list left far larger
+ * than needed (after dd_create, every cell) is cut down at an edit's
+ * first note.  DD_ERR_NOMEM.                                           */
+static dd_status list_room(dd_made *m, size_t more)
 {
-    if (t->made.depth++ > 0) return;
-    t->made.raw.n = 0;
-    t->made.all = t->made.raw_lost = 0;
+    if (m->n + more <= m->cap) return DD_OK;
+    size_t cap = m->cap ? 2 * m->cap : 64;
+    while (cap < m->n + more) cap *= 2;
+    int64_t *l = realloc(m->list, cap * sizeof *l);
+    if (!l) return DD_ERR_NOMEM;
+    m->list = l;
+    m->cap = cap;
+    return DD_OK;
 }
+
+#define LIST_KEEP 4096       /* entries kept across edits at least */
 
 void dd_note_made(dd_tri *t, const uint32_t *cells, size_t n)
 {
     dd_made *m = &t->made;
-    if (!m->depth || n == 0) return;
-    if (dd_vec_room(&m->raw, n) != DD_OK) {
-        m->raw_lost = 1;
+    if (!m->depth) return;
+    if (m->notes++ == 0) {                        /* the edit's first: a new list */
+        m->n = 0;
+        m->lost = 0;
+        if (m->cap > LIST_KEEP && m->cap > 8 * n) {
+            int64_t *l = realloc(m->list, LIST_KEEP * sizeof *l);
+            if (l) m->list = l, m->cap = LIST_KEEP;
+        }
+    }
+    if (m->lost) return;
+    if (list_room(m, n) != DD_OK) {
+        m->lost = 1;
+        m->n = 0;
         return;
     }
-    memcpy(m->raw.a + m->raw.n, cells, n * sizeof *cells);
-    m->raw.n += n;
+    int64_t *l = m->list + m->n;
+    for (size_t k = 0; k < n; k++) l[k] = cells[k];
+    m->n += n;
 }
 
 void dd_note_all(dd_tri *t)
@@ -55,66 +77,50 @@ void dd_note_all(dd_tri *t)
     if (t->made.depth) t->made.all = 1;
 }
 
-/* Room for n entries in the public list; a list far larger than needed
- * (after dd_create, every cell) is given back.                         */
-static dd_status list_room(dd_made *m, size_t n)
-{
-    size_t cap = n < 64 ? 64 : n;
-    if (m->cap >= cap && m->cap <= 4 * cap + 4096) return DD_OK;
-    int64_t *l = realloc(m->list, cap * sizeof *l);
-    if (!l) {
-        if (m->cap >= cap) return DD_OK;          /* shrinking only failed */
-        return DD_ERR_NOMEM;
-    }
-    m->list = l;
-    m->cap = cap;
-    return DD_OK;
-}
-
 dd_status dd_publish_all_cells(dd_tri *t)
 {
     dd_made *m = &t->made;
     m->n = 0;
     m->lost = 0;
-    if (list_room(m, t->nlive) != DD_OK) {
-        m->lost = 1;
-        return DD_ERR_NOMEM;
+    if (m->cap < t->nlive || m->cap > 2 * (size_t)t->nlive + LIST_KEEP) {
+        int64_t *l = realloc(m->list, ((size_t)t->nlive + 1) * sizeof *l);
+        if (!l) {
+            m->lost = 1;
+            return DD_ERR_NOMEM;
+        }
+        m->list = l;
+        m->cap = (size_t)t->nlive + 1;
     }
     for (uint32_t c = 0; c < t->ncell; c++)
         if (dd_tv(t, c)[0] != DD_DEAD) m->list[m->n++] = c;
     return DD_OK;
 }
 
-/* The live cells of made.raw, each once, as the public list. */
-static void publish_noted(dd_tri *t)
+/* Keeps the live cells of the list, each once (a mark of a fresh epoch). */
+static void filter_list(dd_tri *t)
 {
     dd_made *m = &t->made;
-    m->n = 0;
-    m->lost = 0;
-    if (m->raw_lost || list_room(m, m->raw.n) != DD_OK) {
-        m->lost = 1;
-        return;
-    }
     const dd_mark ep = dd_new_epoch(t, 1);
-    for (size_t k = 0; k < m->raw.n; k++) {
-        const uint32_t c = m->raw.a[k];
+    size_t k = 0;
+    for (size_t j = 0; j < m->n; j++) {
+        const uint32_t c = (uint32_t)m->list[j];
         if (c >= t->ncell || dd_tv(t, c)[0] == DD_DEAD || t->stamp[c] == ep) continue;
         t->stamp[c] = ep;
-        m->list[m->n++] = c;
+        m->list[k++] = c;
     }
+    m->n = k;
 }
 
-dd_status dd_edit_end(dd_tri *t, dd_status s)
+void dd_edit_settle(dd_tri *t, dd_status s)
 {
     dd_made *m = &t->made;
-    if (--m->depth > 0) return s;
-    if (s != DD_OK && m->raw.n == 0 && !m->all && !m->raw_lost) return s;   /* nothing changed */
     if (m->all) {
-        if (dd_publish_all_cells(t) != DD_OK) m->n = 0;
-    } else {
-        publish_noted(t);
+        (void)dd_publish_all_cells(t);
+    } else if (m->notes == 0) {
+        if (s == DD_OK) m->n = 0, m->lost = 0;     /* succeeded, made none */
+    } else if (!m->lost) {
+        filter_list(t);
     }
-    return s;
 }
 
 /* ---- the read-only walk --------------------------------------------------- */

@@ -185,16 +185,16 @@ typedef struct dd_grid {
     uint32_t made_for;        /* t->nvert when it was made                */
 } dd_grid;
 
-/* The cells an edit makes (cells.c): noted where the edit commits them,
- * published as the public list (dd_created_cells) when the outermost
- * edit ends.                                                           */
+/* The cells the last edit made (cells.c): noted where the edit commits
+ * them, straight into the public list of dd_created_cells; filtered when
+ * the outermost edit ends if more than one step noted some.            */
 typedef struct dd_made {
-    dd_vec raw;               /* noted in this edit: repeats, dead ones too */
-    int64_t *list;            /* the last edit's: live, each once        */
+    int64_t *list;            /* live cells, each once, once filtered    */
     size_t n, cap;
     int depth;                /* edits open (a set's rollback re-inserts) */
+    int notes;                /* dd_note_made calls in this edit          */
     int all;                  /* this edit replaced every cell            */
-    int raw_lost, lost;       /* a note, the list, could not be kept      */
+    int lost;                 /* a note could not be kept (no memory)     */
 } dd_made;
 
 struct dd_tri {
@@ -518,11 +518,21 @@ dd_status dd_reserve_vertex(dd_tri *t);
 
 /* An edit of t begins and ends (the public edits of src/ call them;
  * nested pairs count as one, the outermost).  dd_edit_end(t, s) returns
- * s and publishes the cells noted since dd_edit_begin, the live ones
- * once each, as the list of dd_created_cells, unless the edit failed
- * with nothing noted (then the list stays as it was).  O(cells noted). */
-void dd_edit_begin(dd_tri *t);
-dd_status dd_edit_end(dd_tri *t, dd_status s);
+ * s; when the outermost edit ends, dd_created_cells lists the live cells
+ * it noted, each once, or none if it succeeded without a note; an edit
+ * that failed with no note leaves the list as it was.  O(1), or
+ * O(cells noted) when several steps noted cells (a cell of one step may
+ * have died in a later one).                                          */
+static inline void dd_edit_begin(dd_tri *t)
+{
+    if (t->made.depth++ == 0) t->made.notes = t->made.all = 0;
+}
+void dd_edit_settle(dd_tri *t, dd_status s);
+static inline dd_status dd_edit_end(dd_tri *t, dd_status s)
+{
+    if (--t->made.depth == 0 && (t->made.notes != 1 || t->made.all)) dd_edit_settle(t, s);
+    return s;
+}
 /* Notes cells made by the edit under way (nothing outside an edit, as in
  * the scratch triangulations).  Where the edit commits them: the star of
  * an insertion, the fill a deletion sews in, the flips a move keeps.
