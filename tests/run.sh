@@ -31,12 +31,14 @@ for t in "$REL"/tests/test_*; do
 done
 run "release layers" sh scripts/layers.sh "$REL/obj"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
+run "release write" sh tests/test_write.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     run "asan $(basename "$t")" "$t" small
 done
 run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
+run "asan write" sh tests/test_write.sh "$ASAN/dtdel"
 run "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
 
 grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'
