@@ -10,7 +10,8 @@
 #                                  bench-table markers), from step 3's
 #                                  results/readme-table.md
 #   (2b. build/dtdel bench --reps 1 on uniform, sphere, bunny -> results/cold/)
-#   (2c. build/dtdel build-bench -> results/build.txt, seq-bench -> results/sequence.txt)
+#   (2c. build/dtdel build-bench -> results/build.txt, seq-bench -> results/sequence.txt,
+#        query-bench, edit-bench, refine-bench -> results/queries.txt, edits.txt, refine.txt)
 mode=${1:-full}
 scale=${2:-1}
 set -e
@@ -67,6 +68,13 @@ ne=100000 me=200000
 [ "$mode" = quick ] && ne=20000 me=40000
 build/dtdel edit-bench "$ne" --set "$me" >results/edits.txt || rc=$?
 cat results/edits.txt
+# refinement: the circumcentre of the largest cell inserted, again and
+# again, our queue fed by dd_created_cells, CGAL's by find_conflicts and
+# insert_in_hole; both must end in the same triangulation
+nr=100000 kr=100000
+[ "$mode" = quick ] && nr=20000 kr=20000
+build/dtdel refine-bench "$nr" --inserts "$kr" >results/refine.txt || rc=$?
+cat results/refine.txt
 csvs=$(ls results/*.csv)
 build/summarize results $csvs
 sh scripts/plots.sh results
