@@ -202,11 +202,13 @@ int dd_cell_alive(const dd_tri *t, dd_cell_id c);
  * alive.  O(1).                                                       */
 dd_status dd_cell(const dd_tri *t, dd_cell_id c, int32_t v[4], dd_cell_id nbr[4]);
 /* A cell whose closure holds p, found by an exact visibility walk from
- * cell `hint` (-1: the library's choice, as dd_locate's start); when p
- * is outside the convex hull, an infinite cell whose hull facet p sees
- * (p on its outer side).  The same answer class as dd_locate.  Cost:
- * the cells crossed from the hint to p, so a hint near p (a cell of the
- * last edit, a neighbour's cell) makes it a short walk.
+ * cell `hint`; when p is outside the convex hull, an infinite cell whose
+ * hull facet p sees (p on its outer side).  The same answer class as
+ * dd_locate.  Cost: the cells crossed from the hint to p, so a hint near
+ * p (a cell of the last edit, a neighbour's cell) makes it a short walk.
+ * hint -1: the library's choice, a cell of a vertex near p when the
+ * location grid exists (dd_locate, dd_insert make it), else the last
+ * edit's last cell.
  * DD_ERR_UNKNOWN_CELL if hint is neither -1 nor alive, DD_ERR_NAN /
  * DD_ERR_INFINITE for a bad p.  Writes nothing to t.                  */
 dd_status dd_locate_from(const dd_tri *t, const double p[3], dd_cell_id hint, dd_cell_id *cell);
