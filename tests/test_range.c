@@ -32,6 +32,7 @@
 #include <gmp.h>
 #include <math.h>
 #include "dtdel.h"
+#include "geom/pred.h"
 #include "cgal/cgal_query.h"
 #include "cgal/cgal_shim.h"
 #include "../datasets/datasets.h"
@@ -94,6 +95,89 @@ static int holds(dd_tri *t, const int32_t cell[4], const double *p)
         if (dd_cgal_orientation(q[0], q[1], q[2], q[3]) < 0) return 0;
     }
     return 1;
+}
+
+/* ---- the predicates at the ends of the range ----------------------------- */
+
+/* A double m * 2^e with a random 53-bit m, or 0 (one in eight). */
+static double coord_at(tl_rng *r, int e)
+{
+    if (tl_next(r) % 8 == 0) return 0.0;
+    double m = (double)(tl_next(r) >> 11) * 0x1p-53 + 0.5;
+    return ldexp(tl_next(r) & 1 ? -m : m, e);
+}
+
+typedef struct ptally { long tuples, bad; char first[200]; } ptally;
+
+static void pnote(ptally *t, int ours, int ref, const char *what, int e)
+{
+    t->tuples++;
+    if (ours != ref && t->bad++ == 0) snprintf(t->first, sizeof t->first, "%s (exponent %d): ours %d, exact %d", what, e, ours, ref);
+}
+
+/* Orientation, in-sphere (plain and perturbed), the infinite cell and
+ * compare_distance on five points against CGAL's predicates and exact
+ * rationals.                                                           */
+static void pred_tuple(dd_pred *pr, ptally *t, double q[5][3], int e)
+{
+    for (int i = 0; i < 5; i++)                   /* the perturbation wants five distinct points */
+        for (int j = 0; j < i; j++)
+            if (q[i][0] == q[j][0] && q[i][1] == q[j][1] && q[i][2] == q[j][2]) return;
+    int o = dd_orient3d(pr, q[0], q[1], q[2], q[3]);
+    pnote(t, o, dd_cgal_orientation(q[0], q[1], q[2], q[3]), "orientation", e);
+    pnote(t, dd_compare_distance(pr, q[4], q[0], q[1]), cmp_dist_exact(q[4], q[0], q[1]), "compare_distance", e);
+    if (o == 0) return;
+    if (o < 0) {
+        double x[3];
+        memcpy(x, q[0], sizeof x), memcpy(q[0], q[1], sizeof x), memcpy(q[1], x, sizeof x);
+    }
+    pnote(t, dd_insphere(pr, q[0], q[1], q[2], q[3], q[4]), dd_cgal_side_of_oriented_sphere(q[0], q[1], q[2], q[3], q[4], 0),
+          "insphere", e);
+    pnote(t, dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], q[4]),
+          dd_cgal_side_of_oriented_sphere(q[0], q[1], q[2], q[3], q[4], 1), "insphere perturbed", e);
+    const double *v[4] = {q[0], q[1], q[2], q[3]};
+    pnote(t, dd_inf_conflict(pr, v, 3, q[4]), dd_cgal_side_of_sphere_cell(q[0], q[1], q[2], q[3], 3, q[4], 1),
+          "infinite cell", e);
+}
+
+/* Tuples at every scale from 2^-1074 to 2^1020: each coordinate's exponent
+ * drawn within a window of w above the scale (w about the exact stages'
+ * ranges, 2 x 140 and 2 x 260, on either side, where rescaling stops and
+ * GMP takes over; and the whole range), and cospherical integer points
+ * times 2^e (exactly: their in-sphere determinants are 0).              */
+static void check_predicates(tl_state *st)
+{
+    dd_pred pr;
+    dd_pred_init(&pr);
+    tl_rng r = {4711};
+    static const int windows[] = {0, 52, 278, 282, 518, 522, 800, 2090};
+    const int rounds = small ? 3 : 12;
+    for (size_t wi = 0; wi < sizeof windows / sizeof *windows; wi++) {
+        ptally t = {0, 0, ""};
+        for (int e = -1074; e <= 1020; e += 7)
+            for (int it = 0; it < rounds; it++) {
+                double q[5][3];
+                const int w = windows[wi], lo = e - w / 2 < -1074 ? -1074 : e - w / 2, hi = lo + w > 1020 ? 1020 : lo + w;
+                for (int i = 0; i < 5; i++)
+                    for (int c = 0; c < 3; c++) q[i][c] = coord_at(&r, (int)tl_int(&r, lo, hi));
+                pred_tuple(&pr, &t, q, e);
+            }
+        char tn[64];
+        snprintf(tn, sizeof tn, "range/pred/window-2^%d", windows[wi]);
+        tl_check(st, t.bad == 0, tn, "%ld of %ld differ; first: %s", t.bad, t.tuples, t.first);
+    }
+    double sph[3 * 64];
+    const int ns = tl_sphere_points(50, sph, 64);
+    ptally t = {0, 0, ""};
+    for (int e = -1074; e <= 1016; e += 3)
+        for (int it = 0; it < rounds; it++) {
+            double q[5][3];
+            for (int i = 0; i < 5; i++)
+                for (int c = 0; c < 3; c++) q[i][c] = ldexp(sph[3 * tl_int(&r, 0, ns - 1) + c], e);
+            pred_tuple(&pr, &t, q, e);
+        }
+    tl_check(st, t.bad == 0, "range/pred/cosphere-times-2^e", "%ld of %ld differ; first: %s", t.bad, t.tuples, t.first);
+    dd_pred_clear(&pr);
 }
 
 /* ---- the sets ------------------------------------------------------------ */
@@ -542,6 +626,7 @@ int main(int argc, char **argv)
     tl_state st = {0, 0};
     small = argc > 1 && !strcmp(argv[1], "small");
     const uint32_t n = small ? 40 : 150;
+    check_predicates(&st);
     for (int k = 0; k < NUM_SETS; k++) {
         rset s = make_set(k, n);
         check_set(&st, &s, k >= FIRST_ORDINARY);
