@@ -9,10 +9,14 @@
  *
  * A case is a dataset (every dd_gen name, real models included), a
  * transform of its coordinates and a mode:
- *  - transforms: none; times 1e16, 1e-16, 1e150, 1e-150 (not exact, but
- *    CGAL is given the same doubles); translated by about 10^9 times the
- *    set's extent (rounded to the coordinates' new ulp), far from the
- *    origin.
+ *  - transforms: none; times 1e16, 1e-16, 1e150, 1e-150, 1e300, 1e-300
+ *    (not exact, but CGAL is given the same doubles); times 2^-1050, into
+ *    the subnormals (rounded to multiples of 2^-1074: duplicates and
+ *    degeneracies); mixed magnitudes, every other point times 1e-300 and
+ *    the others times 1e300; centred and stretched to span nearly
+ *    [-DBL_MAX, DBL_MAX] (coordinate differences overflow); translated by
+ *    about 10^9 times the set's extent (rounded to the coordinates' new
+ *    ulp), far from the origin.
  *  - modes: "seq", deletions one after another from DT(S), with now and
  *    then a set (dd_delete_set); "down", small random subsets (5 to 40
  *    points) deleted in random order down to the last 4 points, refusals
@@ -44,6 +48,7 @@
 #include "datasets/datasets.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -65,8 +70,11 @@
 typedef enum { MODE_SEQ, MODE_DOWN, MODE_CHURN, NUM_MODES } soak_mode;
 static const char *const mode_names[NUM_MODES] = {"seq", "down", "churn"};
 
-typedef enum { TF_NONE, TF_E16, TF_EM16, TF_E150, TF_EM150, TF_FAR, NUM_TF } soak_tf;
-static const char *const tf_names[NUM_TF] = {"x1", "x1e16", "x1e-16", "x1e150", "x1e-150", "far"};
+typedef enum {
+    TF_NONE, TF_E16, TF_EM16, TF_E150, TF_EM150, TF_FAR, TF_E300, TF_EM300, TF_SUB, TF_MIXED, TF_SPAN, NUM_TF
+} soak_tf;
+static const char *const tf_names[NUM_TF] = {"x1",     "x1e16",     "x1e-16", "x1e150", "x1e-150", "far",
+                                             "x1e300", "x1e-300", "x2^-1050", "mixed", "span"};
 
 /* Largest set a case takes from a dataset: moment and helix have high
  * degrees (CGAL's remove() costs d^2 there), so their sets stay small.  */
@@ -253,6 +261,20 @@ static void transform(soak_tf tf, double *xyz, uint32_t n)
     case TF_EM16: f = 1e-16; break;
     case TF_E150: f = 1e150; break;
     case TF_EM150: f = 1e-150; break;
+    case TF_E300: f = 1e300; break;
+    case TF_EM300: f = 1e-300; break;
+    case TF_SUB: f = 0x1p-1050; break;
+    case TF_MIXED:
+        for (size_t i = 0; i < 3 * (size_t)n; i++) xyz[i] *= i / 3 % 2 ? 1e300 : 1e-300;
+        return;
+    case TF_SPAN: {                                 /* the box's centre to 0, its half-width to 0.9 DBL_MAX */
+        double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, e = 0;
+        for (size_t i = 0; i < 3 * (size_t)n; i++) lo[i % 3] = fmin(lo[i % 3], xyz[i]), hi[i % 3] = fmax(hi[i % 3], xyz[i]);
+        for (int c = 0; c < 3; c++) e = fmax(e, 0.5 * (hi[c] - lo[c]));
+        for (size_t i = 0; i < 3 * (size_t)n && e > 0; i++)
+            xyz[i] = (xyz[i] - 0.5 * (lo[i % 3] + hi[i % 3])) / e * (0.9 * DBL_MAX);
+        return;
+    }
     case TF_FAR: {
         double e = 0;
         for (size_t i = 0; i < 3 * (size_t)n; i++) e = fmax(e, fabs(xyz[i]));
@@ -595,7 +617,10 @@ static void move_target(rng *r, const pair *p, uint32_t v, double h, const doubl
     const uint32_t coin = below(r, 100);
     const double *x = p->xyz + 3 * (size_t)v;
     if (coin < 70) {
-        for (int c = 0; c < 3; c++) q[c] = x[c] + h * ((double)below(r, 2001) / 1000.0 - 1.0);
+        for (int c = 0; c < 3; c++) {
+            q[c] = x[c] + h * ((double)below(r, 2001) / 1000.0 - 1.0);
+            if (!isfinite(q[c])) q[c] = x[c];          /* a step past DBL_MAX */
+        }
     } else if (coin < 85 && nspare > 0) {
         memcpy(q, spare + 3 * (size_t)below(r, nspare), 3 * sizeof *q);
     } else if (coin < 95) {
@@ -615,8 +640,8 @@ static double mean_spacing(const double *xyz, uint32_t n)
             lo[c] = fmin(lo[c], xyz[3 * (size_t)i + c]);
             hi[c] = fmax(hi[c], xyz[3 * (size_t)i + c]);
         }
-    for (int c = 0; c < 3; c++) e = fmax(e, hi[c] - lo[c]);
-    return 0.5 * e / cbrt(n > 0 ? n : 1);
+    for (int c = 0; c < 3; c++) e = fmax(e, 0.5 * hi[c] - 0.5 * lo[c]);   /* halves: no overflow */
+    return e / cbrt(n > 0 ? n : 1);
 }
 
 /* ---- the modes ---------------------------------------------------------------- */

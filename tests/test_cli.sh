@@ -212,6 +212,40 @@ if "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 2.5,2,1 >"$tmp/mv.txt" && "$DTDEL
    cmp -s "$tmp/mv.txt" "$tmp/mvc.txt"; then echo "ok cli/move-equals-cgal"; else echo "FAIL cli/move-equals-cgal"; fi
 expect move-onto-vertex 1 "another vertex" "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 0,0,0
 expect move-usage 2 "X,Y,Z" "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 1,2
+# the whole double range (DESIGN 13): sets at 1e300, subnormal and
+# spanning [-DBL_MAX, DBL_MAX] triangulate as CGAL does; location and
+# moves at extreme points answer (exit 0) or refuse (exit 1), never die
+printf '0 0 0\n1e300 0 0\n0 1e300 0\n0 0 1e300\n-1e300 -1e300 -1e300\n' >"$tmp/five.xyz"
+awk '{ printf "%de-324 %de-323 %de-322\n", $1 * 5, $2 * 5, $3 * 5 }' "$tmp/g5.xyz" >"$tmp/sub.xyz"
+"$DTDEL" gen uniform 300 | awk '{ printf "%.17g %.17g %.17g\n", (2 * $1 - 1) * 1.7e308, (2 * $2 - 1) * 1.7e308, (2 * $3 - 1) * 1.7e308 }' >"$tmp/span.xyz"
+"$DTDEL" gen uniform 300 | awk 'NR % 2 { f = 1e-300 } !(NR % 2) { f = 1e300 } { printf "%.17g %.17g %.17g\n", $1 * f, $2 * f, $3 * f }' >"$tmp/mixed.xyz"
+for f in five sub span mixed; do
+    "$DTDEL" tets "$tmp/$f.xyz" >"$tmp/a" 2>"$tmp/err"; rc=$?
+    "$DTDEL" cgal-tets "$tmp/$f.xyz" >"$tmp/b" 2>/dev/null
+    if [ $rc -eq 0 ] && [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then echo "ok cli/range-tets-$f"; else
+        echo "FAIL cli/range-tets-$f: exit $rc, differs from cgal-tets: $(head -c 200 "$tmp/err")"; fi
+done
+"$DTDEL" gen uniform 200 >"$tmp/u.xyz"
+expect range-locate-beyond-max 2 "not a number: '1e309'" "$DTDEL" locate "$tmp/u.xyz" 0 1e309 0
+for p in "1e300 0 0" "0 -1.7976931348623157e308 1.7976931348623157e308" "1e155 1e-300 4.9e-324" "-0 -0 -0"; do
+    for f in u five sub span; do
+        # shellcheck disable=SC2086
+        out=$("$DTDEL" locate "$tmp/$f.xyz" $p 2>&1); rc=$?
+        if [ $rc -eq 0 ] && echo "$out" | grep -q '^cell: ' && echo "$out" | grep -q '^nearest: [0-9]'; then
+            echo "ok cli/range-locate-$f-$(echo "$p" | tr ' ' '_')"; else
+            echo "FAIL cli/range-locate-$f-$(echo "$p" | tr ' ' '_'): exit $rc: $out"; fi
+    done
+done
+for to in 1e200,0,0 -1.7e308,1.7e308,0 4.9e-324,0,-0; do
+    for f in u five span; do
+        x=$(echo "$to" | tr ',' ' ')
+        awk -v x="$x" 'NR == 2 { $0 = x } { print }' "$tmp/$f.xyz" >"$tmp/moved.xyz"
+        "$DTDEL" move "$tmp/$f.xyz" --vertex 1 --to "$to" >"$tmp/a" 2>"$tmp/err"; rc=$?
+        "$DTDEL" cgal-tets "$tmp/moved.xyz" >"$tmp/b" 2>/dev/null
+        if { [ $rc -eq 0 ] && cmp -s "$tmp/a" "$tmp/b"; } || { [ $rc -eq 1 ] && [ -s "$tmp/err" ]; }; then
+            echo "ok cli/range-move-$f-$to"; else echo "FAIL cli/range-move-$f-$to: exit $rc: $(head -c 200 "$tmp/err")"; fi
+    done
+done
 # the benches beyond deletion: small runs, every answer as CGAL's
 out=$("$DTDEL" query-bench 3000 --inserts 500 --queries 500 --live 2000 --rounds 3 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ': yes$')" -eq 4 ] && ! echo "$out" | grep -q ': NO'; then

@@ -6,17 +6,21 @@
 #include "cli/cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* A coordinate: a whole argument read by strtod (NaN and inf included,
- * which dd_locate then refuses with its own message); 0 on success.      */
+ * which dd_locate then refuses with its own message); 0 on success.  A
+ * number beyond DBL_MAX is refused here; one below the normal range is
+ * its subnormal (or zero), as the point readers take it (strtod's ERANGE
+ * on underflow is no error: every finite double is valid input).        */
 static int parse_coord(const char *s, double *x)
 {
     char *end;
     errno = 0;
     *x = strtod(s, &end);
-    return end == s || *end != 0 || errno == ERANGE;
+    return end == s || *end != 0 || (errno == ERANGE && isinf(*x));
 }
 
 int cmd_locate(int argc, char **argv)

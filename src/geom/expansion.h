@@ -47,6 +47,10 @@
 
 #define DD_EXP_UNSAFE 2
 
+/* The safe ranges below as powers of two: 2^-LIM <= |x| <= 2^LIM. */
+#define DD_EXP_O3_LIM 260
+#define DD_EXP_INS_LIM 140
+
 /* Stage that decided, reported by the _staged variants (tests, counting). */
 enum {
     DD_EXP_STAGE_UNSAFE = 0,   /* out of the safe range                     */

@@ -9,7 +9,8 @@
  *     1.2466136531027298e-13 * maxx*maxy*maxz * max^2, max the largest of
  *     the three), with CGAL's underflow and overflow guards.
  *  2. An exact evaluation: adaptive floating-point expansions
- *     (expansion.c) when the coordinates are in their safe range, else GMP
+ *     (expansion.c) when the coordinates are in their safe range or can
+ *     be scaled into it exactly by a power of two (below), else GMP
  *     integers: every double is m * 2^e with an integer m of at most 53
  *     bits, so after shifting all coordinates of one call by the smallest
  *     exponent they are integers and every sum and product is exact.  GMP
@@ -225,6 +226,37 @@ static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
     return sign_det4(rows, &z[35]);
 }
 
+/* ---- exact rescaling ------------------------------------------------------
+ *
+ * orient3d and insphere are homogeneous in the points taken together (of
+ * degree 3 and 5, no translation involved): multiplying every coordinate
+ * of every point by one 2^k > 0 keeps their signs, and is exact while no
+ * nonzero coordinate leaves the normal doubles.  So points outside the
+ * expansions' safe range whose nonzero coordinates span no more than its
+ * width (sets near 1e300 or 1e-300, subnormal ones, any set scaled as a
+ * whole) are scaled into it and decided there; only mixed magnitudes go
+ * to GMP.  The computation is on the original doubles, scaled exactly.  */
+
+/* out = pts * 2^k with every nonzero |out| in [2^-lim, 2^lim]: 1, or 0
+ * when their exponents span more than that range.                        */
+static int rescale_into(const double *const *pts, int n, int lim, double out[][3])
+{
+    int emin = INT32_MAX, emax = INT32_MIN;
+    for (int i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++)
+            if (pts[i][c] != 0) {
+                const int e = ilogb(pts[i][c]);   /* |x| in [2^e, 2^(e+1)) */
+                emin = e < emin ? e : emin;
+                emax = e > emax ? e : emax;
+            }
+    if (emax == INT32_MIN) return 0;
+    const int k = -(emax + 1 + emin) / 2;
+    if (emin + k < -lim || emax + 1 + k > lim) return 0;
+    for (int i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) out[i][c] = ldexp(pts[i][c], k);
+    return 1;
+}
+
 /* ---- filtered predicates ------------------------------------------------- */
 
 int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
@@ -240,6 +272,10 @@ int dd_orient3d_unfiltered(dd_pred *ctx, const double *p, const double *q,
     ctx->orient_exact++;
     int e = dd_orient3d_exp(p, q, r, s);
     if (e != DD_EXP_UNSAFE) return e;
+    const double *pts[4] = {p, q, r, s};
+    double x[4][3];
+    if (rescale_into(pts, 4, DD_EXP_O3_LIM, x) && (e = dd_orient3d_exp(x[0], x[1], x[2], x[3])) != DD_EXP_UNSAFE)
+        return e;
     return orient3d_exact(ctx, p, q, r, s);
 }
 
@@ -256,6 +292,11 @@ int dd_insphere_unfiltered(dd_pred *ctx, const double *p, const double *q,
     ctx->insphere_exact++;
     int e = dd_insphere_exp(p, q, r, s, t);
     if (e != DD_EXP_UNSAFE) return e;
+    const double *pts[5] = {p, q, r, s, t};
+    double x[5][3];
+    if (rescale_into(pts, 5, DD_EXP_INS_LIM, x) &&
+        (e = dd_insphere_exp(x[0], x[1], x[2], x[3], x[4])) != DD_EXP_UNSAFE)
+        return e;
     return insphere_exact(ctx, p, q, r, s, t);
 }
 
@@ -446,7 +487,7 @@ int dd_inf_conflict(dd_pred *ctx, const double *const v[4], int k,
  * difference adds u |d|.  So |d - exact| <= 8u (A + B) with A, B the
  * computed sums, while A + B lies in [1e-290, 1e300]: no overflow, and
  * an underflowed term is far below the bound.                           */
-int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const double *b)
+static int distance_filter(const double *p, const double *a, const double *b)
 {
     double A = 0, B = 0;
     for (int c = 0; c < 3; c++) {
@@ -459,7 +500,19 @@ int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const do
         if (d > err) return 1;
         if (d < -err) return -1;
     }
+    return DD_FILTER_UNSURE;
+}
+
+/* The filter, then (the sign is homogeneous of degree 2 in the three
+ * points) the filter on the points scaled exactly into [2^-400, 2^400]
+ * when it failed for their magnitude, then GMP.                         */
+int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const double *b)
+{
+    int f = distance_filter(p, a, b);
+    if (f != DD_FILTER_UNSURE) return f;
     const double *pts[3] = {p, a, b};
+    double x[3][3];
+    if (rescale_into(pts, 3, 400, x) && (f = distance_filter(x[0], x[1], x[2])) != DD_FILTER_UNSURE) return f;
     load_points(ctx, pts, 3);
     mpz_ptr z[DD_PRED_SCRATCH];
     for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];

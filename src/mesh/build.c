@@ -21,6 +21,7 @@
  */
 #include "mesh/mesh.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -130,7 +131,18 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
     }
     double ext = 0;
     for (int c = 0; c < 3; c++) if (hi[c] - lo[c] > ext) ext = hi[c] - lo[c];
-    double scale = ext > 0 && isfinite(65535.0 / ext) ? 65535.0 / ext : 0.0;
+    /* The grid coordinates (x - lo) * scale in doubles, unless the extent
+     * overflows (coordinates of both signs beyond DBL_MAX / 2) or its
+     * reciprocal does (subnormal extents): then in halves and scaled by
+     * powers of two, which nothing can overflow.                        */
+    const int plain = ext > 0 && ext <= DBL_MAX && 65535.0 / ext <= DBL_MAX;
+    double scale = plain ? 65535.0 / ext : 0.0, half = 0;
+    int eh = 0;
+    if (!plain) {
+        for (int c = 0; c < 3; c++) half = fmax(half, 0.5 * hi[c] - 0.5 * lo[c]);
+        eh = half > 0 ? ilogb(half) : 0;
+        scale = half > 0 ? 65535.0 / ldexp(half, -eh) : 0.0;
+    }
     keyed *a = malloc(2 * (size_t)n * sizeof *a);
     uint32_t *count = calloc((size_t)NPASS * NDIGIT, sizeof *count);
     if (!a || !count) { free(a); free(count); return DD_ERR_NOMEM; }
@@ -140,8 +152,8 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         const double *p = pts + 3 * (size_t)ids[k];
         uint32_t x[3];
         for (int c = 0; c < 3; c++) {
-            double q = (p[c] - lo[c]) * scale;
-            x[c] = q <= 0 ? 0 : q >= 65535.0 ? 65535u : (uint32_t)q;
+            double q = plain ? (p[c] - lo[c]) * scale : ldexp(0.5 * p[c] - 0.5 * lo[c], -eh) * scale;
+            x[c] = !(q > 0) ? 0 : q >= 65535.0 ? 65535u : (uint32_t)q;
         }
         uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, 16);
         a[k].key = key;

@@ -39,12 +39,14 @@ void dd_grid_free(dd_grid *g)
 }
 
 /* The box of point p (clamped to the grid: points outside the box of the
- * vertices go to its border).                                           */
+ * vertices go to its border).  Any finite p: an overflow makes f
+ * infinite (the far border) or NaN (the near one), never an index out
+ * of the grid.                                                          */
 static uint32_t grid_box(const dd_grid *g, const double *p)
 {
     uint32_t ix[3];
     for (int c = 0; c < 3; c++) {
-        double f = (p[c] - g->lo[c]) * g->inv[c];
+        double f = (p[c] * g->pre[c] - g->lo[c]) * g->inv[c];
         ix[c] = !(f > 0) ? 0 : f >= (double)(g->dim[c] - 1) ? g->dim[c] - 1 : (uint32_t)f;
     }
     return (ix[2] * g->dim[1] + ix[1]) * g->dim[0] + ix[0];
@@ -64,22 +66,29 @@ static dd_status grid_make(dd_tri *t)
         }
     }
     /* Boxes of side h, about nvert / DD_GRID_LOAD of them; an extent of 0
-     * (all points in a plane) or out of range gets one box.              */
-    double ext[3], vol = 1;
+     * (all points in a plane) gets one box.  Any finite coordinates: each
+     * axis is first scaled by pre, a power of two (1/2, or 2^599 for
+     * extents below 2^-960), so that its extent neither overflows
+     * (coordinates of both signs near DBL_MAX) nor has a reciprocal that
+     * does (subnormal extents); h is found from logarithms, which cannot
+     * overflow or underflow as the product of the extents can.           */
+    double ext[3], lvol = 0;
     int used = 0;
     for (int c = 0; c < 3; c++) {
-        ext[c] = hi[c] - lo[c];
-        if (ext[c] > 0 && ext[c] < HUGE_VAL) vol *= ext[c], used++;
+        const double half = 0.5 * hi[c] - 0.5 * lo[c];   /* then |hi|, |lo| < 2^-906 */
+        g->pre[c] = half > 0 && half < 0x1p-960 ? 0x1p599 : 0.5;
+        ext[c] = hi[c] * g->pre[c] - lo[c] * g->pre[c];
+        if (ext[c] > 0) lvol += log2(ext[c]), used++;
     }
     const double boxes = (double)t->nvert / DD_GRID_LOAD + 1;
-    const double h = used ? pow(vol / boxes, 1.0 / used) : 1;
+    const double lh = used ? (lvol - log2(boxes)) / used : 0;      /* log2 h */
     size_t total = 1;
     for (int c = 0; c < 3; c++) {
-        double d = ext[c] > 0 && ext[c] < HUGE_VAL && h > 0 ? ceil(ext[c] / h) : 1;
-        d = d < 1 ? 1 : d > 1024 ? 1024 : d;
+        double d = ext[c] > 0 ? ceil(exp2(log2(ext[c]) - lh)) : 1;
+        d = !(d >= 1) ? 1 : d > 1024 ? 1024 : d;
         g->dim[c] = (uint32_t)d;
-        g->lo[c] = lo[c];
-        g->inv[c] = ext[c] > 0 && ext[c] < HUGE_VAL ? d / ext[c] : 0;
+        g->lo[c] = lo[c] * g->pre[c];
+        g->inv[c] = ext[c] > 0 ? d / ext[c] : 0;
         total *= g->dim[c];
     }
     if (total > g->cap) {

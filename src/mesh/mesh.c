@@ -397,7 +397,9 @@ static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
  * with p beyond one facet only, through that one.  s is made in the first
  * cell with p beyond two facets or more (mostly the start), next to its
  * vertex nearest p.  The walk stops in a cell with p beyond no facet,
- * before an outer cell, or after 2500 + cells/4 steps, in case rounding
+ * in one where an orientation overflows (coordinates beyond about 1e100:
+ * the exact walk takes over there), before an outer cell, or after
+ * 2500 + cells/4 steps, in case rounding
  * makes it cycle (CGAL's bound, 2500, grows with the cells here: on the
  * large helices more points need the longer walks).
  *
@@ -410,19 +412,21 @@ static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
  * (`build/dtdel build-bench 64000 --dataset helix`); on uniform points
  * it costs a few percent more than the visibility walk.                 */
 /* The segment's start s: in cell c, 1% of the way from its vertex
- * nearest p towards its centroid.                                       */
+ * nearest p towards its centroid.  Any finite coordinates: a distance
+ * that overflows (or is NaN) leaves the first vertex the nearest, and
+ * the centroid is summed in quarters, which cannot overflow.            */
 static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double s[3])
 {
     double d2min = HUGE_VAL;
-    const double *near = NULL;
+    const double *near = dd_pt(t, dd_tv(t, c)[0]);
     s[0] = s[1] = s[2] = 0;
     for (int k = 0; k < 4; k++) {
         const double *x = dd_pt(t, dd_tv(t, c)[(uint32_t)k]);
         double dx = x[0] - p[0], dy = x[1] - p[1], dz = x[2] - p[2], d2 = dx * dx + dy * dy + dz * dz;
         if (d2 < d2min) { d2min = d2; near = x; }
-        for (int j = 0; j < 3; j++) s[j] += x[j];
+        for (int j = 0; j < 3; j++) s[j] += 0.0025 * x[j];
     }
-    for (int j = 0; j < 3; j++) s[j] = 0.99 * near[j] + 0.0025 * s[j];
+    for (int j = 0; j < 3; j++) s[j] += 0.99 * near[j];
 }
 
 /* The walk above from cell c: the cell it stops in; *exit the facet of
@@ -439,7 +443,7 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
         const double *q[4] = {dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]), dd_pt(t, v[3])};
         uint32_t nb[4], nbeyond = 0;
         int beyond[4];
-        double op[4];
+        double op[4], sum = 0;
         for (int i = 0; i < 4; i++) {
             nb[i] = dd_tn(t, c)[(uint32_t)i] >> 2;
             if (nb[i] == prev) continue;
@@ -447,9 +451,12 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
             q[i] = p;
             op[i] = dd_orient3d_det(q[0], q[1], q[2], q[3]);
             q[i] = qi;
+            sum += op[i];
             if (op[i] < 0) beyond[nbeyond++] = i;
         }
-        if (nbeyond == 0) break;
+        /* an orientation overflowed (sum - sum is NaN): the values say
+         * nothing, the exact walk goes on from here                      */
+        if (nbeyond == 0 || sum - sum != 0) break;
         /* p beyond one facet only: the segment leaves through it */
         int out = beyond[0];
         if (nbeyond > 1) {

@@ -181,7 +181,8 @@ typedef struct dd_grid {
     uint32_t *box;
     size_t nbox, cap;
     uint32_t dim[3];
-    double lo[3], inv[3];     /* box of x: (x - lo) * inv, per axis       */
+    double pre[3], lo[3], inv[3]; /* box of x: (x * pre - lo) * inv, per
+                                 axis (pre a power of two, lo scaled by it) */
     uint32_t made_for;        /* t->nvert when it was made                */
 } dd_grid;
 

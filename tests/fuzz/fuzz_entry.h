@@ -10,9 +10,11 @@
  *     On success the points must be finite and *xyz not NULL; on failure
  *     *xyz NULL, no points, a known status and a message naming the input.
  *   dd_fuzz_ops(data, n): an interpreter of operations on points of the
- *     integer grid {0..4}^3, degenerate on purpose: create, delete,
- *     insert (reusing deleted indices), move, delete_set, reinsert, test
- *     controls.  After each operation
+ *     integer grid {0..4}^3, degenerate on purpose, of that grid scaled
+ *     to the ends of the double range, and of any finite doubles (whole
+ *     bit patterns; see fz_coord): create, delete, insert (reusing
+ *     deleted indices), move, delete_set, reinsert, test controls and
+ *     the grid's scale.  After each operation
  *     dd_check must pass and the canonical form must equal that of a
  *     dd_create from scratch of the vertices left (indices mapped back);
  *     a refused operation must leave the canonical form unchanged, and
@@ -97,15 +99,47 @@ typedef struct fz_in {
 static int fz_more(const fz_in *in) { return in->at < in->n; }
 static unsigned fz_byte(fz_in *in) { return in->at < in->n ? in->p[in->at++] : 0; }
 
-static void fz_point(fz_in *in, double q[3])
+/* The scales 2^e of the scaled grid (the controls op picks one): the
+ * ends of the range (2^1022: differences overflow; 2^-1074: subnormal),
+ * where squares or products of the filters overflow or underflow, and
+ * ordinary ones.                                                         */
+static const int fz_scales[16] = {0, 1022, -1074, 1000, -1000, 511, -537, 300, -300, 150, -150, 52, -52, 1021, -1060, 7};
+
+/* One coordinate.  A byte b < 224 is the grid coordinate b % 5; b < 240
+ * the grid coordinate b % 5 - 2 times 2^e (e the scale set last, 0 at
+ * first); b >= 240 takes the next 8 bytes as the bit pattern of a double
+ * (little-endian), made finite (an exponent of all ones becomes the
+ * largest finite one): any double, subnormals and magnitudes near
+ * DBL_MAX included, in one set with the grid's.                          */
+static double fz_coord(fz_in *in, int e)
 {
-    for (int k = 0; k < 3; k++) q[k] = (double)(fz_byte(in) % FZ_GRID);
+    unsigned b = fz_byte(in);
+    if (b < 224) return (double)(b % FZ_GRID);
+    if (b < 240) return ldexp((double)((int)(b % FZ_GRID) - 2), e);
+    uint64_t bits = 0;
+    for (int i = 0; i < 8; i++) bits |= (uint64_t)fz_byte(in) << (8 * i);
+    if ((bits >> 52 & 0x7ff) == 0x7ff) bits ^= (uint64_t)1 << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+static void fz_point(fz_in *in, int e, double q[3])
+{
+    for (int k = 0; k < 3; k++) q[k] = fz_coord(in, e);
+}
+
+/* The same point (-0.0 is 0.0, as for the engine). */
+static int fz_same(const double *a, const double *b)
+{
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
 typedef struct fz_state {
     dd_tri *t;
     double xyz[3 * FZ_MAX_POINTS];   /* the point of each input index */
     uint32_t np;                     /* input indices so far */
+    int scale;                       /* the scaled grid's exponent */
 } fz_state;
 
 static int fz_cmp4(const void *a, const void *b)
@@ -203,7 +237,7 @@ static int fz_unchanged(const fz_state *s, uint64_t before, const char *what, dd
 static int fz_is_vertex_point(const fz_state *s, const double q[3])
 {
     for (uint32_t i = 0; i < s->np; i++)
-        if (dd_is_vertex(s->t, i) && !memcmp(s->xyz + 3 * i, q, 3 * sizeof *q)) return 1;
+        if (dd_is_vertex(s->t, i) && fz_same(s->xyz + 3 * i, q)) return 1;
     return 0;
 }
 
@@ -241,7 +275,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         case 0: {                                           /* create */
             uint32_t m = 4 + fz_byte(&in) % 29;
             double pts[3 * 32];
-            for (uint32_t i = 0; i < m; i++) fz_point(&in, pts + 3 * i);
+            for (uint32_t i = 0; i < m; i++) fz_point(&in, s->scale, pts + 3 * i);
             dd_tri *t = NULL;
             char msg[256];
             st = dd_create(&t, pts, m, msg, sizeof msg);
@@ -253,7 +287,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
                 snprintf(what, sizeof what, "create of %u points", m);
                 bad = fz_verify(s, what);
             } else if (st != DD_ERR_TOO_FEW && st != DD_ERR_COLLINEAR && st != DD_ERR_COPLANAR) {
-                fprintf(stderr, "fuzz ops: create of %u grid points: %s: %s\n", m, dd_status_name(st), msg);
+                fprintf(stderr, "fuzz ops: create of %u points: %s: %s\n", m, dd_status_name(st), msg);
                 bad = 1;
             }
             break;
@@ -274,7 +308,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         case 3: {                                           /* insert */
             double q[3];
             uint32_t idx = UINT32_MAX;
-            fz_point(&in, q);
+            fz_point(&in, s->scale, q);
             if (s->np == FZ_MAX_POINTS) break;
             int dup = fz_is_vertex_point(s, q);
             snprintf(what, sizeof what, "insert of (%g, %g, %g)", q[0], q[1], q[2]);
@@ -297,9 +331,9 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         case 4: {                                           /* move a vertex */
             uint32_t v = fz_vertex(s, fz_byte(&in));
             double q[3];
-            fz_point(&in, q);
+            fz_point(&in, s->scale, q);
             if (v == UINT32_MAX) break;
-            int dup = fz_is_vertex_point(s, q) && memcmp(s->xyz + 3 * v, q, sizeof q);
+            int dup = fz_is_vertex_point(s, q) && !fz_same(s->xyz + 3 * v, q);
             snprintf(what, sizeof what, "move of %u to (%g, %g, %g)", v, q[0], q[1], q[2]);
             st = dd_move(s->t, v, q);
             if (st == DD_OK && !dup) {
@@ -351,8 +385,9 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             }
             break;
         }
-        default: {                                          /* test controls */
+        default: {                                          /* test controls, the grid's scale */
             unsigned b = fz_byte(&in);
+            s->scale = fz_scales[fz_byte(&in) % 16];
 #ifdef DD_TEST_BUILD
             dd_test_control(s->t, DD_TEST_SCALAR, b & 1);
             dd_test_control(s->t, DD_TEST_NO_SINGLE, b >> 1 & 1);

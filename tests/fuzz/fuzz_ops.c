@@ -1,8 +1,9 @@
 /*
  * fuzz_ops.c -- libFuzzer driver of the operation interpreter (`make
- * fuzz`): create / delete / insert / delete_set / reinsert on integer
- * grid points, each step validated and compared with a build from
- * scratch.  The entry point is in fuzz_entry.h, which test_fuzz_replay.c
+ * fuzz`): create / delete / insert / move / delete_set / reinsert on
+ * integer grid points, the grid scaled to the ends of the double range,
+ * and any finite doubles, each step validated and compared with a build
+ * from scratch.  The entry point is in fuzz_entry.h, which test_fuzz_replay.c
  * replays in `make test`.
  */
 #include "fuzz_entry.h"
