@@ -139,6 +139,8 @@ install: all
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
 	install -m 644 src/dtdel.h $(DESTDIR)$(PREFIX)/include/dtdel.h
+	install -d $(DESTDIR)$(PREFIX)/include/dtdel
+	install -m 644 src/dtdel/types.h $(DESTDIR)$(PREFIX)/include/dtdel/types.h
 
 clean:
 	rm -rf build

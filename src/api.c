@@ -6,6 +6,8 @@
  * deletion context.  Thin: each call checks its arguments and hands over
  * to the layers below (docs/architecture.md).
  */
+#include "dtdel.h"
+#include "dtdel_stats.h"
 #include "delete/delete.h"
 #include "geom/expansion.h"
 

@@ -30,6 +30,7 @@ for t in "$REL"/tests/test_*; do
     run "release $(basename "$t")" "$t"
 done
 run "release layers" sh scripts/layers.sh "$REL/obj"
+run "release layers-test" sh tests/test_layers.sh "$REL/obj"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 for t in "$ASAN"/tests/test_*; do

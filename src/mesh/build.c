@@ -250,12 +250,12 @@ dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t 
 
 static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
 {
-    if (msg && msglen) snprintf(msg, msglen, "%s", t->err[0] ? t->err : dd_status_name(s));
+    if (msg && msglen) snprintf(msg, msglen, "%s", t->err);
     dd_tri_destroy(t);
     return s;
 }
 
-dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
 {
     *out = NULL;
     if (msg && msglen) msg[0] = 0;

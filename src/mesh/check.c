@@ -28,7 +28,7 @@ static int same_facet(const dd_tri *t, uint32_t c, uint32_t i, uint32_t d, uint3
     return 1;
 }
 
-dd_status dd_check(dd_tri *t)
+dd_status dd_mesh_check(dd_tri *t)
 {
     size_t live = 0, finite = 0;
     for (uint32_t c = 0; c < t->ncell; c++) {

@@ -43,8 +43,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
-#include "dtdel.h"
-#include "dtdel_stats.h"
+#include "dtdel/types.h"          /* dd_status, dd_tri: not dtdel.h (below the API) */
+#include "dtdel/stats_types.h"    /* the test controls' names                */
 #include "geom/pred.h"
 
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
@@ -502,5 +502,12 @@ dd_status dd_reserve_vertex(dd_tri *t);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
+
+/* dd_create (dtdel.h), but on failure msg (if not NULL) holds t->err,
+ * which may be empty (out of memory): dd_create names the status then. */
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen);
+
+/* dd_check (dtdel.h): the validator, src/mesh/check.c. */
+dd_status dd_mesh_check(dd_tri *t);
 
 #endif
