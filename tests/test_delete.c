@@ -583,7 +583,7 @@ static dd_cgal *wrap_setup(tl_state *st, char *tn, size_t ntn, const char *kind,
  * their candidates came from.  want: bit 0, some short-list guess kept
  * at once; bit 1, some two-step guess kept after a refuted short one;
  * bit 2, some wide guess kept after two refuted narrow ones (the
- * sanitizer build's narrower lists, wrap/wrap.c).                            */
+ * narrower course's lists, wrap/wrap.c, in test builds).            */
 static void wrap_narrow_course(tl_state *st, const char *name, const double *pts, uint32_t n, const char *variant,
                                uint32_t lo, uint32_t hi, int want)
 {
