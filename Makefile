@@ -192,6 +192,8 @@ install: all
 	$(MAKE_PC) >$(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
 	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
 	install -m 644 src/dtdel.h src/dtdel_stats.h $(DESTDIR)$(PREFIX)/include/
+	install -d $(DESTDIR)$(PREFIX)/include/dtdel
+	install -m 644 src/dtdel/types.h src/dtdel/stats_types.h $(DESTDIR)$(PREFIX)/include/dtdel/
 
 clean:
 	rm -rf build

@@ -1,55 +1,141 @@
 #!/bin/sh
-# layers.sh -- checks that the engine's folders call only downwards.
+# layers.sh -- checks that the engine's folders use only downwards.
 #
 #   scripts/layers.sh OBJDIR
 #
-# OBJDIR is a build's object tree (build/obj).  Each object file belongs
-# to a layer, bottom up: src/geom, src/mesh, src/delete, src/wrap,
-# variants, src/*.c (the API), src/cli.  For every global symbol an object
-# uses (nm -u), the layer that defines it must be the object's own or one
-# below it.  Prints `ok layers` or `FAIL layers` with each upward edge
-# (caller object -> symbol, defined in layer), and exits non-zero on one.
+# OBJDIR is a release build's object tree (build/obj).  Each source file
+# belongs to a layer, bottom up (docs/architecture.md):
+#
+#   src/dtdel (the shared types), src/geom, src/mesh, src/delete, src/wrap,
+#   variants, src/*.c and src/*.h (the API), and, on top, the CLI's side:
+#   src/cli, datasets and src/cgal, which the library must not use at all.
+#
+# Two checks, each failing the run:
+#  - calls: for every global symbol an object uses (nm -u), the layer of
+#    the object defining it must be the user's own or one below it.  Every
+#    source file must have its object in OBJDIR, and nm must read each;
+#  - includes: every #include of every source file (any spacing after
+#    the #, "..." or <...>), resolved to the file it names as the compiler
+#    does (a "..." name in the including file's folder first, then in
+#    src and . (-Isrc -I.); a <...> name in src and .), must be of the
+#    including file's layer or one below.  A "..." name that resolves to
+#    no file is an error too; a <...> one is a system header.
+# Prints `ok layers`, or `FAIL layers` with each violation, and exits
+# non-zero on one.
 set -u
 obj=${1:-build/obj}
 [ -d "$obj" ] || { echo "FAIL layers: $obj is not a directory"; exit 1; }
+obj=$(cd "$obj" && pwd)
+top=$(cd "$(dirname "$0")/.." && pwd)
 
-rank() {   # rank of the layer of object path $1 (relative to $obj)
-    case "$1" in
-        src/geom/*) echo 0 ;; src/mesh/*) echo 1 ;; src/delete/*) echo 2 ;;
-        src/wrap/*) echo 3 ;; variants/*) echo 4 ;; src/cli/*) echo 6 ;;
-        src/cgal/*) echo 0 ;; src/*) echo 5 ;; *) echo -1 ;;
-    esac
+# The layers, as awk functions both passes share: rank(path) of a file
+# (relative to the top), bottom up; files of no layer (tests, scripts)
+# rank above all.  layer(rank) names one, for messages.
+LAYERS_AWK='
+function rank(p) {
+    if (p ~ /^src\/dtdel\//) return 0
+    if (p ~ /^src\/geom\//) return 1
+    if (p ~ /^src\/mesh\//) return 2
+    if (p ~ /^src\/delete\//) return 3
+    if (p ~ /^src\/wrap\//) return 4
+    if (p ~ /^variants\//) return 5
+    if (p ~ /^src\/[^\/]*$/) return 6
+    if (p ~ /^(src\/cli|src\/cgal|datasets)\//) return 7
+    return 9
 }
+function layer(r) {
+    return r == 0 ? "src/dtdel" : r == 1 ? "geom" : r == 2 ? "mesh" : r == 3 ? "delete" : r == 4 ? "wrap" : \
+           r == 5 ? "variants" : r == 6 ? "the API" : r == 7 ? "the CLI side" : "no layer"
+}'
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+: >"$tmp/up"
+
+# ---- calls ----------------------------------------------------------------
 # the objects of the sources there are now (a build dir may keep objects
-# of files since moved or removed)
-top=$(cd "$(dirname "$0")/.." && pwd)
-(cd "$top" && find src variants -name '*.c' | sed 's/\.c$/.o/' | sort) | while read -r o; do
-    [ -f "$obj/$o" ] && echo "$o"
-done >"$tmp/objs"
+# of files since moved or removed); each must be there
+(cd "$top" && find src variants datasets -name '*.c' -o -name '*.cpp' | sed 's/\.c\(pp\)\{0,1\}$/.o/' | sort) >"$tmp/objs"
+[ -s "$tmp/objs" ] || echo "  no source files under $top" >>"$tmp/up"
 while read -r o; do
-    r=$(rank "$o")
-    nm --defined-only -g "$obj/$o" | awk -v r="$r" -v o="$o" '$2 ~ /[TDBRC]/ { print $3, r, o }'
-done <"$tmp/objs" | sort >"$tmp/defs"
-while read -r o; do
-    r=$(rank "$o")
-    nm -u "$obj/$o" | awk -v r="$r" -v o="$o" '{ print $2, r, o }'
-done <"$tmp/objs" | sort >"$tmp/uses"
-join "$tmp/uses" "$tmp/defs" | awk '$2 < $4 && $3 != $5 { printf "  %s -> %s (defined in %s)\n", $3, $1, $5 }' >"$tmp/up"
-# and the headers: a file may include only headers of its layer or below
-(cd "$top" && grep -n '^#include "[a-z]*/' $(find src variants -name '*.[ch]' | sort)) | while IFS= read -r line; do
-    file=${line%%:*}
-    inc=$(echo "$line" | sed 's/.*#include "\([a-z]*\)\/.*/\1/')
-    from=$(rank "$file")
-    to=$(rank "src/$inc/x.o")
-    [ "$inc" = datasets ] && to=6
-    [ "$to" -gt "$from" ] && echo "  $file includes $inc/ (a layer above)"
-done >>"$tmp/up"
+    if [ -f "$obj/$o" ]; then echo "$o"; else echo "  $o: no object in $obj (build first)" >>"$tmp/up"; fi
+done <"$tmp/objs" >"$tmp/have"
+n=$(wc -l <"$tmp/have")
+[ "$n" -gt 0 ] || echo "  no object read in $obj" >>"$tmp/up"
+# one nm for all: "OBJ:ADDR TYPE SYMBOL" a definition, "OBJ: U SYMBOL" a
+# use.  nm failing, or listing nothing for an object, fails the check.
+: >"$tmp/nm"
+if [ "$n" -gt 0 ]; then
+    if ! (cd "$obj" && xargs nm -A -g <"$tmp/have") >"$tmp/nm" 2>"$tmp/nm.err"; then
+        echo "  nm cannot read every object: $(head -n 1 "$tmp/nm.err")" >>"$tmp/up"
+    fi
+    cut -d: -f1 "$tmp/nm" | sort -u >"$tmp/read"
+    sort "$tmp/have" | comm -23 - "$tmp/read" | sed 's/$/: nm cannot read it (no symbols listed)/; s/^/  /' >>"$tmp/up"
+fi
+awk -v defs="$tmp/defs.u" -v uses="$tmp/uses.u" "$LAYERS_AWK"'
+{
+    i = index($0, ":")
+    o = substr($0, 1, i - 1)
+    split(substr($0, i + 1), f, " ")
+    if (f[1] == "U") print f[2], rank(o), o > uses
+    else if (f[2] ~ /^[TDBRCVW]$/) print f[3], rank(o), o > defs
+}' "$tmp/nm"
+touch "$tmp/defs.u" "$tmp/uses.u"
+sort "$tmp/defs.u" >"$tmp/defs"
+sort "$tmp/uses.u" >"$tmp/uses"
+# a use defined in a layer above the user's (not by the user itself)
+join "$tmp/uses" "$tmp/defs" | awk "$LAYERS_AWK"'
+$2 < $4 && $3 != $5 { printf "  %s (%s) calls %s, defined in %s (%s)\n", $3, layer($2), $1, $5, layer($4) }' >>"$tmp/up"
+
+# ---- includes ---------------------------------------------------------------
+# One awk pass over every source file: each include line ("# include",
+# "#include", any blanks), its name resolved as the compiler does, the
+# layers compared.
+cd "$top" || exit 1
+find src variants datasets -name '*.[ch]' -o -name '*.cpp' | sort >"$tmp/files"
+xargs awk "$LAYERS_AWK"'
+function norm(p,    n, i, k, part, out) {   # a/./b/../c -> a/c
+    n = split(p, part, "/")
+    k = 0
+    for (i = 1; i <= n; i++) {
+        if (part[i] == "." || part[i] == "") continue
+        if (part[i] == ".." && k > 0 && out[k] != "..") { k--; continue }
+        out[++k] = part[i]
+    }
+    p = ""
+    for (i = 1; i <= k; i++) p = p (i > 1 ? "/" : "") out[i]
+    return p
+}
+function exists(p,    line, r) {
+    r = (getline line < p)
+    if (r >= 0) close(p)
+    return r >= 0
+}
+/^[ \t]*#[ \t]*include[ \t]*["<]/ {
+    inc = $0
+    sub(/^[ \t]*#[ \t]*include[ \t]*/, "", inc)
+    q = substr(inc, 1, 1) == "\""
+    name = substr(inc, 2)
+    sub(/[">].*$/, "", name)
+    shown = q ? "\"" name "\"" : "<" name ">"
+    dir = FILENAME
+    sub(/\/[^\/]*$/, "", dir)
+    to = ""
+    if (q && exists(norm(dir "/" name))) to = norm(dir "/" name)
+    else if (exists(norm("src/" name))) to = norm("src/" name)
+    else if (exists(norm(name))) to = norm(name)
+    if (to == "") {
+        if (q) printf "  %s includes %s, which names no file (from its folder, src or .)\n", FILENAME, shown
+        next
+    }
+    from = rank(FILENAME)
+    r = rank(to)
+    if (r > from) printf "  %s (%s) includes %s = %s (%s)\n", FILENAME, layer(from), shown, to, layer(r)
+}' <"$tmp/files" >>"$tmp/up"
+
 if [ -s "$tmp/up" ]; then
-    echo "FAIL layers: upward calls between src/ folders (docs/architecture.md)"
+    echo "FAIL layers: upward or unchecked uses between layers (docs/architecture.md)"
     cat "$tmp/up"
     exit 1
 fi
-echo "ok layers"
+echo "ok layers ($n objects)"

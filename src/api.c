@@ -6,6 +6,8 @@
  * deletion context.  Thin: each call checks its arguments and hands over
  * to the layers below (docs/architecture.md).
  */
+#include "dtdel.h"
+#include "dtdel_stats.h"
 #include "delete/delete.h"
 #include "geom/expansion.h"
 
@@ -141,7 +143,11 @@ void dd_reset_counters(dd_tri *t)
 #ifdef DD_TEST_BUILD
 long dd_test_control(dd_tri *t, dd_test_ctl ctl, long value)
 {
-    if (ctl == DD_TEST_EXP_PLAIN) return dd_exp_force_plain((int)value);
+    if (ctl == DD_TEST_EXP_PLAIN) {   /* process-wide: kept by geom */
+        long was = dd_exp_plain_forced();
+        dd_exp_force_plain((int)value);
+        return was;
+    }
     if (!t || ctl < 0 || ctl >= DD_TEST_NCTL) return 0;
     long was = t->testctl[ctl];
     t->testctl[ctl] = value;

@@ -6,6 +6,7 @@
  * triangulation (their scratch, the predicates' and the walk's random
  * state, is the call's own).
  */
+#include "dtdel.h"
 #include "mesh/mesh.h"
 
 #include <math.h>

@@ -8,14 +8,12 @@
 #define DTDEL_STATS_H
 
 #include "dtdel.h"
+#include "dtdel/stats_types.h"   /* installed beside dtdel.h too */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 DD_API_BEGIN
-
-#define DD_LINKDEG_BUCKETS 16
-#define DD_STRATEGY_STATS 16
 
 /* What the last dd_delete did.  Phase times only in counting builds
  * (-DDD_COUNTERS).                                                       */
@@ -58,31 +56,7 @@ typedef struct dd_counters {
 void dd_get_counters(const dd_tri *t, dd_counters *c);
 void dd_reset_counters(dd_tri *t);
 
-/* Test controls (as SQLite's sqlite3_test_control): switches that force
- * one of the engine's equivalent courses, so that tests reach each of
- * them on the same inputs.  Compiled into test builds (-DDD_TEST_BUILD)
- * only; every control starts at 0, the release behaviour.  Nothing in
- * the input selects a course.                                           */
-typedef enum dd_test_ctl {
-    DD_TEST_SCALAR,       /* 1: the gift wrap takes its plain C scans, not
-                             its AVX2 kernels                             */
-    DD_TEST_NO_SINGLE,    /* 1: the wrap makes no single-precision pass    */
-    DD_TEST_SPOIL_SINGLE, /* 1: the wrap's single-precision passes answer
-                             a wrong point now and then (one guess in 16,
-                             every hull step), so the checks that refute
-                             them run                                     */
-    DD_TEST_NARROWER,     /* 1: the wrap's narrow guesses take only the
-                             shortest lists, no second step, so they are
-                             refuted more often and the wide guess after
-                             them runs                                    */
-    DD_TEST_SET_FAIL_AT,  /* k + 1: dd_delete_set fails at its deletion
-                             number k as out of memory would (0: never)   */
-    DD_TEST_SET_COURSE,   /* dd_delete_set's course: 1 one at a time, 2 a
-                             rebuild of the points left (0: the cheaper) */
-    DD_TEST_EXP_PLAIN,    /* 1: the exact stages take their plain
-                             TWO-PRODUCT, not FMA (process-wide)          */
-    DD_TEST_NCTL
-} dd_test_ctl;
+/* dd_test_ctl, the test controls, is in dtdel/stats_types.h. */
 #ifdef DD_TEST_BUILD
 /* Sets control ctl of t to value (t may be NULL for process-wide
  * controls); returns the value it had.                                   */

@@ -13,6 +13,7 @@
  *     w, which restores the unique DT of the old set).
  * All or nothing: a failure leaves the triangulation as it was.
  */
+#include "dtdel.h"
 #include "delete/delete.h"
 
 #include <math.h>

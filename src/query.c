@@ -6,6 +6,7 @@
  * vertex; none changes the triangulation (the location grid apart, which
  * is scratch: mesh/locate.c).
  */
+#include "dtdel.h"
 #include "delete/delete.h"
 
 #include <math.h>

@@ -7,6 +7,7 @@
  * our positive orientation (CGAL's orientation sign, mesh.h): cells are
  * written in their own vertex order.  Read-only.
  */
+#include "dtdel.h"
 #include "mesh/mesh.h"
 
 #include <stdio.h>

@@ -237,12 +237,13 @@ static void check_sequence(tl_state *st, const char *ds, uint32_t n, uint32_t op
     uint64_t x = seed * 0x9E3779B97F4A7C15ull | 1;
     long bad = 0, inserted = 0, reused = 0, deleted = 0;
     uint32_t next = 0, hi = np;
+    tl_courses cs = tl_courses_all();   /* each deletion the next course */
     for (uint32_t k = 0; k < ops && !bad; k++) {
         x ^= x << 13, x ^= x >> 7, x ^= x << 17;
         if (x % 3 == 0 && dd_num_vertices(t) > 16) {   /* delete a random vertex */
             uint32_t v = (uint32_t)((x >> 8) % hi);
             if (!live[v]) continue;
-            tl_controls_for(t, v);
+            tl_course_next(&cs, t);
             bad += dd_delete(t, v) != DD_OK;
             live[v] = 0;
             deleted++;
@@ -266,9 +267,11 @@ static void check_sequence(tl_state *st, const char *ds, uint32_t n, uint32_t op
     size_t na = 0, nb = 0;
     int same = !bad && dd_canonical(t, &a, &na) == DD_OK && !cgal_of_live(pts, live, hi, &b, &nb) && na == nb &&
                !memcmp(a, b, 4 * na * sizeof *a);
-    tl_check(st, same && dd_check(t) == DD_OK && reused > 0, tn,
-             "%ld deletions, %ld insertions (%ld reused an index), %ld failed; equal to CGAL %d", deleted, inserted,
-             reused, bad, same);
+    char unrun[96] = "";
+    int covered = tl_courses_covered(&cs, unrun, sizeof unrun);
+    tl_check(st, same && covered && dd_check(t) == DD_OK && reused > 0, tn,
+             "%ld deletions, %ld insertions (%ld reused an index), %ld failed; equal to CGAL %d %s", deleted, inserted,
+             reused, bad, same, unrun);
     free(a), free(b), free(pts), free(live), free(p), free(fresh);
     dd_free(t);
 }

@@ -344,12 +344,13 @@ static void check_edits(tl_state *st, uint64_t seed)
         check_created(st, tn, t, &b, 1);
         drop(&b);
     }
+    tl_courses courses = tl_courses_all();
     for (size_t vi = 0; dd_variant_name(vi); vi++)
         for (int k = 0; k < 3; k++) {
             uint32_t v;
             do v = (uint32_t)tl_int(&r, 0, np - 1);
             while (!dd_is_vertex(t, v));
-            tl_controls_for(t, v);
+            tl_course_next(&courses, t);
             take(t, &b);
             fails += dd_delete_with(t, v, dd_variant_name(vi)) != DD_OK;
             deleted[nd++] = v;

@@ -213,8 +213,9 @@ static void unmake_cells(tl_state *st, uint32_t k)
         free(p);
         return;
     }
+    tl_courses cs = tl_courses_all();
     for (uint32_t v = 0; v < 40; v += 7) {            /* free cells, then none */
-        tl_controls_for(t, v);
+        tl_course_next(&cs, t);
         if (dd_delete(t, v) != DD_OK || dd_reinsert(t, v) != DD_OK) break;
     }
     uint32_t before[512], nb = 0, head = t->free_head, nfree = t->nfree, ncell = t->ncell, nlive = t->nlive;
@@ -237,8 +238,10 @@ static void unmake_cells(tl_state *st, uint32_t k)
     }
     /* k = 40 within the free list, k = 300 past it                      */
     int kind = k < 100 ? nfree >= k : nfree < k && nfree > 0;
-    tl_check(st, ok && again && kind, name, "free list or counts changed, or not the case meant (%u free cells, %u made): %s",
-             nfree, k, dd_errmsg(t));
+    char unrun[96] = "";
+    ok = ok && tl_courses_covered(&cs, unrun, sizeof unrun);
+    tl_check(st, ok && again && kind, name, "free list or counts changed, or not the case meant (%u free cells, %u made): %s %s",
+             nfree, k, dd_errmsg(t), unrun);
     dd_free(t);
     free(p);
 }

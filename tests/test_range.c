@@ -430,6 +430,7 @@ static void check_deletions(tl_state *st, const rset *s, dd_tri *t, dd_cgal *g)
     long bad = 0, done = 0;
     const uint32_t k = small ? 2 : 5;
     tl_rng r = {s->n * 7 + 1};
+    tl_courses courses = tl_courses_all();
     for (uint32_t j = 0; j < k && !bad; j++) {
         uint32_t v = (uint32_t)tl_int(&r, 0, s->n - 1);
         if (!dd_is_vertex(t, v)) continue;
@@ -441,7 +442,7 @@ static void check_deletions(tl_state *st, const rset *s, dd_tri *t, dd_cgal *g)
         for (size_t i = 0; dd_variant_name(i) && !bad; i++) {
             if (small && (i + j) % 3) continue;
             const char *var = dd_variant_name(i);
-            tl_controls_for(t, v + (uint32_t)i);
+            tl_course_next(&courses, t);
             dd_status ds = dd_delete_with(t, v, var);
             if (ds == DD_ERR_DIMENSION && s->n <= 5) continue;
             int same = ds == DD_OK && same_as(t, g);

@@ -19,23 +19,94 @@
 
 typedef struct tl_state { int passed, failed; } tl_state;
 
-/* The test controls (dtdel_stats.h) a test sets before deleting input
- * vertex v, so that over many deletions every course of the gift wrap is
- * taken: scalar scans for odd v, single-precision passes only for v of
- * 0 mod 4 and spoiled for 4 mod 8, narrower guesses for 3 mod 4.  The
- * test chooses; the engine reads nothing from the input.  Release builds
- * have no controls and take the default course.                         */
-static inline void tl_controls_for(dd_tri *t, uint32_t v)
+/* The courses of the gift wrap a test case runs (dtdel_stats.h, test
+ * controls).  Each is one equivalent way to the same result; a test case
+ * names the courses it runs and deletes under each in turn, so every
+ * course it names runs by construction, whatever the vertices.  The test
+ * chooses; the engine reads nothing from the input.  Release builds have
+ * no controls: every course is the default one there.                  */
+typedef enum tl_course {
+    TL_COURSE_DEFAULT,       /* the release course: AVX2 scans where the
+                                CPU has them, single-precision passes    */
+    TL_COURSE_SCALAR,        /* the plain C scans (DD_TEST_SCALAR)       */
+    TL_COURSE_NO_SINGLE,     /* no single-precision pass                 */
+    TL_COURSE_SPOIL_SINGLE,  /* spoiled single-precision passes, refuted */
+    TL_COURSE_NARROWER,      /* narrower guesses, refuted more often     */
+    TL_NCOURSES
+} tl_course;
+
+static const char *const tl_course_name[TL_NCOURSES] = {"default", "scalar", "no-single", "spoil-single",
+                                                        "narrower"};
+
+/* Every course, for the test cases that run them all. */
+static const tl_course tl_all_courses[TL_NCOURSES] = {TL_COURSE_DEFAULT, TL_COURSE_SCALAR, TL_COURSE_NO_SINGLE,
+                                                      TL_COURSE_SPOIL_SINGLE, TL_COURSE_NARROWER};
+
+/* Sets t's controls to course c (every other control of the wrap off). */
+static inline void tl_set_course(dd_tri *t, tl_course c)
 {
 #ifdef DD_TEST_BUILD
-    dd_test_control(t, DD_TEST_SCALAR, v % 2);
-    dd_test_control(t, DD_TEST_NO_SINGLE, v % 4 != 0);
-    dd_test_control(t, DD_TEST_SPOIL_SINGLE, v % 8 == 4);
-    dd_test_control(t, DD_TEST_NARROWER, v % 4 == 3);
+    dd_test_control(t, DD_TEST_SCALAR, c == TL_COURSE_SCALAR);
+    dd_test_control(t, DD_TEST_NO_SINGLE, c == TL_COURSE_NO_SINGLE);
+    dd_test_control(t, DD_TEST_SPOIL_SINGLE, c == TL_COURSE_SPOIL_SINGLE);
+    dd_test_control(t, DD_TEST_NARROWER, c == TL_COURSE_NARROWER);
 #else
     (void)t;
-    (void)v;
+    (void)c;
 #endif
+}
+
+/* A test case's courses: the list it names, taken in turn by
+ * tl_course_next, and how many deletions each course had.             */
+typedef struct tl_courses {
+    const tl_course *list;
+    unsigned n, next;
+    tl_course last;               /* the course of the last deletion     */
+    unsigned ran[TL_NCOURSES];
+} tl_courses;
+
+static inline tl_courses tl_courses_of(const tl_course *list, unsigned n)
+{
+    tl_courses cs;
+    memset(&cs, 0, sizeof cs);
+    cs.list = list;
+    cs.n = n;
+    return cs;
+}
+
+/* Every course, in turn. */
+static inline tl_courses tl_courses_all(void)
+{
+    return tl_courses_of(tl_all_courses, TL_NCOURSES);
+}
+
+/* The courses named, in turn: TL_COURSES(TL_COURSE_DEFAULT, ...).       */
+#define TL_COURSES(...)                                                                          \
+    tl_courses_of((const tl_course[]){__VA_ARGS__},                                              \
+                  (unsigned)(sizeof((const tl_course[]){__VA_ARGS__}) / sizeof(tl_course)))
+
+/* Sets t to the next course of cs (the first after the last, cyclically)
+ * before one deletion, and counts it; returns the course.              */
+static inline tl_course tl_course_next(tl_courses *cs, dd_tri *t)
+{
+    tl_course c = cs->list[cs->next];
+    cs->next = (cs->next + 1) % cs->n;
+    cs->ran[c]++;
+    cs->last = c;
+    tl_set_course(t, c);
+    return c;
+}
+
+/* 1 when every course cs names ran; else 0 and the first that did not
+ * in why.  (A case of at least cs->n deletions covers them all.)       */
+static inline int tl_courses_covered(const tl_courses *cs, char *why, size_t nwhy)
+{
+    for (unsigned i = 0; i < cs->n; i++)
+        if (!cs->ran[cs->list[i]]) {
+            snprintf(why, nwhy, "course %s never ran", tl_course_name[cs->list[i]]);
+            return 0;
+        }
+    return 1;
 }
 
 static void tl_check(tl_state *st, int ok, const char *name, const char *fmt, ...)
@@ -55,6 +126,15 @@ static void tl_check(tl_state *st, int ok, const char *name, const char *fmt, ..
         printf("\n");
     }
     fflush(stdout);
+}
+
+/* Checks NAME/courses: every course cs names ran.  For the test cases
+ * whose own check does not include tl_courses_covered.                 */
+static inline void tl_courses_check(tl_state *st, const tl_courses *cs, const char *name)
+{
+    char tn[160], why[96] = "";
+    snprintf(tn, sizeof tn, "%s/courses", name);
+    tl_check(st, tl_courses_covered(cs, why, sizeof why), tn, "%s", why);
 }
 
 static int tl_finish(const tl_state *st)

@@ -36,7 +36,7 @@
 #define DD_DELETE_H
 
 #include "mesh/mesh.h"
-#include "dtdel_stats.h"
+#include "dtdel/stats_types.h"   /* the statistics' table sizes */
 
 #ifdef DD_COUNTERS
 #include <time.h>

@@ -78,6 +78,8 @@ int dd_insphere_exp_staged(const double *p, const double *q, const double *r,
  * uses hardware FMA (always 1 in builds targeting FMA, where plain is
  * FMA too).  Both paths give the same results.                         */
 int dd_exp_force_plain(int on);
+/* The value last given to dd_exp_force_plain (0 at start).             */
+int dd_exp_plain_forced(void);
 #endif
 
 /* w = |x - q|^2 - 2 (x - q).c within 2u |w| (exact expansion, rounded);

@@ -262,27 +262,16 @@ dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t 
 
 static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
 {
-    if (msg && msglen) snprintf(msg, msglen, "%s", t->err[0] ? t->err : dd_status_name(s));
+    if (msg && msglen) snprintf(msg, msglen, "%s", t->err);
     dd_tri_destroy(t);
     return s;
 }
 
-/* The flags dd_create_ex knows. */
-#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES)
-
-dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
-                       char *msg, size_t msglen)
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned flags, char *msg,
+                          size_t msglen)
 {
     *out = NULL;
     if (msg && msglen) msg[0] = 0;
-    if (weights) {
-        if (msg && msglen) snprintf(msg, msglen, "weights are not supported yet: pass NULL");
-        return DD_ERR_UNSUPPORTED;
-    }
-    if (flags & ~KNOWN_FLAGS) {
-        if (msg && msglen) snprintf(msg, msglen, "unknown flag bits 0x%x", flags & ~KNOWN_FLAGS);
-        return DD_ERR_ARG;
-    }
     dd_tri *t;
     dd_status s = dd_tri_alloc(&t, n);
     if (s != DD_OK) {
@@ -328,11 +317,6 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
     if (dd_publish_all_cells(t) != DD_OK) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     *out = t;
     return DD_OK;
-}
-
-dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
-{
-    return dd_create_ex(out, xyz, NULL, n, 0, msg, msglen);
 }
 
 /* ---- rebuilding without a set of vertices ----------------------------- */

@@ -53,9 +53,20 @@ dd_status dd_fail(dd_tri *t, dd_status s, const char *fmt, ...)
     return s;
 }
 
+const char *dd_status_text(dd_status s)
+{
+    static const char *const names[DD_NUM_STATUS] = {
+        "ok", "out of memory", "i/o error", "parse error", "NaN coordinate",
+        "infinite coordinate", "too few points", "collinear points",
+        "coplanar points", "unknown vertex", "unknown variant",
+        "duplicate point", "dimension would drop", "internal error",
+        "bad argument", "unsupported", "unknown cell", "unknown file format"};
+    return (unsigned)s < DD_NUM_STATUS ? names[s] : "unknown status";
+}
+
 dd_status dd_end_call(dd_tri *t, dd_status s)
 {
-    if (s != DD_OK) snprintf(t->errmsg, sizeof t->errmsg, "%s", t->err[0] ? t->err : dd_status_name(s));
+    if (s != DD_OK) snprintf(t->errmsg, sizeof t->errmsg, "%s", t->err[0] ? t->err : dd_status_text(s));
     return s;
 }
 

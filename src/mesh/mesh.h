@@ -43,8 +43,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
-#include "dtdel.h"
-#include "dtdel_stats.h"
+#include "dtdel/types.h"          /* dd_status, dd_tri: not dtdel.h (below the API) */
+#include "dtdel/stats_types.h"    /* the test controls' names                */
 #include "geom/pred.h"
 
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
@@ -259,6 +259,8 @@ dd_status dd_fail(dd_tri *t, dd_status s, const char *fmt, ...)
  * success leaves dd_errmsg as it was.  Returns s.  Public calls clear
  * t->err when they start, so that a message is the call's own.          */
 dd_status dd_end_call(dd_tri *t, dd_status s);
+/* The short fixed name of a status: dd_status_name (dtdel.h). */
+const char *dd_status_text(dd_status s);
 
 static inline const double *dd_pt(const dd_tri *t, uint32_t v)
 {
@@ -569,5 +571,14 @@ dd_status dd_walk_const(const dd_tri *t, dd_pred *pr, uint64_t *rng, const doubl
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
+
+/* dd_create_ex (dtdel.h) with no weights and flags already checked (kept
+ * in t->flags), but on failure msg (if not NULL) holds t->err, which may
+ * be empty (out of memory): dd_create_ex names the status then.         */
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned flags, char *msg,
+                         size_t msglen);
+
+/* dd_check (dtdel.h): the validator, src/mesh/check.c. */
+dd_status dd_mesh_check(dd_tri *t);
 
 #endif
