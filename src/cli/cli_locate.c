@@ -10,7 +10,7 @@
 #include <string.h>
 
 /* A coordinate: a whole argument read by strtod (NaN and inf included,
- * which dd_locate then refuses with its own message); 0 on success.      */
+ * which dd_locate then refuses by its status); 0 on success.            */
 static int parse_coord(const char *s, double *x)
 {
     char *end;
@@ -32,7 +32,7 @@ int cmd_locate(int argc, char **argv)
     int32_t cell[4];
     dd_status s = dd_locate(t, p, cell);
     if (s != DD_OK) {
-        fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
+        fprintf(stderr, "dtdel locate: cannot locate the point: %s\n", dd_status_name(s));
         dd_free(t);
         return EXIT_INPUT;
     }

@@ -300,6 +300,7 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
     dd_shrink_cells(t);     /* the reserve above was a guess */
+    (void)dd_grid_ready(t); /* where queries start (locate.c); none: longer walks */
     *out = t;
     return DD_OK;
 }
