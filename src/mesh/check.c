@@ -52,12 +52,13 @@ static int cell_conflict(const dd_tri *t, dd_pred *pr, uint32_t c, const double 
 {
     const uint32_t *v = dd_tv(t, c);
     const double *q[4];
-    int k = -1;
+    int k = -1, kd = -1;
     for (int i = 0; i < 4; i++) {
-        q[i] = v[i] == DD_INF ? NULL : dd_pt(t, v[i]);
-        if (v[i] == DD_INF) k = i;
+        if (v[i] == DD_INF) { k = i; q[i] = NULL; }
+        else if (v[i] == DD_QD) { kd = i; q[i] = t->qd_point; }
+        else q[i] = dd_pt(t, v[i]);
     }
-    return dd_points_conflict(pr, q, k, -1, p);
+    return dd_points_conflict(pr, q, k, kd, p);
 }
 
 /* The checks on combinatorics, orientation and links (all but the

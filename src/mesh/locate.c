@@ -217,31 +217,44 @@ dd_status dd_reader_set_reset(dd_reader *r, size_t expect)
     return set_make(r, size);
 }
 
-int dd_reader_set_add(dd_reader *r, uint32_t x)
+static int set_add(dd_reader *r, uint32_t x);
+
+/* set_add's slow path: the set is half full, so it doubles first.       */
+static __attribute__((noinline)) int set_grow_add(dd_reader *r, uint32_t x)
 {
-    uint32_t i = set_slot(x, r->set_mask);
-    for (; r->set[i] != DD_NONE; i = (i + 1) & r->set_mask)
-        if (r->set[i] == x) return 0;
-    if (2 * (r->set_n + 1) > r->set_mask + 1) {     /* half full: double */
-        const uint32_t n = r->set_n, size = r->set_mask + 1;
-        if (size >= (1u << 31)) return -1;
-        uint32_t small[DD_READER_INLINE / 2];         /* the ids, while it grows */
-        uint32_t *keep = n <= DD_READER_INLINE / 2 ? small : malloc((size_t)n * sizeof *keep);
-        if (!keep) return -1;
-        uint32_t m = 0;
-        for (uint32_t k = 0; k < size; k++)
-            if (r->set[k] != DD_NONE) keep[m++] = r->set[k];
-        dd_status s = set_make(r, 2 * size);
-        if (s == DD_OK)
-            for (uint32_t k = 0; k < m; k++) (void)dd_reader_set_add(r, keep[k]);
-        if (keep != small) free(keep);
-        if (s != DD_OK) return -1;      /* the set is empty now: a failed call */
-        return dd_reader_set_add(r, x);
-    }
-    r->set[i] = x;
+    const uint32_t n = r->set_n, size = r->set_mask + 1;
+    if (size >= (1u << 31)) return -1;
+    uint32_t small[DD_READER_INLINE / 2];         /* the ids, while it grows */
+    uint32_t *keep = n <= DD_READER_INLINE / 2 ? small : malloc((size_t)n * sizeof *keep);
+    if (!keep) return -1;
+    uint32_t m = 0;
+    for (uint32_t k = 0; k < size; k++)
+        if (r->set[k] != DD_NONE) keep[m++] = r->set[k];
+    dd_status s = set_make(r, 2 * size);
+    if (s == DD_OK)
+        for (uint32_t k = 0; k < m; k++) (void)set_add(r, keep[k]);
+    if (keep != small) free(keep);
+    if (s != DD_OK) return -1;      /* the set is empty now: a failed call */
+    return set_add(r, x);
+}
+
+/* dd_reader_set_add, inlined into the star's search: its hot loop.  The
+ * table's pointer and mask are read once, as the stores into the table
+ * could otherwise alias them.                                          */
+static inline int set_add(dd_reader *r, uint32_t x)
+{
+    uint32_t *const set = r->set;
+    const uint32_t mask = r->set_mask;
+    uint32_t i = set_slot(x, mask);
+    for (uint32_t y; (y = set[i]) != DD_NONE; i = (i + 1) & mask)
+        if (y == x) return 0;
+    if (2 * (r->set_n + 1) > mask + 1) return set_grow_add(r, x);
+    set[i] = x;
     r->set_n++;
     return 1;
 }
+
+int dd_reader_set_add(dd_reader *r, uint32_t x) { return set_add(r, x); }
 
 /* As dd_star_cells, with the marks in r's set. */
 dd_status dd_star_read(const dd_tri *t, dd_reader *r, uint32_t v, dd_vec *out)
@@ -250,13 +263,13 @@ dd_status dd_star_read(const dd_tri *t, dd_reader *r, uint32_t v, dd_vec *out)
     const uint32_t c0 = t->vcell[v];
     dd_status s = dd_reader_set_reset(r, 64);
     if (s == DD_OK) s = dd_vec_push(out, c0);
-    if (s == DD_OK) (void)dd_reader_set_add(r, c0);
+    if (s == DD_OK) (void)set_add(r, c0);
     for (size_t k = 0; k < out->n && s == DD_OK; k++) {
         const uint32_t c = out->a[k];
         for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
             if (dd_tv(t, c)[j] == v) continue;     /* the facet opposite v */
             const uint32_t nb = dd_tn(t, c)[j] >> 2;
-            const int added = dd_reader_set_add(r, nb);
+            const int added = set_add(r, nb);
             if (added < 0) s = DD_ERR_NOMEM;
             else if (added) s = dd_vec_push(out, nb);
         }
