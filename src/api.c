@@ -310,9 +310,10 @@ uint32_t dd_degree(const dd_tri *t, uint32_t v)
     dd_vec nbr = {NULL, 0, 0};
     int hull = 0;
     dd_status s = read_star(t, &r, v, &nbr, &hull);
+    const uint32_t degree = s == DD_OK ? (uint32_t)nbr.n + (uint32_t)hull : 0;
     dd_reader_done(&r);
     dd_vec_free(&nbr);
-    return s == DD_OK ? (uint32_t)nbr.n + (uint32_t)hull : 0;
+    return degree;
 }
 
 int dd_on_hull(const dd_tri *t, uint32_t v)

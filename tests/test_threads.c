@@ -260,7 +260,21 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
              tn, "the reads changed the triangulation, its counters (walk steps %llu, then %llu) or its message",
              (unsigned long long)c0.walk_steps, (unsigned long long)c1.walk_steps);
 
-    /* the reads gave real answers: the NaN query refused, others located */
+    /* the reads gave real answers: the NaN query refused, others located,
+     * each vertex's degree its neighbours (and the infinite vertex on the
+     * hull), at least 4, its cells 2 deg - 4 (the link is a sphere)        */
+    long bad_star = 0;
+    for (uint32_t v = 0; v < dd_num_input(t); v++) {
+        if (!dd_is_vertex(t, v)) {
+            bad_star += dd_degree(t, v) != 0 || dd_incident_cells(t, v, NULL, 0) != 0;
+            continue;
+        }
+        const uint32_t deg = dd_degree(t, v), nn = dd_neighbors(t, v, NULL, 0);
+        const uint32_t nc = dd_incident_cells(t, v, NULL, 0);
+        bad_star += deg < 4 || deg != nn + (uint32_t)dd_on_hull(t, v) || nc != 2 * deg - 4;
+    }
+    snprintf(tn, sizeof tn, "threads/%s/stars", name);
+    tl_check(st, bad_star == 0, tn, "%ld vertices with a wrong degree, neighbour or cell count", bad_star);
     int32_t cell[4];
     snprintf(tn, sizeof tn, "threads/%s/statuses", name);
     tl_check(st, dd_locate(t, w.q, cell) == DD_ERR_NAN && dd_nearest_vertex(t, w.q) == UINT32_MAX &&
