@@ -39,11 +39,9 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     return dd_create_ex(out, xyz, NULL, n, 0, msg, msglen);
 }
 
-dd_status dd_check(dd_tri *t)
-{
-    t->err[0] = 0;
-    return dd_end_call(t, dd_mesh_check(t));
-}
+dd_status dd_check(const dd_tri *t) { return dd_mesh_check(t, NULL, 0); }
+
+dd_status dd_check_msg(const dd_tri *t, char *msg, size_t msglen) { return dd_mesh_check(t, msg, msglen); }
 
 const char *dd_status_name(dd_status s) { return dd_status_text(s); }
 

@@ -96,6 +96,7 @@ static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
     if (s == DD_OK) note_deleted(t, q);
+    if (s == DD_OK) (void)dd_grid_ready(t);     /* the queries' starts (locate.c) */
     return s;
 }
 
@@ -259,6 +260,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
         s = dd_rebuild_without(t, ids, n);
         if (s == DD_OK) dd_note_all(t);
         for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
+        if (s == DD_OK) (void)dd_grid_ready(t);
         free(ids);
         return s;
     }
@@ -284,6 +286,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
         memcpy(t->err, why, sizeof why);
     }
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
+    if (s == DD_OK) (void)dd_grid_ready(t);
     free(ids);
     return s;
 }
@@ -299,46 +302,92 @@ dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n)
     return dd_delete_set_with(t, vs, n, NULL);
 }
 
-/* Collects the star of input vertex v for the queries below. */
-uint32_t dd_degree(dd_tri *t, uint32_t v)
+/* The star queries below are read-only (dtdel.h, threads): the star of
+ * input vertex v in r->star and, when nbr is not NULL, v's finite
+ * neighbours in nbr (in the order the star's cells first meet them),
+ * marks in r's set; *on_hull whether an infinite cell is in the star.
+ * DD_ERR_UNKNOWN_VERTEX when v is not a vertex.                         */
+static dd_status read_star(const dd_tri *t, dd_reader *r, uint32_t v, dd_vec *nbr, int *on_hull)
 {
-    dd_del *d;
-    return dd_del_star_of(t, v, &d) == DD_OK ? d->degree : 0;
+    const uint32_t q = dd_vertex_of(t, v);
+    if (q == DD_NONE) return DD_ERR_UNKNOWN_VERTEX;
+    dd_status s = dd_star_read(t, r, q, &r->star);
+    *on_hull = 0;
+    if (s == DD_OK && nbr) s = dd_reader_set_reset(r, r->star.n);
+    for (size_t k = 0; k < r->star.n && s == DD_OK; k++) {
+        const uint32_t *w = dd_tv(t, r->star.a[k]);
+        for (int i = 0; i < 4 && s == DD_OK; i++) {
+            if (w[i] == q) continue;
+            if (w[i] == DD_INF) { *on_hull = 1; continue; }
+            if (!nbr) continue;
+            const int added = dd_reader_set_add(r, w[i]);
+            if (added < 0) s = DD_ERR_NOMEM;
+            else if (added) s = dd_vec_push(nbr, w[i]);
+        }
+    }
+    return s;
 }
 
-int dd_on_hull(dd_tri *t, uint32_t v)
+uint32_t dd_degree(const dd_tri *t, uint32_t v)
 {
-    dd_del *d;
-    return dd_del_star_of(t, v, &d) == DD_OK ? d->on_hull : 0;
+    dd_reader r;
+    dd_reader_init(&r);
+    dd_vec nbr = {NULL, 0, 0};
+    int hull = 0;
+    dd_status s = read_star(t, &r, v, &nbr, &hull);
+    const uint32_t degree = s == DD_OK ? (uint32_t)nbr.n + (uint32_t)hull : 0;
+    dd_reader_done(&r);
+    dd_vec_free(&nbr);
+    return degree;
 }
 
-uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max)
+int dd_on_hull(const dd_tri *t, uint32_t v)
 {
-    dd_del *d;
-    if (dd_del_star_of(t, v, &d) != DD_OK) return 0;
-    for (size_t k = 0; k < d->nbr.n && k < max; k++) out[k] = t->v2in[d->nbr.a[k]];
-    return (uint32_t)d->nbr.n;
+    dd_reader r;
+    dd_reader_init(&r);
+    int hull = 0;
+    dd_status s = read_star(t, &r, v, NULL, &hull);
+    dd_reader_done(&r);
+    return s == DD_OK && hull;
+}
+
+uint32_t dd_neighbors(const dd_tri *t, uint32_t v, uint32_t *out, uint32_t max)
+{
+    dd_reader r;
+    dd_reader_init(&r);
+    dd_vec nbr = {NULL, 0, 0};
+    int hull = 0;
+    uint32_t n = 0;
+    if (read_star(t, &r, v, &nbr, &hull) == DD_OK) {
+        n = (uint32_t)nbr.n;
+        for (size_t k = 0; k < nbr.n && k < max; k++) out[k] = t->v2in[nbr.a[k]];
+    }
+    dd_reader_done(&r);
+    dd_vec_free(&nbr);
+    return n;
 }
 
 /* The cells of the stars of vs[0..n), listed (a cell in two stars
  * twice), then their canonical form.                                    */
-dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets)
+dd_status dd_local_canonical(const dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets)
 {
     dd_vec cells = {NULL, 0, 0};
+    dd_reader r;
+    dd_reader_init(&r);
     dd_status s = DD_OK;
-    t->err[0] = 0;
+    int hull;
     for (size_t i = 0; i < n && s == DD_OK; i++) {
-        dd_del *d;
-        s = dd_del_star_of(t, vs[i], &d);
-        if (s == DD_OK) s = dd_vec_room(&cells, d->star.n);
+        s = read_star(t, &r, vs[i], NULL, &hull);
+        if (s == DD_OK) s = dd_vec_room(&cells, r.star.n);
         if (s == DD_OK) {
-            memcpy(cells.a + cells.n, d->star.a, d->star.n * sizeof *cells.a);
-            cells.n += d->star.n;
+            memcpy(cells.a + cells.n, r.star.a, r.star.n * sizeof *cells.a);
+            cells.n += r.star.n;
         }
     }
+    dd_reader_done(&r);
     if (s == DD_OK) s = dd_canonical_of_cells(t, cells.a, cells.n, tets, ntets);
     dd_vec_free(&cells);
-    return dd_end_call(t, s);
+    return s;
 }
 
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
@@ -375,7 +424,9 @@ static dd_status reinsert(dd_tri *t, uint32_t input)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is a duplicate of point %u", input, t->v2in[v]);
     if (t->vcell[v] != DD_NONE)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
-    return dd_insert_vertex(t, v);
+    dd_status s = dd_insert_vertex(t, v);
+    if (s == DD_OK) (void)dd_grid_ready(t);     /* the queries' starts (locate.c) */
+    return s;
 }
 
 dd_status dd_reinsert(dd_tri *t, uint32_t v)

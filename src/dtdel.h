@@ -9,6 +9,28 @@
  * unique for every point set that is not all coplanar and equals CGAL's
  * simplex for simplex.
  *
+ * Threads.  The calls that take a `const dd_tri *` only read it: dd_point,
+ * dd_cells, dd_incident_cells, dd_neighbors, dd_degree, dd_on_hull,
+ * dd_locate, dd_nearest_vertex, dd_canonical, dd_local_canonical,
+ * dd_check, dd_check_msg, the cell handles' calls (dd_cell_end,
+ * dd_cell_alive, dd_cell, dd_locate_from, dd_created_cells), dd_write,
+ * dd_version and every counter or getter (dd_num_*, dd_alias,
+ * dd_is_vertex, dd_memory_bytes, dd_errmsg, and dtdel_stats.h's
+ * dd_last_delete_stats and dd_get_counters).  Their scratch belongs to the
+ * call, not to the triangulation, so any number of threads may call them
+ * at once on one triangulation while none edits it.  The edits, the calls
+ * that take a `dd_tri *` (dd_free, dd_delete, dd_delete_with,
+ * dd_delete_set, dd_delete_set_with, dd_insert, dd_reinsert, dd_move, and
+ * dtdel_stats.h's dd_reset_counters and dd_test_control), need exclusive
+ * access: no other call on the same triangulation while one runs (a
+ * reader-writer lock of the caller's: reads shared, edits exclusive).
+ * Distinct triangulations share nothing, and the calls on no
+ * triangulation (dd_create, dd_create_ex, dd_status_name, dd_variant_*,
+ * dd_canonical_hash) are safe in any thread.  A read-only call that fails
+ * says so by its status alone and leaves dd_errmsg as it was;
+ * dd_check_msg writes the validator's message to a buffer of the
+ * caller's.
+ *
  * Conventions:
  *  - Vertices are named by their input index: the 0-based position of the
  *    point in the array given to dd_create (or the index returned by
@@ -112,8 +134,9 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
 
 void dd_free(dd_tri *t);
 
-/* The message of the last failed call on t: "" if none has failed; a
- * later success does not clear it (see Conventions above).               */
+/* The message of the last failed edit on t: "" if none has failed; a
+ * later success does not clear it; read-only calls write none (see
+ * Conventions and Threads above).                                        */
 const char *dd_errmsg(const dd_tri *t);
 
 /* The end of the index range: every input index lies in [0, dd_num_input),
@@ -130,8 +153,8 @@ uint32_t dd_alias(const dd_tri *t, uint32_t i);
 /* 1 if input index i is a vertex of the triangulation now.               */
 int dd_is_vertex(const dd_tri *t, uint32_t i);
 /* Number of vertices adjacent to v (the infinite vertex counts as one).  */
-uint32_t dd_degree(dd_tri *t, uint32_t v);
-int dd_on_hull(dd_tri *t, uint32_t v);
+uint32_t dd_degree(const dd_tri *t, uint32_t v);
+int dd_on_hull(const dd_tri *t, uint32_t v);
 
 /* Canonical form: each cell as its four vertex indices sorted ascending,
  * -1 for the infinite vertex; the cells sorted lexicographically.  *tets
@@ -140,17 +163,21 @@ dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets);
 /* The input indices of v's finite neighbours: at most max written to
  * out; returns their full number (more than max: out was too short), 0
  * if v is not a vertex.                                                  */
-uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max);
+uint32_t dd_neighbors(const dd_tri *t, uint32_t v, uint32_t *out, uint32_t max);
 /* Canonical form (as dd_canonical) of the cells incident to any of the
  * input vertices vs[0..n): what deleting their common neighbour changes. */
-dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets);
+dd_status dd_local_canonical(const dd_tri *t, const uint32_t *vs, size_t n, int32_t **tets, size_t *ntets);
 
 /* 64-bit hash of a canonical list (FNV-1a over the ints). */
 uint64_t dd_canonical_hash(const int32_t *tets, size_t ntets);
 
 /* Full self-check: neighbour symmetry, shared facets, positive orientation
- * of finite cells, and the perturbed empty-sphere test on every facet.   */
-dd_status dd_check(dd_tri *t);
+ * of finite cells, and the perturbed empty-sphere test on every facet:
+ * DD_OK, or DD_ERR_INTERNAL for a broken triangulation.  dd_check_msg
+ * also writes what is broken to msg (msglen bytes; "" when valid; msg
+ * may be NULL).                                                        */
+dd_status dd_check(const dd_tri *t);
+dd_status dd_check_msg(const dd_tri *t, char *msg, size_t msglen);
 
 /* ---- reading the mesh and locating points ------------------------------ */
 
@@ -169,21 +196,21 @@ dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *nce
  * indices, -1 = infinite): at most max written to out; returns their full
  * number (more than max: out was too short), 0 if v is not a vertex.
  * O(number of cells).                                                    */
-uint32_t dd_incident_cells(dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max);
+uint32_t dd_incident_cells(const dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max);
 /* The four vertices (input indices, -1 = infinite) of a cell whose
  * closure holds p, or, when p is outside the convex hull, of an infinite
  * cell whose hull facet p sees (p on its outer side or in its plane).
- * Exact, degenerate positions included.  DD_ERR_NAN / DD_ERR_INFINITE
- * for a bad p.  Expected O(1) cells walked on evenly spread points: the
- * walk starts at a vertex near p (a grid over the vertices, made at the
- * first query or insertion in O(n), remade as the size doubles or
- * halves).                                                               */
-dd_status dd_locate(dd_tri *t, const double p[3], int32_t cell[4]);
+ * Exact, degenerate positions included; the same p gets the same cell
+ * until the next edit.  DD_ERR_NAN / DD_ERR_INFINITE for a bad p.
+ * Expected O(1) cells walked on evenly spread points: the walk starts at
+ * a vertex near p (a grid over the vertices, made by dd_create in O(n)
+ * and remade by the edits as the size doubles or halves).               */
+dd_status dd_locate(const dd_tri *t, const double p[3], int32_t cell[4]);
 /* In *v, the input index of a vertex nearest to p in Euclidean distance
- * (any one of ties), exact.  DD_ERR_NAN / DD_ERR_INFINITE for a bad p.
- * dd_locate's cost, then a greedy descent over Delaunay edges: O(degree)
- * a step, a few steps.                                                   */
-dd_status dd_nearest_vertex(dd_tri *t, const double p[3], uint32_t *v);
+ * (any one of ties), exact.  DD_ERR_NAN / DD_ERR_INFINITE for a bad p,
+ * DD_ERR_NOMEM.  dd_locate's cost, then a greedy descent over Delaunay
+ * edges: O(degree) a step, a few steps.                                  */
+dd_status dd_nearest_vertex(const dd_tri *t, const double p[3], uint32_t *v);
 /* 1 if the vertex index v is the infinite vertex (-1 in the arrays). */
 static inline int dd_is_infinite(int32_t v) { return v < 0; }
 

@@ -40,9 +40,10 @@ typedef struct dd_delete_stats {
 } dd_delete_stats;
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *s);
 
-/* Statistics: the predicate counts are kept by counting builds
- * (-DDD_COUNTERS), zero otherwise; tets_created and walk_steps (cells
- * crossed by point location) always.                                    */
+/* Statistics of the edits (read-only calls count nothing: they write
+ * nothing to t, dtdel.h's Threads): the predicate counts are kept by
+ * counting builds (-DDD_COUNTERS), zero otherwise; tets_created and
+ * walk_steps (cells crossed by point location) always.                  */
 typedef struct dd_counters {
     uint64_t orient_calls, orient_exact;
     uint64_t insphere_calls, insphere_exact;

@@ -3,8 +3,9 @@
  * it: a vertex's point, a snapshot of the cells with their neighbours,
  * the cells around a vertex, exact point location and the exact nearest
  * vertex (dtdel.h).  Each answer is in input indices, -1 for the infinite
- * vertex; none changes the triangulation (the location grid apart, which
- * is scratch: mesh/locate.c).
+ * vertex.  None writes to the triangulation, so any number may run at
+ * once on one (dtdel.h, threads): their scratch is a dd_reader of their
+ * own (mesh.h), and a failure is told by the status alone.
  */
 #include "dtdel.h"
 #include "delete/delete.h"
@@ -13,11 +14,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-static dd_status check_point(dd_tri *t, const double p[3])
+static dd_status check_point(const double p[3])
 {
     for (int c = 0; c < 3; c++) {
-        if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c of the query is NaN", "xyz"[c]);
-        if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c of the query is infinite", "xyz"[c]);
+        if (isnan(p[c])) return DD_ERR_NAN;
+        if (isinf(p[c])) return DD_ERR_INFINITE;
     }
     return DD_OK;
 }
@@ -57,39 +58,50 @@ dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *nce
     return DD_OK;
 }
 
-uint32_t dd_incident_cells(dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max)
+uint32_t dd_incident_cells(const dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max)
 {
-    dd_del *d;
-    if (dd_del_star_of(t, v, &d) != DD_OK) return 0;
-    for (size_t k = 0; k < d->star.n && k < max; k++)
-        for (int i = 0; i < 4; i++) out[k][i] = dd_input_index(t, dd_tv(t, d->star.a[k])[i]);
-    return (uint32_t)d->star.n;
+    const uint32_t id = dd_vertex_of(t, v);
+    if (id == DD_NONE) return 0;
+    dd_reader r;
+    dd_reader_init(&r);
+    uint32_t n = 0;
+    if (dd_star_read(t, &r, id, &r.star) == DD_OK) {
+        n = (uint32_t)r.star.n;
+        for (size_t k = 0; k < r.star.n && k < max; k++)
+            for (int i = 0; i < 4; i++) out[k][i] = dd_input_index(t, dd_tv(t, r.star.a[k])[i]);
+    }
+    dd_reader_done(&r);
+    return n;
 }
 
-/* The cell of p (dd_walk_locate from a start near p). */
-static dd_status locate_cell(dd_tri *t, const double p[3], uint32_t *cell)
+/* The cell of p (dd_walk_read from a start near p). */
+static dd_status locate_cell(const dd_tri *t, dd_reader *r, const double p[3], uint32_t *cell)
 {
-    t->err[0] = 0;
-    dd_status s = check_point(t, p);
+    dd_status s = check_point(p);
     if (s != DD_OK) return s;
-    if ((s = dd_grid_ready(t)) != DD_OK) return dd_fail(t, s, "out of memory");
-    return dd_walk_locate(t, p, dd_start_near(t, p), cell);
+    return dd_walk_read(t, r, p, dd_start_near(t, p), cell);
 }
 
-dd_status dd_locate(dd_tri *t, const double p[3], int32_t cell[4])
+dd_status dd_locate(const dd_tri *t, const double p[3], int32_t cell[4])
 {
     uint32_t c;
-    dd_status s = locate_cell(t, p, &c);
-    if (s != DD_OK) return dd_end_call(t, s);
+    dd_reader r;
+    dd_reader_init(&r);
+    dd_status s = locate_cell(t, &r, p, &c);
+    dd_reader_done(&r);
+    if (s != DD_OK) return s;
     for (int i = 0; i < 4; i++) cell[i] = dd_input_index(t, dd_tv(t, c)[i]);
     return DD_OK;
 }
 
-dd_status dd_nearest_vertex(dd_tri *t, const double p[3], uint32_t *v)
+dd_status dd_nearest_vertex(const dd_tri *t, const double p[3], uint32_t *v)
 {
     uint32_t c, w;
-    dd_status s = locate_cell(t, p, &c);
-    if (s == DD_OK) s = dd_nearest_from(t, p, c, &w);
+    dd_reader r;
+    dd_reader_init(&r);
+    dd_status s = locate_cell(t, &r, p, &c);
+    if (s == DD_OK) s = dd_nearest_from(t, &r, p, c, &w);
+    dd_reader_done(&r);
     if (s == DD_OK) *v = t->v2in[w];
-    return dd_end_call(t, s);
+    return s;
 }

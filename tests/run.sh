@@ -1,10 +1,12 @@
 #!/bin/sh
 # Runs the whole suite: the C test programs and the CLI tests, first in the
-# release build, then in the sanitizer build (smaller sizes).  Counts the
+# release build, then in the sanitizer build (smaller sizes), then the
+# threaded test in the ThreadSanitizer build (a data race fails it).  Counts the
 # "ok"/"FAIL" lines and ends with "N passed, N failed"; exits 1 on any
 # failure, including a test program that crashed or exited non-zero.
 REL=${1:-build}
 ASAN=${2:-build/asan}
+TSAN=${3:-build/tsan}
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 
@@ -24,6 +26,7 @@ run() {   # run LABEL CMD...
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export TSAN_OPTIONS=halt_on_error=1
 
 for t in "$REL"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
@@ -45,6 +48,7 @@ done
 run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
 run "asan write" sh tests/test_write.sh "$ASAN/dtdel"
 run "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
+run "tsan test_threads" "$TSAN/tests/test_threads" small
 
 grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'
 passed=$(grep -c "^ok " "$log")

@@ -432,9 +432,10 @@ static int pair_full_check(soak *s, pair *p, const char *after)
     free(a);
     free(b);
     if (!ok) return -1;
-    dd_status st = dd_check(p->t);
+    char why[256];
+    dd_status st = dd_check_msg(p->t, why, sizeof why);
     if (st != DD_OK) {
-        mismatch(s, "dd_check after %s: %s: %s", after, dd_status_name(st), dd_errmsg(p->t));
+        mismatch(s, "dd_check after %s: %s: %s", after, dd_status_name(st), why);
         return -1;
     }
     return 0;

@@ -20,8 +20,8 @@ static void compare(tl_state *st, const char *name, const double *pts, uint32_t 
     tl_check(st, s == DD_OK, tname, "dd_create failed: %s", msg);
     if (s != DD_OK) return;
     snprintf(tname, sizeof tname, "build/%s/valid", name);
-    s = dd_check(t);
-    tl_check(st, s == DD_OK, tname, "%s", dd_errmsg(t));
+    s = dd_check_msg(t, msg, sizeof msg);
+    tl_check(st, s == DD_OK, tname, "%s", msg);
     dd_cgal *c = dd_cgal_build(pts, n);
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;

@@ -118,7 +118,9 @@ static void single_deletions(tl_state *st, const char *name, const double *pts, 
                     fail_once(ta, "deleting %u: %s link deletions counted", v, "wrong number of");
             }
             free(now.a);
-            if (check_every && dd_check(t) != DD_OK) fail_once(ta, "deleting %u: validator: %s", v, dd_errmsg(t));
+            char why[150];
+            if (check_every && dd_check_msg(t, why, sizeof why) != DD_OK)
+                fail_once(ta, "deleting %u: validator: %s", v, why);
             reins.total++;
             if (dd_reinsert(t, v) != DD_OK) {
                 fail_once(&reins, "reinserting %u failed: %s", v, dd_errmsg(t));
@@ -188,7 +190,8 @@ static void sequence(tl_state *st, const char *name, const double *pts, uint32_t
             canon a = ours(t), b = theirs(g);
             compared++;
             if (!same(a, b)) { ok = 0; snprintf(why, sizeof why, "after %u deletions (last %u): differs from CGAL", done, v); }
-            if (ok && dd_check(t) != DD_OK) { ok = 0; snprintf(why, sizeof why, "after %u deletions: %s", done, dd_errmsg(t)); }
+            char bad[160];
+            if (ok && dd_check_msg(t, bad, sizeof bad) != DD_OK) { ok = 0; snprintf(why, sizeof why, "after %u deletions: %s", done, bad); }
             free(a.a); free(b.a);
         }
     }
@@ -227,7 +230,7 @@ static void delete_set(tl_state *st, const char *name, const double *pts, uint32
         if (!same(a, b)) { ok = 0; snprintf(why, sizeof why, "differs from CGAL"); }
         free(a.a); free(b.a);
     }
-    if (ok && dd_check(t) != DD_OK) { ok = 0; snprintf(why, sizeof why, "%s", dd_errmsg(t)); }
+    if (ok && dd_check_msg(t, why, sizeof why) != DD_OK) ok = 0;
     snprintf(tn, sizeof tn, "delete-set/%s/%s", name, var);
     tl_check(st, ok && m > 0, tn, "%s (%u points in the set)", why, m);
     free(vs);

@@ -11,7 +11,7 @@
 #include <string.h>
 
 /* A coordinate: a whole argument read by strtod (NaN and inf included,
- * which dd_locate then refuses with its own message); 0 on success.  A
+ * which dd_locate then refuses by its status); 0 on success.  A
  * number beyond DBL_MAX is refused here; one below the normal range is
  * its subnormal (or zero), as the point readers take it (strtod's ERANGE
  * on underflow is no error: every finite double is valid input).        */
@@ -36,7 +36,7 @@ int cmd_locate(int argc, char **argv)
     int32_t cell[4];
     dd_status s = dd_locate(t, p, cell);
     if (s != DD_OK) {
-        fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
+        fprintf(stderr, "dtdel locate: cannot locate the point: %s\n", dd_status_name(s));
         dd_free(t);
         return EXIT_INPUT;
     }

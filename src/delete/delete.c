@@ -403,7 +403,7 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     return s;
 }
 
-/* Step 1 alone, for the star queries of api.c. */
+/* Step 1 alone (delete.h). */
 dd_status dd_del_star_of(dd_tri *t, uint32_t input, dd_del **out)
 {
     uint32_t v = 0;

@@ -157,7 +157,9 @@ dd_status dd_del_resolve(dd_tri *t, uint32_t input, uint32_t *v);
 void dd_del_free(dd_del *d);
 
 /* Sets up the context for input vertex v and collects its star, link
- * triangles and neighbours (step 1 of DELETEVERTEX), without deleting. */
+ * triangles and neighbours (step 1 of DELETEVERTEX), without deleting:
+ * an edit (it writes t's marks and context), for tests that look at
+ * the star; the public star queries read it with dd_star_read.       */
 dd_status dd_del_star_of(dd_tri *t, uint32_t v, dd_del **out);
 
 /* ---- services for strategies -------------------------------------------- */

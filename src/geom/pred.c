@@ -28,7 +28,7 @@
 
 void dd_pred_init(dd_pred *ctx)
 {
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
+    ctx->z_ready = 0;
     ctx->orient_exact = ctx->insphere_exact = 0;
 #ifdef DD_COUNTERS
     ctx->orient_calls = ctx->insphere_calls = 0;
@@ -38,7 +38,9 @@ void dd_pred_init(dd_pred *ctx)
 
 void dd_pred_clear(dd_pred *ctx)
 {
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_clear(ctx->z[i]);
+    if (ctx->z_ready)
+        for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_clear(ctx->z[i]);
+    ctx->z_ready = 0;
 }
 
 /* ---- exact stage --------------------------------------------------------- */
@@ -75,9 +77,14 @@ static void set_scaled(mpz_t out, double x, int emin)
     else if (sh < 0) mpz_tdiv_q_2exp(out, out, (mp_bitcnt_t)(-sh)); /* exact */
 }
 
-/* Loads the npts points as scaled integers into z[0 .. 3*npts-1]. */
+/* Loads the npts points as scaled integers into z[0 .. 3*npts-1], the
+ * scratch made first if it is not (every GMP stage starts here).       */
 static void load_points(dd_pred *ctx, const double *const *pts, int npts)
 {
+    if (!ctx->z_ready) {
+        for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
+        ctx->z_ready = 1;
+    }
     int emin = min_exponent(pts, npts);
     for (int i = 0; i < npts; i++)
         for (int c = 0; c < 3; c++) set_scaled(ctx->z[3 * i + c], pts[i][c], emin);

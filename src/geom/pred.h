@@ -32,6 +32,10 @@
 
 typedef struct dd_pred {
     mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused            */
+    int z_ready;                /* z initialised: at the first GMP stage,
+                                   so a context of one call (a read-only
+                                   query's, mesh.h dd_reader) costs O(1)
+                                   when no GMP stage runs                 */
     /* tests past the filters (the exact stages), in every build: the gift
      * wrap's budget counts them (wrap_int.h, w_spent)                        */
     uint64_t orient_exact, insphere_exact;
@@ -163,6 +167,9 @@ static inline int dd_insphere_filter(dd_pred *ctx, const double *p, const double
     return DD_FILTER_UNSURE;
 }
 
+/* Readies ctx in O(1): counters zeroed, the GMP scratch made when first
+ * needed.  dd_pred_clear frees it.  A context is used by one thread at a
+ * time: each read-only call of the public API takes one of its own.    */
 void dd_pred_init(dd_pred *ctx);
 void dd_pred_clear(dd_pred *ctx);
 

@@ -315,6 +315,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
     if (s != DD_OK) return report(t, s, msg, msglen);
     dd_shrink_cells(t);     /* the reserve above was a guess */
     if (dd_publish_all_cells(t) != DD_OK) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
+    (void)dd_grid_ready(t); /* where queries start (locate.c); none: longer walks */
     *out = t;
     return DD_OK;
 }

@@ -1,7 +1,8 @@
 /*
  * locate.c -- point location for queries and for the insertion of
  * arbitrary points: where the exact walk starts (a grid of vertices), the
- * star of a vertex, and the exact nearest vertex.
+ * star of a vertex, the exact nearest vertex, and the scratch of the
+ * read-only calls (dd_reader: mesh.h).
  *
  * The grid.  A walk from the last insertion's cell (t->hint) crosses
  * O(n^(1/3)) cells to reach a random point; a start near the point makes
@@ -10,9 +11,11 @@
  * for each box one vertex id that fell in it (the last inserted there),
  * or DD_NONE.  It only chooses where the walk starts: a stale entry (a
  * vertex deleted since) or an empty box costs a longer walk, never a
- * wrong answer, since the walk itself is exact.  Made at the first query
- * or insertion of a new point (construction and deletion never pay for
- * it), remade when the vertex count has doubled or halved since.
+ * wrong answer, since the walk itself is exact.  Made by dd_create (O(n),
+ * beside construction's O(n log n)) and kept by the edits, remade when
+ * the vertex count has doubled or halved since: the edits have the
+ * triangulation to themselves, while queries run at once on it and only
+ * read the grid (dtdel.h, threads).
  *
  * Why a grid and not a Delaunay hierarchy (CGAL's Fast_location): the
  * hierarchy keeps a triangulation per level and must delete from each of
@@ -27,6 +30,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Vertices per box: the walk from a box's vertex crosses a few cells,
  * and the grid stays at 1 byte a vertex.                                */
@@ -93,7 +97,10 @@ static dd_status grid_make(dd_tri *t)
     }
     if (total > g->cap) {
         uint32_t *b = realloc(g->box, total * sizeof *b);
-        if (!b) return DD_ERR_NOMEM;
+        if (!b) {                     /* dims no longer fit the boxes: none */
+            dd_grid_free(g);
+            return DD_ERR_NOMEM;
+        }
         g->box = b;
         g->cap = total;
     }
@@ -168,6 +175,117 @@ dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out)
     return s;
 }
 
+/* ---- the scratch of a read-only call ---------------------------------------- */
+
+void dd_reader_init(dd_reader *r)
+{
+    dd_pred_init(&r->pred);
+    r->rng = 0x9E3779B97F4A7C15ull;
+    r->steps = 0;
+    r->set = r->inl;
+    r->set_cap = DD_READER_INLINE;
+    r->set_mask = 0;
+    r->set_n = 0;
+    r->star = (dd_vec){NULL, 0, 0};
+}
+
+void dd_reader_done(dd_reader *r)
+{
+    dd_pred_clear(&r->pred);
+    if (r->set != r->inl) free(r->set);
+    r->set = r->inl;
+    dd_vec_free(&r->star);
+}
+
+static inline uint32_t set_slot(uint32_t x, uint32_t mask)
+{
+    return (uint32_t)((x * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+}
+
+/* Sizes r's set to `size` slots (a power of two, at most 2^31), all
+ * empty, in the inline array or a malloc'd one.                        */
+static dd_status set_make(dd_reader *r, uint32_t size)
+{
+    if (size > r->set_cap) {
+        uint32_t *s = malloc((size_t)size * sizeof *s);
+        if (!s) return DD_ERR_NOMEM;
+        if (r->set != r->inl) free(r->set);
+        r->set = s;
+        r->set_cap = size;
+    }
+    memset(r->set, 0xFF, (size_t)size * sizeof *r->set);      /* DD_NONE */
+    r->set_mask = size - 1;
+    r->set_n = 0;
+    return DD_OK;
+}
+
+dd_status dd_reader_set_reset(dd_reader *r, size_t expect)
+{
+    uint32_t size = 128;
+    while (size < 2 * expect && size < (1u << 31)) size *= 2;
+    return set_make(r, size);
+}
+
+static int set_add(dd_reader *r, uint32_t x);
+
+/* set_add's slow path: the set is half full, so it doubles first.       */
+static __attribute__((noinline)) int set_grow_add(dd_reader *r, uint32_t x)
+{
+    const uint32_t n = r->set_n, size = r->set_mask + 1;
+    if (size >= (1u << 31)) return -1;
+    uint32_t small[DD_READER_INLINE / 2];         /* the ids, while it grows */
+    uint32_t *keep = n <= DD_READER_INLINE / 2 ? small : malloc((size_t)n * sizeof *keep);
+    if (!keep) return -1;
+    uint32_t m = 0;
+    for (uint32_t k = 0; k < size; k++)
+        if (r->set[k] != DD_NONE) keep[m++] = r->set[k];
+    dd_status s = set_make(r, 2 * size);
+    if (s == DD_OK)
+        for (uint32_t k = 0; k < m; k++) (void)set_add(r, keep[k]);
+    if (keep != small) free(keep);
+    if (s != DD_OK) return -1;      /* the set is empty now: a failed call */
+    return set_add(r, x);
+}
+
+/* dd_reader_set_add, inlined into the star's search: its hot loop.  The
+ * table's pointer and mask are read once, as the stores into the table
+ * could otherwise alias them.                                          */
+static inline int set_add(dd_reader *r, uint32_t x)
+{
+    uint32_t *const set = r->set;
+    const uint32_t mask = r->set_mask;
+    uint32_t i = set_slot(x, mask);
+    for (uint32_t y; (y = set[i]) != DD_NONE; i = (i + 1) & mask)
+        if (y == x) return 0;
+    if (2 * (r->set_n + 1) > mask + 1) return set_grow_add(r, x);
+    set[i] = x;
+    r->set_n++;
+    return 1;
+}
+
+int dd_reader_set_add(dd_reader *r, uint32_t x) { return set_add(r, x); }
+
+/* As dd_star_cells, with the marks in r's set. */
+dd_status dd_star_read(const dd_tri *t, dd_reader *r, uint32_t v, dd_vec *out)
+{
+    out->n = 0;
+    const uint32_t c0 = t->vcell[v];
+    dd_status s = dd_reader_set_reset(r, 64);
+    if (s == DD_OK) s = dd_vec_push(out, c0);
+    if (s == DD_OK) (void)set_add(r, c0);
+    for (size_t k = 0; k < out->n && s == DD_OK; k++) {
+        const uint32_t c = out->a[k];
+        for (uint32_t j = 0; j < 4 && s == DD_OK; j++) {
+            if (dd_tv(t, c)[j] == v) continue;     /* the facet opposite v */
+            const uint32_t nb = dd_tn(t, c)[j] >> 2;
+            const int added = set_add(r, nb);
+            if (added < 0) s = DD_ERR_NOMEM;
+            else if (added) s = dd_vec_push(out, nb);
+        }
+    }
+    return s;
+}
+
 /* ---- nearest vertex ------------------------------------------------------ */
 
 /* Greedy descent over the Delaunay edges: a vertex that is not nearest to
@@ -176,24 +294,24 @@ dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out)
  * of every triangulation of the perturbed set), so the walk ends at a
  * nearest vertex; each step is strictly nearer, so it ends.  Distances
  * are compared exactly (dd_compare_distance).                           */
-dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest)
+dd_status dd_nearest_from(const dd_tri *t, dd_reader *r, const double *p, uint32_t c, uint32_t *nearest)
 {
     uint32_t best = DD_NONE;
     for (int i = 0; i < 4; i++) {
         const uint32_t w = dd_tv(t, c)[i];
         if (w >= DD_QD) continue;
-        if (best == DD_NONE || dd_compare_distance(&t->pred, p, dd_pt(t, best), dd_pt(t, w)) > 0) best = w;
+        if (best == DD_NONE || dd_compare_distance(&r->pred, p, dd_pt(t, best), dd_pt(t, w)) > 0) best = w;
     }
-    dd_vec *star = &t->conflict;                 /* scratch between insertions */
+    dd_vec *star = &r->star;
     for (int moved = 1; moved;) {
         moved = 0;
-        dd_status s = dd_star_cells(t, best, star);
+        dd_status s = dd_star_read(t, r, best, star);
         if (s != DD_OK) return s;
         for (size_t k = 0; k < star->n && !moved; k++)
             for (int i = 0; i < 4; i++) {
                 const uint32_t w = dd_tv(t, star->a[k])[i];
                 if (w >= DD_QD || w == best) continue;
-                if (dd_compare_distance(&t->pred, p, dd_pt(t, best), dd_pt(t, w)) > 0) {
+                if (dd_compare_distance(&r->pred, p, dd_pt(t, best), dd_pt(t, w)) > 0) {
                     best = w;
                     moved = 1;
                     break;

@@ -387,13 +387,13 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 }
 
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
-static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
+static inline int orient_replaced(const dd_tri *t, dd_pred *pr, uint32_t c, int i, const double *p)
 {
     const uint32_t *v = dd_tv(t, c);
     const double *q[4];
     for (int k = 0; k < 4; k++) q[k] = (k == i) ? p : dd_pt(t, v[k]);
-    int f = dd_orient3d_filter(&t->pred, q[0], q[1], q[2], q[3]);
-    return f != DD_FILTER_UNSURE ? f : dd_orient3d_unfiltered(&t->pred, q[0], q[1], q[2], q[3]);
+    int f = dd_orient3d_filter(pr, q[0], q[1], q[2], q[3]);
+    return f != DD_FILTER_UNSURE ? f : dd_orient3d_unfiltered(pr, q[0], q[1], q[2], q[3]);
 }
 
 /* ---- point location ------------------------------------------------------ */
@@ -426,7 +426,7 @@ static inline int orient_replaced(dd_tri *t, uint32_t c, int i, const double *p)
  * nearest p towards its centroid.  Any finite coordinates: a distance
  * that overflows (or is NaN) leaves the first vertex the nearest, and
  * the centroid is summed in quarters, which cannot overflow.            */
-static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double s[3])
+static void locate_segment_start(const dd_tri *t, uint32_t c, const double *p, double s[3])
 {
     double d2min = HUGE_VAL;
     const double *near = dd_pt(t, dd_tv(t, c)[0]);
@@ -441,9 +441,11 @@ static void locate_segment_start(dd_tri *t, uint32_t c, const double *p, double 
 }
 
 /* The walk above from cell c: the cell it stops in; *exit the facet of
- * that cell towards the outer cell it stopped before, else DD_NONE.     */
-static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t *exit)
+ * that cell towards the outer cell it stopped before, else DD_NONE; the
+ * cells crossed added to *nsteps.                                       */
+static uint32_t locate_inexact(const dd_tri *t, const double *p, uint32_t c, uint32_t *exit, uint64_t *nsteps)
 {
+    uint64_t crossed = 0;
     double s[3];
     int have_s = 0;                 /* made when first needed: p is often in c */
     uint32_t prev = DD_NONE;
@@ -486,8 +488,9 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
         if (dd_is_outer_cell(t, nb[out])) { *exit = (uint32_t)out; break; }
         prev = c;
         c = nb[out];
-        t->walk_steps++;
+        crossed++;
     }
+    *nsteps += crossed;
     return c;
 }
 
@@ -495,8 +498,10 @@ static uint32_t locate_inexact(dd_tri *t, const double *p, uint32_t c, uint32_t 
  * whose closure contains p, or an infinite cell whose hull facet p sees
  * strictly.  Each step crosses a facet whose plane strictly separates the
  * cell from p; the facet tried first is random (but in the first cell,
- * see below), so the walk cannot cycle.                                  */
-dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
+ * see below), so the walk cannot cycle.  pr, rng and nsteps are the
+ * caller's: t's for an edit, a dd_reader's for a read.                  */
+static dd_status walk_locate(const dd_tri *t, dd_pred *pr, uint64_t *rng, uint64_t *nsteps, const double *p,
+                             uint32_t start, uint32_t *out)
 {
     uint32_t c = start;
     uint32_t from = DD_NONE;            /* facet index we entered through */
@@ -512,24 +517,34 @@ dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *o
      * beyond it could send the walk across the whole interior
      * (re-inserting a hull vertex of the helix; test_build).            */
     uint32_t exit = DD_NONE;
-    c = locate_inexact(t, p, c, &exit);
+    c = locate_inexact(t, p, c, &exit, nsteps);
     for (;;) {
-        if (++steps > limit)
-            return dd_fail(t, DD_ERR_INTERNAL, "point location did not terminate");
+        if (++steps > limit) return DD_ERR_INTERNAL;
         if (dd_is_outer_cell(t, c)) { *out = c; break; }
-        uint32_t r = exit != DD_NONE ? exit : dd_rand(t) & 3, next = DD_NONE;
+        uint32_t r = exit != DD_NONE ? exit : dd_xorshift(rng) & 3, next = DD_NONE;
         exit = DD_NONE;
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t i = (r + k) & 3;
             if (i == from) continue;
-            if (orient_replaced(t, c, (int)i, p) < 0) { next = dd_tn(t, c)[i]; break; }
+            if (orient_replaced(t, pr, c, (int)i, p) < 0) { next = dd_tn(t, c)[i]; break; }
         }
         if (next == DD_NONE) { *out = c; break; }
         c = next >> 2;
         from = next & 3;
     }
-    t->walk_steps += steps;
+    *nsteps += steps;
     return DD_OK;
+}
+
+dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out)
+{
+    dd_status s = walk_locate(t, &t->pred, &t->rng, &t->walk_steps, p, start, out);
+    return s == DD_OK ? s : dd_fail(t, s, "point location did not terminate");
+}
+
+dd_status dd_walk_read(const dd_tri *t, dd_reader *r, const double *p, uint32_t start, uint32_t *out)
+{
+    return walk_locate(t, &r->pred, &r->rng, &r->steps, p, start, out);
 }
 
 /* ---- Bowyer-Watson insertion --------------------------------------------- */

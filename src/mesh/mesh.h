@@ -27,7 +27,8 @@
  * they take fresh epochs (dd_new_epoch), O(1); when the 16 bits run out,
  * every stamp is cleared once (O(cells) per 65535 mark values: most passes
  * take one or two).  Two bytes, not four: the mesh stays within 40 bytes
- * per cell.
+ * per cell.  Only edits take epochs: a read-only call keeps its marks in
+ * a dd_reader of its own (below), as it keeps all its scratch.
  *
  * Vertices.  Inside the engine a vertex is a vertex id: its position in
  * insertion order (BRIO + Hilbert), so that vertices close in space are
@@ -176,7 +177,9 @@ void dd_vec_free(dd_vec *v);
 
 /* Where point location starts for a query or a new point (locate.c): per
  * box of a grid over the vertices' bounding box, one vertex id or
- * DD_NONE.  Empty (box NULL) until first needed.                        */
+ * DD_NONE.  Made by dd_create and kept by the edits (dd_grid_ready);
+ * read-only calls only read it.  Empty (box NULL) when it could not be
+ * made: walks then start from t->hint.                                  */
 typedef struct dd_grid {
     uint32_t *box;
     size_t nbox, cap;
@@ -229,7 +232,7 @@ struct dd_tri {
     uint64_t moves_kept, moves_flipped, moves_redone;   /* dd_move's courses */
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
-    dd_grid grid;             /* location starts (locate.c), lazily made */
+    dd_grid grid;             /* location starts (locate.c), kept by edits */
     dd_vec flip[5];           /* dd_move_by_flips' scratch (flip.c)       */
     dd_vec vfree;             /* ids of deleted vertices, for dd_insert to
                                  reuse (api.c); may hold stale entries   */
@@ -359,12 +362,6 @@ static inline uint32_t dd_xorshift(uint64_t *state)
     return (uint32_t)(x >> 32);
 }
 
-/* A random number for t's walks (dd_walk_locate). */
-static inline uint32_t dd_rand(dd_tri *t)
-{
-    return dd_xorshift(&t->rng);
-}
-
 /* Cell storage. dd_reserve_cells makes room for k more cells so that the
  * next k dd_new_cell calls cannot fail.                                  */
 dd_status dd_reserve_cells(dd_tri *t, uint32_t k);
@@ -414,11 +411,43 @@ static inline int dd_cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
  * q[kd] = q's point).  q is permuted.                                    */
 int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const double *p);
 
+/* The scratch of one read-only call (dtdel.h: any number of them may run
+ * at once on one triangulation, which they must not write): its own
+ * predicate context, walk generator and step count, and a set of ids
+ * (cells or vertices: visited marks) by open addressing, whose first
+ * DD_READER_INLINE slots are in the struct and larger tables malloc'd.
+ * On the caller's stack: dd_reader_init, then dd_reader_done, which
+ * frees what it took.  The generator starts from the same seed in every
+ * call, so a query's answer depends on the triangulation and p alone.  */
+#define DD_READER_INLINE 256
+typedef struct dd_reader {
+    dd_pred pred;
+    uint64_t rng;
+    uint64_t steps;           /* cells crossed by this call's walks     */
+    uint32_t *set;            /* inl, or malloc'd when larger           */
+    uint32_t set_cap, set_mask, set_n;
+    dd_vec star;              /* dd_star_read's list, for its callers    */
+    uint32_t inl[DD_READER_INLINE];
+} dd_reader;
+
+void dd_reader_init(dd_reader *r);
+void dd_reader_done(dd_reader *r);
+/* Empties r's set, sized for about `expect` ids.  DD_ERR_NOMEM.        */
+dd_status dd_reader_set_reset(dd_reader *r, size_t expect);
+/* Puts id x (not DD_NONE) in r's set: 1 if it was not there, 0 if it
+ * was, -1 when the set cannot grow (out of memory).  It doubles when
+ * half full; O(1) expected.                                             */
+int dd_reader_set_add(dd_reader *r, uint32_t x);
+
 /* Point location from cell `start`: a walk on plain floating-point
  * orientations towards p (mesh.c, locate_inexact), then the exact
  * visibility walk; stops in a finite cell whose closure holds p, or in
- * the first outer cell entered (which p sees).                          */
+ * the first outer cell entered (which p sees).  dd_walk_locate is the
+ * edits' (t's predicates, generator and walk_steps); dd_walk_read the
+ * read-only calls', which writes only r.  DD_ERR_INTERNAL (and, for the
+ * edits', a message) if the walk does not end.                          */
 dd_status dd_walk_locate(dd_tri *t, const double *p, uint32_t start, uint32_t *out);
+dd_status dd_walk_read(const dd_tri *t, dd_reader *r, const double *p, uint32_t start, uint32_t *out);
 
 /* Bowyer-Watson in three steps, shared by construction and deletion:
  * dd_find_conflicts marks the conflict region of p reachable from c0 (which
@@ -437,8 +466,10 @@ dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
 
 /* ---- location for queries and new points (locate.c) ---------------------- */
 
-/* Makes t->grid fit the vertices now (made once, remade when their number
- * has doubled or halved), O(nvid) when it is made, else O(1).            */
+/* Makes t->grid fit the vertices now (made by dd_create, remade when
+ * their number has doubled or halved), O(nvid) when it is made, else
+ * O(1).  The edits call it; a failure (out of memory) leaves no grid,
+ * which only makes walks longer.                                       */
 dd_status dd_grid_ready(dd_tri *t);
 /* Records vertex v, just inserted, in its box (if the grid exists).      */
 void dd_grid_note(dd_tri *t, uint32_t v);
@@ -446,12 +477,15 @@ void dd_grid_free(dd_grid *g);
 /* A live cell near p to start a walk from: the cell of a vertex of p's
  * box or a box next to it, else t->hint, else the infinite cell.        */
 uint32_t dd_start_near(const dd_tri *t, const double *p);
-/* The cells incident to vertex v, in out (reset first), O(star).        */
+/* The cells incident to vertex v, in out (reset first), O(star):
+ * dd_star_cells marks them with an epoch of t (edits), dd_star_read in
+ * r's set (read-only calls).                                            */
 dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
+dd_status dd_star_read(const dd_tri *t, dd_reader *r, uint32_t v, dd_vec *out);
 /* A vertex nearest to p (exactly; any one of ties), by greedy descent
- * over the Delaunay edges from the vertices of cell c.  Uses t->conflict
- * as scratch.                                                            */
-dd_status dd_nearest_from(dd_tri *t, const double *p, uint32_t c, uint32_t *nearest);
+ * over the Delaunay edges from the vertices of cell c; r's predicates,
+ * set and r->star as scratch.                                          */
+dd_status dd_nearest_from(const dd_tri *t, dd_reader *r, const double *p, uint32_t c, uint32_t *nearest);
 
 /* ---- moving a vertex in place (flip.c) ---------------------------------- */
 
@@ -497,6 +531,15 @@ void dd_clear_cells(dd_tri *t);
  * partner keep tn == DD_NONE.                                            */
 dd_status dd_reserve_edge_hash(dd_tri *t, size_t ncells);
 void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t v);
+
+/* The vertex id of input index `input` if it is a vertex now, else
+ * DD_NONE (a duplicate, a deleted point, out of range).                 */
+static inline uint32_t dd_vertex_of(const dd_tri *t, uint32_t input)
+{
+    if (input >= t->np) return DD_NONE;
+    const uint32_t v = t->in2v[input];
+    return t->v2in[v] == input && t->vcell[v] != DD_NONE ? v : DD_NONE;
+}
 
 /* Input index of vertex v, as the public API reports it (-1 for DD_INF). */
 static inline int32_t dd_input_index(const dd_tri *t, uint32_t v)
@@ -578,7 +621,8 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
 dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned flags, char *msg,
                          size_t msglen);
 
-/* dd_check (dtdel.h): the validator, src/mesh/check.c. */
-dd_status dd_mesh_check(dd_tri *t);
+/* dd_check_msg (dtdel.h): the validator, src/mesh/check.c; reads t
+ * only, its scratch its own.                                           */
+dd_status dd_mesh_check(const dd_tri *t, char *msg, size_t msglen);
 
 #endif

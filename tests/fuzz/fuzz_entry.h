@@ -196,9 +196,10 @@ static int fz_scratch(const fz_state *s, int32_t **out, size_t *nout)
 /* dd_check, then the canonical form against the one from scratch. */
 static int fz_verify(const fz_state *s, const char *after)
 {
-    dd_status st = dd_check(s->t);
+    char why[256];
+    dd_status st = dd_check_msg(s->t, why, sizeof why);
     if (st != DD_OK) {
-        fprintf(stderr, "fuzz ops: dd_check after %s: %s: %s\n", after, dd_status_name(st), dd_errmsg(s->t));
+        fprintf(stderr, "fuzz ops: dd_check after %s: %s: %s\n", after, dd_status_name(st), why);
         return 1;
     }
     int32_t *a = NULL, *b = NULL;
