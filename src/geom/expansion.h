@@ -45,6 +45,8 @@
 #ifndef DD_EXPANSION_H
 #define DD_EXPANSION_H
 
+#include "geom/fp.h"   /* first: no contraction from here on */
+
 #define DD_EXP_UNSAFE 2
 
 /* Stage that decided, reported by the _staged variants (tests, counting). */
