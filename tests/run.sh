@@ -1,10 +1,13 @@
 #!/bin/sh
 # Runs the whole suite: the C test programs and the CLI tests, first in the
-# release build, then in the sanitizer build (smaller sizes).  Counts the
+# release build, then in the sanitizer build (smaller sizes), then the
+# contract build's tests (third argument, if given: the library built with
+# -ffp-contract=fast -march=native, src/geom/fp.h; smaller sizes).  Counts the
 # "ok"/"FAIL" lines and ends with "N passed, N failed"; exits 1 on any
 # failure, including a test program that crashed or exited non-zero.
 REL=${1:-build}
 ASAN=${2:-build/asan}
+CONTRACT=${3:-}
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 
@@ -38,6 +41,12 @@ for t in "$ASAN"/tests/test_*; do
 done
 run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
 run "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
+if [ -n "$CONTRACT" ]; then
+    for t in "$CONTRACT"/tests/test_*; do
+        case "$t" in *.o) continue ;; esac
+        run "contract $(basename "$t")" "$t" small
+    done
+fi
 
 grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'
 passed=$(grep -c "^ok " "$log")

@@ -110,7 +110,8 @@ __attribute__((target("avx2"))) uint32_t dd_lift_next_avx2(double *const *L, uin
     unsigned before = (1u << (from - k)) - 1;        /* lanes before `from` */
     for (; k < n; k += 4) {
         const __m256d ok = eval_o4(L, k, ax, ay, az, n0, n1, n2);
-        __m256d hit = unsure ? _mm256_cmp_pd(_mm256_andnot_pd(sign, ok), er, _CMP_LE_OQ)
+        /* unsure: not |o| > oerr, so a NaN o is unsure, as in dd_lift_next */
+        __m256d hit = unsure ? _mm256_cmp_pd(_mm256_andnot_pd(sign, ok), er, _CMP_NGT_UQ)
                              : _mm256_cmp_pd(ok, ner, _CMP_NLT_UQ);
         unsigned m = (unsigned)_mm256_movemask_pd(hit) & ~before;
         before = 0;

@@ -83,7 +83,9 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
     return s;
 }
 
-/* Doubles the table and enters the records again: O(records).         */
+/* Grows the table fourfold (w_ftab_reset sizes it for 4 (mask + 1)
+ * records at a quarter full) and enters the records again:
+ * O(records).                                                           */
 static dd_status w_ftab_grow(struct dd_wrap *w)
 {
     dd_status s = w_ftab_reset(w, w->fs_mask + 1);
@@ -95,7 +97,8 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
 }
 
 /* Room for `more` more records: the record arrays doubled as needed,
- * then the table until it is at most a quarter full (w_reserve_recs). */
+ * then the table grown until it is at most a quarter full, as
+ * w_reserve_recs requires.                                             */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
     if (w->nrec + more > w->cap_rec) {
