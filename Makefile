@@ -20,7 +20,8 @@ CC      ?= gcc
 CXX     ?= g++
 WARN     = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion -Wstrict-prototypes -Wmissing-prototypes
 CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L -Isrc -I.
-# -ffp-contract=off: the predicate filters' error bounds assume no FMA fusion.
+# -ffp-contract=off: the predicate filters' error bounds assume no FMA fusion
+# (src/geom/fp.h makes the sources refuse it too; build/contract/ checks).
 # -O3 for our engine and for the CGAL shim alike (CGAL's own CMake Release
 # default), so the bench compares like with like.
 OPT      = -O3 -DNDEBUG -ffp-contract=off
@@ -63,6 +64,13 @@ HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) sr
 B = build
 A = build/asan
 K = build/count
+# The contract build: the library as a user might compile it into their
+# own project, GNU C with contraction allowed and every extension of the
+# CPU, and the tests that certify its signs (src/geom/fp.h).
+C = build/contract
+CFLAGS_CT = -std=gnu11 -D_POSIX_C_SOURCE=200809L -Isrc -I. $(WARN) -O3 -march=native -ffp-contract=fast -DDD_TEST_BUILD
+LIB_OBJ_CT = $(LIB_SRC:%.c=$(C)/obj/%.o)
+TESTS_CT = $(C)/tests/test_filters $(C)/tests/test_delete
 
 LIB_OBJ_R = $(LIB_SRC:%.c=$(B)/obj/%.o)
 LIB_OBJ_A = $(LIB_SRC:%.c=$(A)/obj/%.o)
@@ -158,6 +166,18 @@ $(T)/tests/test_threads: tests/test_threads.c $(DATA_OBJ_T) $(T)/libdtdel.a test
 	$(CC) $(CFLAGS_T) -pthread $< $(DATA_OBJ_T) $(T)/libdtdel.a -o $@ $(LIBS)
 $(B)/tests/test_threads $(A)/tests/test_threads: LIBS += -pthread
 
+# ---- contract build (src/geom/fp.h) -------------------------------------------
+$(C)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_CT) -c $< -o $@
+$(C)/libdtdel.a: $(LIB_OBJ_CT) | $(DEPS_STAMP)
+	@rm -f $@
+	ar rcs $@ $^
+$(C)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(C)/libdtdel.a tests/testlib.h | $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_CT) -c $< -o $@.o
+	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(C)/libdtdel.a -o $@ $(LIBS)
+
 # ---- counting build -----------------------------------------------------------
 $(K)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
@@ -182,13 +202,13 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
 	@$(MAKE) --no-print-directory all $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
-		$(T)/tests/test_threads
-	@sh tests/run.sh $(B) $(A) $(T)
+		$(T)/tests/test_threads $(TESTS_CT)
+	@sh tests/run.sh $(B) $(A) $(T) $(C)
 
 # The files make test, bench, soak and fuzz build (tests/test_make.sh
 # checks that each waits for the deps stamp).
 print-goals:
-	@echo $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(F)/fuzz_readers $(F)/fuzz_ops
+	@echo $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
 
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.

@@ -1,12 +1,15 @@
 #!/bin/sh
 # Runs the whole suite: the C test programs and the CLI tests, first in the
 # release build, then in the sanitizer build (smaller sizes), then the
-# threaded test in the ThreadSanitizer build (a data race fails it).  Counts the
+# threaded test in the ThreadSanitizer build (a data race fails it), and the
+# contract build's tests (fourth argument, if given: the library built with
+# -ffp-contract=fast -march=native, src/geom/fp.h; smaller sizes).  Counts the
 # "ok"/"FAIL" lines and ends with "N passed, N failed"; exits 1 on any
 # failure, including a test program that crashed or exited non-zero.
 REL=${1:-build}
 ASAN=${2:-build/asan}
 TSAN=${3:-build/tsan}
+CONTRACT=${4:-}
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 
@@ -49,6 +52,12 @@ run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
 run "asan write" sh tests/test_write.sh "$ASAN/dtdel"
 run "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
 run "tsan test_threads" "$TSAN/tests/test_threads" small
+if [ -n "$CONTRACT" ]; then
+    for t in "$CONTRACT"/tests/test_*; do
+        case "$t" in *.o) continue ;; esac
+        run "contract $(basename "$t")" "$t" small
+    done
+fi
 
 grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'
 passed=$(grep -c "^ok " "$log")

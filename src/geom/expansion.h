@@ -45,6 +45,8 @@
 #ifndef DD_EXPANSION_H
 #define DD_EXPANSION_H
 
+#include "geom/fp.h"   /* first: no contraction from here on */
+
 #define DD_EXP_UNSAFE 2
 
 /* The safe ranges below as powers of two: 2^-LIM <= |x| <= 2^LIM. */

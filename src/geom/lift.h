@@ -41,6 +41,8 @@
 #ifndef DD_LIFT_H
 #define DD_LIFT_H
 
+#include "geom/fp.h"   /* first: no contraction from here on */
+
 #include <math.h>
 #include <stdint.h>
 

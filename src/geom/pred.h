@@ -24,6 +24,8 @@
 #ifndef DD_PRED_H
 #define DD_PRED_H
 
+#include "geom/fp.h"   /* first: no contraction from here on */
+
 #include <math.h>
 #include <stdint.h>
 #include <gmp.h>

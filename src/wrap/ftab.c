@@ -53,7 +53,7 @@ void dd_wrap_code_words(uint64_t *code, uint32_t from, uint32_t count, uint32_t 
 dd_status w_code_reserve(struct dd_wrap *w, uint32_t count)
 {
     if (count <= w->ncode) return DD_OK;
-    if (!w_grow((void **)&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
+    if (dd_grow(&w->code, count, sizeof *w->code)) return DD_ERR_NOMEM;
     if (w->ncode == 0) w->gf[0] = w->gf[1] = w->gf[2] = 1;
     dd_wrap_code_words(w->code, w->ncode, count, w->gf);
     w->ncode = count;
@@ -83,7 +83,9 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect)
     return s;
 }
 
-/* Doubles the table and enters the records again: O(records).         */
+/* Grows the table fourfold (w_ftab_reset sizes it for 4 (mask + 1)
+ * records at a quarter full) and enters the records again:
+ * O(records).                                                           */
 static dd_status w_ftab_grow(struct dd_wrap *w)
 {
     dd_status s = w_ftab_reset(w, w->fs_mask + 1);
@@ -95,15 +97,16 @@ static dd_status w_ftab_grow(struct dd_wrap *w)
 }
 
 /* Room for `more` more records: the record arrays doubled as needed,
- * then the table until it is at most a quarter full (w_reserve_recs). */
+ * then the table grown until it is at most a quarter full, as
+ * w_reserve_recs requires.                                             */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more)
 {
     if (w->nrec + more > w->cap_rec) {
         uint32_t cap = w->cap_rec ? w->cap_rec : 256;
         while (cap < w->nrec + more) cap *= 2;
-        if (!w_grow((void **)&w->tri, cap, sizeof *w->tri) || !w_grow((void **)&w->own, cap, sizeof *w->own) ||
-            !w_grow((void **)&w->out, cap, sizeof *w->out) || !w_grow((void **)&w->closed, cap, sizeof *w->closed) ||
-            !w_grow((void **)&w->stack, cap, sizeof *w->stack))
+        if (dd_grow(&w->tri, cap, sizeof *w->tri) || dd_grow(&w->own, cap, sizeof *w->own) ||
+            dd_grow(&w->out, cap, sizeof *w->out) || dd_grow(&w->closed, cap, sizeof *w->closed) ||
+            dd_grow(&w->stack, cap, sizeof *w->stack))
             return DD_ERR_NOMEM;
         w->cap_rec = cap;
     }

@@ -4,9 +4,8 @@
  * inlines them (as calls across files they cost a few per cent of a
  * deletion), and the narrow guess of guess.c.
  *
- * Owns: the dispatch of the wide guess (wrap_guess; its AVX2 passes are
- * in simd.c) and its scalar pass (w_least_ratio, which the narrow guess
- * shares), and the known-neighbour lists that the narrow guesses take
+ * Owns: the dispatch of the wide guess (wrap_guess; its passes, scalar,
+ * AVX2 and single precision, are geom/lift_pass.h's), and the known-neighbour lists that the narrow guesses take
  * their candidates from (w->adj, w->nadj: up to W_ADJ_CAP per local
  * number, none for a hub): w_open_link starts them from the link
  * (w_adj_link), w_make_cell adds the edges of each new finite cell
@@ -23,31 +22,29 @@
 
 #include "wrap/wrap_int.h"
 
-/* The scalar pass of the guesses: of the points ks[0..nk) (NULL: 0..nk),
- * the one beyond the facet of pencil N, T (rows from a) of least t/o, or
- * W_TIE when two such quotients are equal; *unsure: how many had unsure
- * orientation.  No data-dependent branch; O(nk).                         */
+/* The scalar pass of the guesses (dd_lift_least_ratio): of the points
+ * ks[0..nk) (NULL: 0..nk), the one beyond the facet of pencil N, T (rows
+ * from a) of least t/o, or W_TIE when two such quotients are equal;
+ * *unsure: how many had unsure orientation.  O(nk).                     */
 static inline uint32_t w_least_ratio(const struct dd_wrap *w, uint32_t a, const double N[4], const double T[4],
                                      const uint32_t *ks, uint32_t nk, uint32_t *unsure)
 {
-    double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]}, oerr = w->oerr;
-    double br = 1.0 / 0.0;
-    uint32_t best = W_NONE, uns = 0;
-    int tie = 0;
-    for (uint32_t i = 0; i < nk; i++) {
-        const uint32_t k = ks ? ks[i] : i;
-        double P[4], ok = w_row_o(L, k, A, N, P);
-        int pos = ok > oerr;
-        uns += !pos & (ok >= -oerr);
-        double r = pos ? w_t(P, T) / ok : 1.0 / 0.0;
-        tie |= pos & (r == br);
-        best = r < br ? k : best;
-        br = r < br ? r : br;
-    }
-    *unsure = uns;
-    return tie ? W_TIE : best;
+    return dd_lift_least_ratio(w->lift, a, N, T, w->oerr, ks, nk, unsure);
 }
+
+#ifdef W_AVX2
+/* The lean guess in single precision (w->f32, dd_lift_guess_f32): a
+ * point, W_BEHIND, or W_NONE (abstained: the guess is made in doubles).
+ * Test builds answer a wrong point on one guess in 16 (W_F32_SPOIL),
+ * which the proof must refute.                                          */
+static inline uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4])
+{
+    float *const *F = w_flift(w);                    /* and the scales */
+    const uint32_t p = dd_lift_guess_f32(F, w->n, a, N, T, w->f32_sc);
+    if (p < w->n && W_F32_SPOIL(w) && w->f32_kept % 16 == 15) return (p + 1 + w->f32_kept % 5) % w->n;
+    return p;
+}
+#endif
 
 /* The wide guess (docs §6 WIDE): the point beyond abc of least t/o, one
  * pass over the neighbours with no check, W_TIE on equal quotients;
@@ -74,9 +71,9 @@ static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[
             }
             w->f32_back++;
         }
-        return w_guess_lean_avx2(w->lift, w->n, a, N, T, w->oerr);
+        return dd_lift_guess_lean_avx2(w->lift, w->n, a, N, T, w->oerr);
     }
-    if (w->avx2) return w_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
+    if (w->avx2) return dd_lift_guess_avx2(w->lift, w->n, a, N, T, w->oerr, unsure);
 #endif
     uint32_t uns;
     const uint32_t best = w_least_ratio(w, a, N, T, NULL, w->n, &uns);

@@ -13,13 +13,13 @@
 #include "wrap/wrap_int.h"
 
 /* Whether every point k < end but x, y, z is surely behind the plane of
- * normal N through y (o < -oerr, rows from y, o as w_row_o: the scans'
+ * normal N through y (o < -oerr, rows from y, o as dd_lift_row_o: the scans'
  * test).  With end = n and facet (x, y, z): the facet is a facet of the
  * hull of the neighbours.  O(end), four points a vector with AVX2.      */
 int w_all_behind(const struct dd_wrap *w, uint32_t x, uint32_t y, uint32_t z, const double N[4], uint32_t end)
 {
 #ifdef W_AVX2
-    if (w->avx2) return w_all_behind_avx2(w->lift, end, x, y, z, N, w->oerr);
+    if (w->avx2) return dd_lift_all_behind_avx2(w->lift, end, x, y, z, N, w->oerr);
 #endif
     for (uint32_t k = 0; (k = w_next_to(w, y, N, k, end, 0)) < end; k++)
         if (k != x && k != y && k != z) return 0;
@@ -59,8 +59,8 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
     uint32_t best = W_NONE, z = W_NONE;
     double N[4];
 #ifdef W_AVX2
-    if (w->flift_ok) {                               /* step 1 guessed (w_inf_f32) */
-        uint32_t p = w_inf_f32(w_flift(w), w->n, a, b);
+    if (w->flift_ok) {                               /* step 1 guessed (dd_lift_inf_f32) */
+        uint32_t p = dd_lift_inf_f32(w_flift(w), w->n, a, b);
         if (p < w->n && W_F32_SPOIL(w)) p = (p + 1) % w->n;   /* tests: refused */
         if (p < w->n && p != a && p != b) {
             w_normal(w, b, a, p, N);

@@ -35,7 +35,7 @@ static dd_status w_reserve_fill(dd_del *d, struct dd_wrap *w, size_t made, size_
     if (s == DD_OK) s = dd_vec_reserve(&d->fill, room);
     if (s == DD_OK) s = dd_vec_reserve(&d->sew_out, 4 * room);
     if (s == DD_OK && 4 * room > w->cap_lcell) {
-        if (!w_grow((void **)&w->lcell, 4 * room, sizeof *w->lcell)) return DD_ERR_NOMEM;
+        if (dd_grow(&w->lcell, 4 * room, sizeof *w->lcell)) return DD_ERR_NOMEM;
         w->cap_lcell = (uint32_t)(4 * room);
     }
     return s;
@@ -47,7 +47,7 @@ dd_status w_keep_star(dd_del *d, struct dd_wrap *w)
 {
     const size_t words = DD_CELL_WORDS * d->star.n;
     if (words > w->cap_keep) {
-        if (!w_grow((void **)&w->keep, words, sizeof *w->keep)) return DD_ERR_NOMEM;
+        if (dd_grow(&w->keep, words, sizeof *w->keep)) return DD_ERR_NOMEM;
         w->cap_keep = words;
     }
     for (size_t k = 0; k < d->star.n; k++)
@@ -330,9 +330,9 @@ static int w_make_cell(struct w_wrapping *x, uint32_t r)
     if (x->check) {
         double *const *L = w->lift;
         const double X[4] = {L[0][p] - L[0][a], L[1][p] - L[1][a], L[2][p] - L[2][a], L[3][p] - L[3][a]};
-        w_cofactors(x->c->K, X, x->c->mb);
-        /* o as w_row_o has it; the other guesses' apexes are beyond already */
-        if (x->single && !(X[0] * x->c->N[0] + X[1] * x->c->N[1] + X[2] * x->c->N[2] > w->oerr)) return w_wrong(x, "");
+        dd_lift_vcofactors(x->c->K, X, x->c->mb);
+        /* o as dd_lift_row_o has it; the other guesses' apexes are beyond already */
+        if (x->single && !dd_lift_sure_pos(dd_lift_o(X, x->c->N), w->oerr)) return w_wrong(x, "");
     }
     if (!w_delaunay_across(x, w->own[r])) return w_wrong(x, "");
     w_glue(x, r, 3);

@@ -11,42 +11,19 @@
  * once per deletion (w_symbolic, w_conflicts_near).
  *
  * Invariant: every answer is the apex that the exact perturbed predicates
- * define; a sign is acted on only when a filter of lift.c certifies it,
+ * define; a sign is acted on only when a filter of geom/lift.h certifies
+ * it (the evaluations and passes of geom/lift_pass.h),
  * integer arithmetic makes it exact, or src/geom/ decides it.  The tests
  * that the wrap's filters leave to the predicates are counted in
  * w->nexact, for the budget (w_spent).
  */
 #include "wrap/wrap_int.h"
 
-/* Lexicographic ranks of the neighbours (w->lexr), made the first time
- * the perturbation is asked this deletion: index sort by dd_lex_cmp,
- * insertion while short, else bottom-up merges through w->tmp.
- * O(n log n) comparisons.                                               */
+/* Lexicographic ranks of the neighbours (w->lexr, dd_lex_ranks), made the
+ * first time the perturbation is asked this deletion.  O(n log n).     */
 static void w_lex_ranks(struct dd_wrap *w)
 {
-    const uint32_t n = w->n;
-    const double *const *pt = w->pt;
-    uint32_t *a = w->tmp, *b = w->lexr;
-    for (uint32_t k = 0; k < n; k++) a[k] = k;
-    for (uint32_t i = 1; i < n && n <= 32; i++) {
-        uint32_t v = a[i], j = i;
-        for (; j > 0 && dd_lex_cmp(pt[a[j - 1]], pt[v]) > 0; j--) a[j] = a[j - 1];
-        a[j] = v;
-    }
-    for (uint32_t width = 1; n > 32 && width < n; width *= 2) {
-        for (uint32_t lo = 0; lo < n; lo += 2 * width) {
-            uint32_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
-            uint32_t i = lo, j = mid, k = lo;
-            while (i < mid && j < hi) b[k++] = dd_lex_cmp(pt[a[j]], pt[a[i]]) < 0 ? a[j++] : a[i++];
-            while (i < mid) b[k++] = a[i++];
-            while (j < hi) b[k++] = a[j++];
-        }
-        uint32_t *x = a;
-        a = b;
-        b = x;
-    }
-    if (a == w->lexr) memcpy(w->tmp, a, n * sizeof *a);
-    for (uint32_t k = 0; k < n; k++) w->lexr[w->tmp[k]] = k;
+    dd_lex_ranks(w->pt, w->n, w->tmp, w->lexr);
     w->lex_ok = 1;
 }
 
@@ -124,7 +101,7 @@ static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t
 
 /* The exact scan (docs §4 SCAN_EXACT) of facet (a, b, c), minors m: one
  * pass over ks[0..nk) (NULL: 0..nk) keeping the best point beyond abc so
- * far, each orientation and conflict filtered (lift.c) and else decided
+ * far, each orientation and conflict filtered (geom/lift.h) and else decided
  * exactly.  It starts from `best` (W_NONE: none yet); with `unsure_only`
  * it takes the points surely beyond as compared already (best is the
  * guess's minimum among them) and decides only those of unsure
@@ -138,21 +115,21 @@ uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, ui
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double N[4], K[4] = {0, 0, 0, 0}, P[4];
-    w_normal_of(m, N);
+    dd_lift_normal_of(m, N);
     const double oerr = w->oerr;
     uint32_t cell[4] = {a, b, c, best};
     if (best != W_NONE) {
-        w_row_o(L, best, A, N, P);
-        w_cofactors(K, P, m);
+        dd_lift_row_o(L, best, A, N, P);
+        dd_lift_vcofactors(K, P, m);
     }
     int zero = 0;
     const int skip = unsure_only && !ks;            /* to the unsure points, four at a time */
     for (uint32_t i = skip ? w_next(w, a, N, 0, 1) : 0; i < nk; i = skip ? w_next(w, a, N, i + 1, 1) : i + 1) {
         const uint32_t k = ks ? ks[i] : i;
         if (k == a || k == b || k == c) continue;
-        double o = w_row_o(L, k, A, N, P);
-        if (!(o > oerr)) {
-            if (o < -oerr) continue;
+        double o = dd_lift_row_o(L, k, A, N, P);
+        if (!dd_lift_sure_pos(o, oerr)) {
+            if (dd_lift_sure_neg(o, oerr)) continue;
             w->nexact += !w->oexact;                /* integer orientations: o is exact */
             int or = w_sign_o(w, pr, o, a, b, c, k);
             zero |= or == 0;
@@ -162,7 +139,7 @@ uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, ui
         }
         if (best != W_NONE && !w_conflicts(w, pr, cell, K, k)) continue;
         best = cell[3] = k;
-        w_cofactors(K, P, m);
+        dd_lift_vcofactors(K, P, m);
     }
     /* No point beyond: for a hull vertex, abc becomes a hull facet, the
      * cell (a, b, c, infinite), if the points in its plane allow.        */
@@ -175,8 +152,8 @@ uint32_t w_scan_exact(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, ui
 static inline int w_orient_counted(struct dd_wrap *w, dd_pred *pr, const double A[4], const double N[4], uint32_t a,
                                    uint32_t b, uint32_t c, uint32_t k)
 {
-    double P[4], o = w_row_o(w->lift, k, A, N, P);
-    w->nexact += !w->oexact && !(o > w->oerr || o < -w->oerr);
+    double P[4], o = dd_lift_row_o(w->lift, k, A, N, P);
+    w->nexact += !w->oexact && dd_lift_unsure(o, w->oerr);
     return w_sign_o(w, pr, o, a, b, c, k);
 }
 
@@ -243,7 +220,6 @@ static uint32_t wrap_scan_cosph(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint
 static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
 {
     double *const *L = w->lift;
-    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double m[6], N[4], T[4], K[4];
     w_pencil(w, a, b, c, m, N, T);
     if (w->cosph) return wrap_scan_cosph(w, pr, a, b, c, N);   /* every t/o ties */
@@ -252,33 +228,16 @@ static uint32_t wrap_scan(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b
     /* a, b, c need no test of their own: o(a) is exactly 0 and o(b),
      * o(c) are 0 up to less than oerr (their exact value is 0), so each
      * counts once among the unsure orientations, never as a candidate. */
-    double *o = w->o;
-    int unsure = 0;
-    double lo = 1.0 / 0.0;
-    uint32_t best = W_NONE;
-    for (uint32_t k = 0; k < n; k++) {
-        double P[4], ok = w_row_o(L, k, A, N, P), tk = w_t(P, T);
-        int pos = ok > oerr;
-        unsure += !pos & (ok >= -oerr);
-        o[k] = pos ? ok : -1.0;                 /* > oerr: a candidate */
-        double lam = pos ? tk / ok : 1.0 / 0.0;
-        int better = lam < lo;
-        lo = better ? lam : lo;
-        best = better ? k : best;
-    }
+    double *o = w->o;                           /* > oerr: a candidate */
+    int unsure;
+    const uint32_t best = dd_lift_least_beyond(L, n, a, N, T, oerr, o, &unsure);
     if (unsure != 3 || best == W_NONE) return w_scan_exact(w, pr, a, b, c, m, W_NONE, 0, NULL, w->n);
     double X[4];
-    w_row_o(L, best, A, N, X);
-    w_cofactors(K, X, m);
+    const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
+    dd_lift_row_o(L, best, A, N, X);
+    dd_lift_vcofactors(K, X, m);
     o[best] = -1.0;                             /* not tested against itself */
-    int bad = 0;
-    for (uint32_t k = 0; k < n; k++) {
-        double P[4];
-        w_row_o(L, k, A, N, P);
-        double det = w_t(P, K);
-        bad |= (o[k] > oerr) & !(det > ierr);
-    }
-    if (!bad) return best;
+    if (dd_lift_all_outside(L, n, a, N, K, o, oerr, ierr)) return best;
     return w->shifted || n < DD_SHIFT_FROM ? w_scan_exact(w, pr, a, b, c, m, W_NONE, 0, NULL, w->n) : W_SHIFT;
 }
 
@@ -320,13 +279,12 @@ int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
         for (uint32_t k = 0; k < n && e == W_NONE; k++)
             if (k != a && k != b && k != c && w_orient(w, pr, a, b, c, N, k) != 0) e = k;
         if (e == W_NONE) return 0;
-        w_row_o(L, e, A, N, P);
-        w_cofactors(K, P, m);
+        dd_lift_row_o(L, e, A, N, P);
+        dd_lift_vcofactors(K, P, m);
         for (uint32_t k = 0; k < n; k++) {
             if (k == a || k == b || k == c || k == e) continue;
-            w_row_o(L, k, A, N, P);
-            double det = w_t(P, K);
-            if (det > w->ierr || det < -w->ierr) return 0;
+            dd_lift_row_o(L, k, A, N, P);
+            if (dd_lift_sure(dd_lift_dot4(K, P), w->ierr) != 0) return 0;
             if (w->kexact ? !w->exact && dd_lift_sign_kp(K, P) != 0 : dd_insphere(pr, pt[a], pt[b], pt[c], pt[e], pt[k]) != 0)
                 return 0;
         }

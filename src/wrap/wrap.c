@@ -27,40 +27,31 @@ void dd_wrap_free(struct dd_wrap *w)
     free(w);
 }
 
-/* *p reallocated to n elements of `size` bytes: 1, or 0 (*p as it was)
- * when out of memory.                                                   */
-int w_grow(void **p, size_t n, size_t size)
-{
-    void *q = realloc(*p, n * size);
-    if (!q) return 0;
-    *p = q;
-    return 1;
-}
-
-/* Room for n neighbours in the per-neighbour arrays (doubling), and
- * local numbers for vertex ids below nv.                                */
+/* Room for n neighbours in the per-neighbour arrays (doubling, by
+ * mesh.h's dd_grow), and local numbers for vertex ids below nv.  The
+ * capacity stays a multiple of eight: the rows' padding (lift_pass.h).  */
 static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
 {
     if (n > w->cap_n) {
         uint32_t cap = w->cap_n ? w->cap_n : 64;
         while (cap < n) cap *= 2;
-        if (!w_grow((void **)&w->pt, cap, sizeof *w->pt) || !w_grow((void **)&w->o, cap, sizeof *w->o) ||
-            !w_grow((void **)&w->tmp, cap, sizeof *w->tmp) || !w_grow((void **)&w->lexr, cap, sizeof *w->lexr))
+        if (dd_grow(&w->pt, cap, sizeof *w->pt) || dd_grow(&w->o, cap, sizeof *w->o) ||
+            dd_grow(&w->tmp, cap, sizeof *w->tmp) || dd_grow(&w->lexr, cap, sizeof *w->lexr))
             return DD_ERR_NOMEM;
         for (int i = 0; i < 4; i++)
-            if (!w_grow((void **)&w->lift[i], cap, sizeof *w->lift[i]) ||
-                !w_grow((void **)&w->flift[i], cap, sizeof *w->flift[i]))
+            if (dd_grow(&w->lift[i], cap, sizeof *w->lift[i]) ||
+                dd_grow(&w->flift[i], cap, sizeof *w->flift[i]))
                 return DD_ERR_NOMEM;
-        if (!w_grow((void **)&w->adj, (size_t)cap * W_ADJ_CAP, sizeof *w->adj) ||
-            !w_grow((void **)&w->nadj, cap, sizeof *w->nadj) || !w_grow((void **)&w->seen, cap, sizeof *w->seen) ||
-            !w_grow((void **)&w->cand, cap, sizeof *w->cand))
+        if (dd_grow(&w->adj, (size_t)cap * W_ADJ_CAP, sizeof *w->adj) ||
+            dd_grow(&w->nadj, cap, sizeof *w->nadj) || dd_grow(&w->seen, cap, sizeof *w->seen) ||
+            dd_grow(&w->cand, cap, sizeof *w->cand))
             return DD_ERR_NOMEM;
         memset(w->seen, 0, cap * sizeof *w->seen);
         w->stamp = 0;
         w->cap_n = cap;
     }
     if (nv > w->cap_loc) {
-        if (!w_grow((void **)&w->loc, nv, sizeof *w->loc)) return DD_ERR_NOMEM;
+        if (dd_grow(&w->loc, nv, sizeof *w->loc)) return DD_ERR_NOMEM;
         w->cap_loc = nv;
     }
     return DD_OK;
@@ -146,8 +137,8 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     w->narrow = DD_GUESS_WIDE;
     w->avx2 = w->has_avx2 && !W_TESTCTL(t, DD_TEST_SCALAR);
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
-    /* the float lifts' scales stay finite (w_lift_f32) */
-    w->flift_ok = w->lean && w->has_fma && w->m >= 1e-50 && w->m <= 1e50 && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
+    /* the float lifts' scales stay finite (dd_lift_f32_ok) */
+    w->flift_ok = w->lean && w->has_fma && dd_lift_f32_ok(w->m) && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
 #ifdef DD_TEST_BUILD
     w->narrower = W_TESTCTL(t, DD_TEST_NARROWER);
     w->f32_spoil = W_TESTCTL(t, DD_TEST_SPOIL_SINGLE);

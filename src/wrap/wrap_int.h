@@ -6,47 +6,46 @@
  * across deletions (no allocation once warm); the local numbering (q's
  * neighbours are 0 .. n-1 in d->order's order, the infinite vertex is n);
  * the sentinels and thresholds; and, static inline, what the hot loops of
- * several files share: the pencil of a facet (§2), the filtered
- * orientation and conflict tests, the passes to the points near a plane,
- * the facet table's probes.
+ * several files share: the frame's pencil and tests on local numbers
+ * (their arithmetic is geom/lift_pass.h's), the choice between the
+ * scalar and AVX2 passes, the facet table's probes.
  *
  * Invariant: every sign the wrap acts on is certified, by a filter bound
- * (lift.c), by exact integer arithmetic, or by the exact predicates of
- * src/geom/; what only ranks candidates may round (§8).  o is evaluated by
- * one sequence of operations everywhere (w_row_o, lane by lane in
- * simd.c), so that one bound covers every pass.
+ * of geom/lift.h (compared in geom/lift_pass.h), by exact integer
+ * arithmetic, or by the exact predicates of src/geom/; what only ranks
+ * candidates may round (§8).  The wrap evaluates nothing itself: o, t
+ * and K . P come from geom/lift_pass.h, one sequence of operations on
+ * every path, so that one bound covers every pass.
  *
  * The files: wrap.c the driver (dd_wrap_fill); run.c the wrap (w_run) and
  * the link; guess.h the guesses that w_run inlines, guess.c the narrow
  * guess; scan.c the certified scans and the perturbation on local
- * numbers; hull.c the hull step; lift.c the lifts and the bounds; ftab.c
- * the facet table and its keys; simd.c the AVX2 passes.
+ * numbers; hull.c the hull step; lift.c the frame's rows and modes;
+ * ftab.c the facet table and its keys.
  */
 #ifndef DD_WRAP_INT_H
 #define DD_WRAP_INT_H
 
 #include "wrap/wrap.h"
 #include "delete/delete.h"
-#include "geom/lift.h"
+#include "geom/lift_pass.h"
 
 #include <math.h>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 #include <stdlib.h>
 #include <string.h>
 
-/* The AVX2 passes (simd.c), taken when the CPU has AVX2 (w->avx2).      */
-#if defined(__GNUC__) && defined(__x86_64__)
+/* The AVX2 passes (geom/lift_simd.c, lift_f32.c), taken when the CPU
+ * has AVX2 (w->avx2).                                                    */
+#ifdef DD_LIFT_AVX2
 #define W_AVX2 1
 #endif
 
 /* Answers of the scans and guesses that are not a local number.         */
-#define W_NONE UINT32_MAX         /* no point beyond the facet                */
+#define W_NONE DD_LIFT_NONE       /* no point beyond the facet                */
 #define W_BAIL (UINT32_MAX - 1)   /* a flat hull case the checks do not settle */
 #define W_SHIFT (UINT32_MAX - 2)  /* try the shifted lifts, then scan again  */
-#define W_TIE (UINT32_MAX - 3)    /* a guess between cospherical points      */
-#define W_BEHIND (UINT32_MAX - 4) /* single precision: every point behind     */
+#define W_TIE DD_LIFT_TIE         /* a guess between cospherical points      */
+#define W_BEHIND DD_LIFT_BEHIND   /* single precision: every point behind     */
 
 /* The exact-test budget (docs §10): from W_EXACT_FROM neighbours on, the
  * wrap declines once this deletion's exact tests (w_spent) pass 2n, and
@@ -114,7 +113,7 @@ struct dd_wrap {
     int kexact;                   /* the cofactors K are exact integers
                                      (dd_lift_sign_kp)                          */
     int avx2, has_avx2;           /* wrap_guess uses AVX2; the CPU has it  */
-    int has_fma;                  /* the CPU has FMA (w_guess_f32_avx2)     */
+    int has_fma;                  /* the CPU has FMA (dd_lift_guess_f32)    */
     int lean;                     /* the wide guess is the lean one       */
     int flift_ok;                 /* the float lifts may be used
                                      (w_flift): the lean guess and the hull
@@ -123,8 +122,7 @@ struct dd_wrap {
                                      after a refuted guess                */
     float *flift[4];              /* the lifts in units of m (m^2 for the
                                      lift), rounded to floats             */
-    double f32_sn, f32_st, f32_st3;   /* the scales of N, of T (xyz) and
-                                     of T (lift) to those units           */
+    dd_lift_f32_scale f32_sc;     /* the scales of N and T to those units */
     uint32_t f32_kept, f32_back;  /* single-precision guesses answered,
                                      and abstained (made in doubles)      */
     uint32_t inf_kept, inf_back;  /* hull steps of w_inf_f32 proved, and
@@ -192,10 +190,6 @@ struct dd_wrap {
 
 /* ---- called across files ------------------------------------------------ */
 
-/* wrap.c */
-/* realloc *p to n elements of `size` bytes; 0 (and *p as it was) when out of memory. */
-int w_grow(void **p, size_t n, size_t size);
-
 /* ftab.c: the facet table */
 /* Makes the code words of local numbers below count (< DD_WRAP_CODE_LEN), once. */
 dd_status w_code_reserve(struct dd_wrap *w, uint32_t count);
@@ -204,33 +198,11 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect);
 /* Room for `more` more facet records, in the arrays and in the table. */
 dd_status w_grow_recs(struct dd_wrap *w, size_t more);
 
-/* lift.c: lifts and filter bounds */
+/* lift.c: the frame */
 /* Lifts the neighbours relative to q and sets the filters' bounds and integer modes. */
 void w_lift(struct dd_wrap *w, const double *q);
-/* Makes the float lifts and their scales (w_flift). */
-void w_lift_f32(struct dd_wrap *w);
 /* Switches to the shifted lifts when their bound is tighter (1), else keeps the lifts (0). */
 int w_shift(struct dd_wrap *w);
-
-#ifdef W_AVX2
-/* simd.c: the AVX2 passes (called only when w->avx2) */
-/* The wide guess over the n lifts: least t/o beyond the facet, W_TIE, W_NONE; *unsure as wrap_guess. */
-uint32_t w_guess_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4], double oerr,
-                      int *unsure);
-/* The wide guess without the count of unsure orientations (w->lean). */
-uint32_t w_guess_lean_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], const double T[4],
-                           double oerr);
-/* The lean guess in single precision: a point, W_BEHIND, or W_NONE (abstains). */
-uint32_t w_guess_f32(struct dd_wrap *w, uint32_t a, const double N[4], const double T[4]);
-/* w_next_to with AVX2: the first k >= from, k < n, unsure (or not surely behind); n if none. */
-uint32_t w_next_avx2(double *const *L, uint32_t n, uint32_t a, const double N[4], double oerr, uint32_t from,
-                     int unsure);
-/* w_all_behind with AVX2. */
-int w_all_behind_avx2(double *const *L, uint32_t end, uint32_t x, uint32_t y, uint32_t z, const double N[4],
-                      double oerr);
-/* The hull step's point around edge ab in single precision, or W_NONE (a guess). */
-uint32_t w_inf_f32(float *const *F, uint32_t n, uint32_t a, uint32_t b);
-#endif
 
 /* scan.c: the certified scans */
 /* The apex of finite open facet (a, b, c) by the certified scans; the infinite vertex on the hull. */
@@ -261,134 +233,37 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub);
 dd_status w_run(dd_del *d, struct dd_wrap *w, int guess, uint32_t start, int *outcome);
 
 /* ---- the pencil of a facet (docs §2) -------------------------------------
- * With the rows B = L[b] - L[a], C = L[c] - L[a] and P = L[p] - L[a] of
- * the lifts (lift.c), w(X, P) = det(B, C, X, P) = K(X) . P is the
+ * geom/lift_pass.h: with the rows B = L[b] - L[a], C = L[c] - L[a] and
+ * P = L[p] - L[a] of the lifts, K(X) . P = det(B, C, X, P) is the
  * in-sphere determinant of a, b, c, x, p (negative: p inside the sphere
- * of the positively oriented a, b, c, x), K(X) its cofactors along the
- * last row, made from the six 2x2 minors of B and C.  N = (m12, -m02,
- * m01, 0) gives o(P) = N . P = orient3d(a, b, c, p), T = K(N) gives
- * t(P) = T . P, and w(X, P) |N|^2 = o(X) t(P) - t(X) o(P): the apex of
- * the fill cell beyond abc is the point beyond it of least t/o.          */
+ * of the positively oriented a, b, c, x); N gives o(P) = N . P =
+ * orient3d(a, b, c, p), T = K(N) gives t(P) = T . P, and w(X, P) |N|^2 =
+ * o(X) t(P) - t(X) o(P): the apex of the fill cell beyond abc is the
+ * point beyond it of least t/o.                                          */
 
-#ifdef __SSE2__
-/* w_cofactors of X = (x01, x23), in registers: the same products, sums
- * and signs, bit for bit, two at a time.                                 */
-static inline void w_cofactors_v(double K[4], __m128d x01, __m128d x23, const double m[6])
-{
-    enum { M01, M02, M03, M12, M13, M23 };
-    const __m128d neg0 = _mm_set_pd(0.0, -0.0);
-    __m128d a = _mm_mul_pd(_mm_shuffle_pd(x01, x01, 1), _mm_set1_pd(m[M23]));
-    __m128d b = _mm_mul_pd(_mm_unpacklo_pd(x23, x23), _mm_setr_pd(m[M13], m[M03]));
-    __m128d c = _mm_mul_pd(_mm_unpackhi_pd(x23, x23), _mm_setr_pd(m[M12], m[M02]));
-    _mm_storeu_pd(K, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
-    a = _mm_mul_pd(_mm_unpacklo_pd(x01, x01), _mm_setr_pd(m[M13], m[M12]));
-    b = _mm_mul_pd(_mm_unpackhi_pd(x01, x01), _mm_setr_pd(m[M03], m[M02]));
-    c = _mm_mul_pd(_mm_shuffle_pd(x23, x23, 1), _mm_set1_pd(m[M01]));
-    _mm_storeu_pd(K + 2, _mm_xor_pd(_mm_add_pd(_mm_sub_pd(a, b), c), neg0));
-}
-#endif
-
-/* K: the cofactors of X along the last row of det(B, C, X, P), from the
- * minors m of B and C (w_minors).                                        */
-static inline void w_cofactors(double K[4], const double X[4], const double m[6])
-{
-#ifdef __SSE2__
-    w_cofactors_v(K, _mm_loadu_pd(X), _mm_loadu_pd(X + 2), m);
-#else
-    dd_lift_cofactors(K, X, m);
-#endif
-}
-
-/* The six 2x2 minors of rows B and C, in w_cofactors' order.           */
-static inline void w_minors(double m[6], const double B[4], const double C[4])
-{
-#ifdef __SSE2__
-    /* two at a time, as w_cofactors: the same products and differences */
-    const __m128d b01 = _mm_loadu_pd(B), b23 = _mm_loadu_pd(B + 2), c01 = _mm_loadu_pd(C), c23 = _mm_loadu_pd(C + 2);
-    const __m128d b12 = _mm_shuffle_pd(b01, b23, 1), c12 = _mm_shuffle_pd(c01, c23, 1);
-    _mm_storeu_pd(m, _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(b01, b01), c12),
-                                _mm_mul_pd(b12, _mm_unpacklo_pd(c01, c01))));
-    _mm_storeu_pd(m + 2, _mm_sub_pd(_mm_mul_pd(b01, _mm_shuffle_pd(c23, c23, 1)),
-                                    _mm_mul_pd(_mm_shuffle_pd(b23, b23, 1), c01)));
-    _mm_storeu_pd(m + 4, _mm_sub_pd(_mm_mul_pd(b12, _mm_unpackhi_pd(c23, c23)),
-                                    _mm_mul_pd(_mm_unpackhi_pd(b23, b23), c12)));
-#else
-    dd_lift_minors(m, B, C);
-#endif
-}
-
-/* The normal N of the minors' plane: o(P) = N . P is orient3d.        */
-static inline void w_normal_of(const double m[6], double N[4])
-{
-    N[0] = m[3]; N[1] = -m[1]; N[2] = m[0]; N[3] = 0;
-}
-
-/* Point k's row P = L[k] - A (A: the lifts of the facet's first corner)
- * and its orientation o(P) = N . P: the one evaluation of o that every
- * scan uses, so that the orientation filter's bound (lift.c) covers each
- * (the AVX2 passes repeat these operations lane by lane).               */
-static inline double w_row_o(double *const *L, uint32_t k, const double A[4], const double N[4], double P[4])
-{
-    for (int i = 0; i < 4; i++) P[i] = L[i][k] - A[i];
-    return P[0] * N[0] + P[1] * N[1] + P[2] * N[2];
-}
-
-/* t(P) = T . P; with T = K(X), the in-sphere determinant w(X, P).      */
-static inline double w_t(const double P[4], const double T[4])
-{
-    return P[0] * T[0] + P[1] * T[1] + P[2] * T[2] + P[3] * T[3];
-}
-
-/* Facet (a, b, c)'s pencil: minors m of B, C, the normal N (o(P) = N . P)
- * and T (t(P) = T . P), with rows taken from a.                         */
+/* Facet (a, b, c)'s pencil in the wrap's lifts (dd_lift_pencil). */
 static inline void w_pencil(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double m[6],
                             double N[4], double T[4])
 {
-    double *const *L = w->lift;
-    const double ax = L[0][a], ay = L[1][a], az = L[2][a], aw = L[3][a];
-    double B[4] = {L[0][b] - ax, L[1][b] - ay, L[2][b] - az, L[3][b] - aw};
-    double C[4] = {L[0][c] - ax, L[1][c] - ay, L[2][c] - az, L[3][c] - aw};
-    w_minors(m, B, C);
-#ifdef __SSE2__
-    /* N made in registers and handed over in them: written in scalars
-     * and read back in pairs, it would wait for the stores to commit (no
-     * store forwarding from two writes to one read).                     */
-    const __m128d m01 = _mm_loadu_pd(m), m23 = _mm_loadu_pd(m + 2);
-    const __m128d n01 = _mm_xor_pd(_mm_shuffle_pd(m23, m01, 3), _mm_set_pd(-0.0, 0.0));   /* (m3, -m1) */
-    const __m128d n23 = _mm_unpacklo_pd(m01, _mm_setzero_pd());                             /* (m0, 0)   */
-    _mm_storeu_pd(N, n01);
-    _mm_storeu_pd(N + 2, n23);
-    w_cofactors_v(T, n01, n23, m);
-#else
-    w_normal_of(m, N);
-    w_cofactors(T, N, m);
-#endif
+    dd_lift_pencil(w->lift, a, b, c, m, N, T);
 }
 
-/* The normal N of plane (a, b, c), rows taken from a, as w_pencil has it
- * (the lift column left out: N does not use it).                       */
+/* The normal N of plane (a, b, c), rows from a (dd_lift_normal). */
 static inline void w_normal(const struct dd_wrap *w, uint32_t a, uint32_t b, uint32_t c, double N[4])
 {
-    double *const *L = w->lift;
-    const double B[3] = {L[0][b] - L[0][a], L[1][b] - L[1][a], L[2][b] - L[2][a]};
-    const double C[3] = {L[0][c] - L[0][a], L[1][c] - L[1][a], L[2][c] - L[2][a]};
-    /* w_minors' m[3], m[1], m[0] (w_normal_of), alone: the others unused */
-    N[0] = B[1] * C[2] - B[2] * C[1];
-    N[1] = -(B[0] * C[2] - B[2] * C[0]);
-    N[2] = B[0] * C[1] - B[1] * C[0];
-    N[3] = 0;
+    dd_lift_normal(w->lift, a, b, c, N);
 }
 
 /* ---- certified signs ---------------------------------------------------- */
 
-/* The sign of orient3d(a, b, c, k) from its evaluation o = w_row_o: the
- * filter's answer, else 0 with integer orientations (o is exact), else
- * the exact predicate.                                                    */
+/* The sign of orient3d(a, b, c, k) from its evaluation o = dd_lift_row_o:
+ * the filter's answer, else 0 with integer orientations (o is exact),
+ * else the exact predicate.                                              */
 static inline int w_sign_o(const struct dd_wrap *w, dd_pred *pr, double o, uint32_t a, uint32_t b, uint32_t c,
                            uint32_t k)
 {
-    if (o > w->oerr) return 1;
-    if (o < -w->oerr) return -1;
+    const int s = dd_lift_sure(o, w->oerr);
+    if (s) return s;
     return w->oexact ? 0 : dd_orient3d(pr, w->pt[a], w->pt[b], w->pt[c], w->pt[k]);
 }
 
@@ -399,43 +274,40 @@ static inline int w_orient(const struct dd_wrap *w, dd_pred *pr, uint32_t a, uin
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
     double P[4];
-    return w_sign_o(w, pr, w_row_o(L, k, A, N, P), a, b, c, k);
+    return w_sign_o(w, pr, dd_lift_row_o(L, k, A, N, P), a, b, c, k);
 }
 
 /* Whether point y is in conflict with the positively oriented fill cell
  * lv = (a, b, c, p), K being the cofactors of L[p] - L[a] with abc's
- * minors: the filtered determinant (lift.c's bound), else, out of line,
- * the exact perturbed test (w_conflicts_near).                          */
+ * minors: the filtered determinant (geom/lift.h's bound), else, out of
+ * line, the exact perturbed test (w_conflicts_near).                    */
 static inline int w_conflicts(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4], uint32_t y)
 {
     double *const *L = w->lift;
     const uint32_t a = lv[0];
     const double P[4] = {L[0][y] - L[0][a], L[1][y] - L[1][a], L[2][y] - L[2][a], L[3][y] - L[3][a]};
-    double det = w_t(P, K);
-    if (det > w->ierr) return 0;
-    if (det < -w->ierr) return 1;
+    const double det = dd_lift_dot4(K, P);
+    if (dd_lift_sure_pos(det, w->ierr)) return 0;
+    if (dd_lift_sure_neg(det, w->ierr)) return 1;
     return w_conflicts_near(w, pr, lv, K, P, y);
 }
 
 /* The first k, from <= k < end, whose o to the plane of normal N through
- * a (w_row_o) is unsure (|o| <= oerr) with `unsure`, else not surely
- * behind (o >= -oerr); end if none.  The passes over points nearly all
- * surely on one side look only at those: w_all_behind, the Jarvis pass
- * of w_scan_inf, the exact pass over a guess's unsure points.  Cost
- * O(end - from), four points a vector with AVX2.                        */
+ * a is unsure (|o| <= oerr) with `unsure`, else not surely behind (o >=
+ * -oerr); end if none (dd_lift_next, dd_lift_next_avx2).  The passes
+ * over points nearly all surely on one side look only at those:
+ * w_all_behind, the Jarvis pass of w_scan_inf, the exact pass over a
+ * guess's unsure points.  Cost O(end - from), four points a vector with
+ * AVX2.                                                                  */
 static inline uint32_t w_next_to(const struct dd_wrap *w, uint32_t a, const double N[4], uint32_t from,
                                  uint32_t end, int unsure)
 {
 #ifdef W_AVX2
-    if (w->avx2) return w_next_avx2(w->lift, end, a, N, w->oerr, from, unsure);   /* lanes past end: end */
+    if (w->avx2) return dd_lift_next_avx2(w->lift, end, a, N, w->oerr, from, unsure);   /* lanes past end: end */
 #endif
     double *const *L = w->lift;
     const double A[4] = {L[0][a], L[1][a], L[2][a], L[3][a]};
-    for (uint32_t k = from; k < end; k++) {
-        double P[4], o = w_row_o(L, k, A, N, P);
-        if (unsure ? !(o > w->oerr) && !(o < -w->oerr) : !(o < -w->oerr)) return k;
-    }
-    return end;
+    return dd_lift_next(L, A, N, w->oerr, from, end, unsure);
 }
 
 /* w_next_to up to n.                                                    */
@@ -472,11 +344,12 @@ static inline uint32_t *w_fslot_of(struct dd_wrap *w, uint64_t key, int *found)
     return &e->rec;
 }
 
-/* Room for `more` more facet records, in the arrays and in the table;
- * inline but for the growth, as w_run asks once a cell.                  */
+/* Room for `more` more facet records, in the arrays and in the table
+ * (at most a quarter full, ftab.c); inline but for the growth, as w_run
+ * asks once a cell.                                                      */
 static inline dd_status w_reserve_recs(struct dd_wrap *w, size_t more)
 {
-    return w->nrec + more <= w->cap_rec && 2 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
+    return w->nrec + more <= w->cap_rec && 4 * (w->nrec + more) <= w->fs_mask + 1 ? DD_OK : w_grow_recs(w, more);
 }
 
 /* Opens triangle (a, b, c), whose other side is fill facet `own` (W_NONE:
@@ -492,12 +365,13 @@ static inline void w_open(struct dd_wrap *w, uint32_t *val, uint32_t a, uint32_t
 
 /* ---- the float lifts, the budget ---------------------------------------- */
 
-/* The float lifts, made at their first use in a deletion: links where
- * the narrow guesses hold and no hull step is taken never pay for them. */
+/* The float lifts (dd_lift_f32_rows), made at their first use in a
+ * deletion: links where the narrow guesses hold and no hull step is
+ * taken never pay for them.                                              */
 static inline float *const *w_flift(struct dd_wrap *w)
 {
     if (!w->f32_ready) {
-        w_lift_f32(w);
+        w->f32_sc = dd_lift_f32_rows(w->lift, w->n, w->m, w->flift);
         w->f32_ready = 1;
     }
     return w->flift;
