@@ -6,7 +6,8 @@
 #   make bench        the full benchmark, tables and plots into results/
 #   make bench-quick  a short benchmark (about 2 minutes)
 #   make plots        redraw the plots from results/*.csv
-#   make install      PREFIX=/usr/local: library, header and CLI
+#   make install      PREFIX=/usr/local: library, header, CLI, Python package
+#   make python       the Python package in place: python/dtdel
 #   make clean
 #
 # Three builds share the sources: build/ (release, -O2), build/asan/
@@ -119,7 +120,7 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h
 # Both suites run; the runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
-	@$(MAKE) --no-print-directory $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
+	@$(MAKE) --no-print-directory python $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
 	@sh tests/run.sh $(B) $(A)
 
 # ---- bench --------------------------------------------------------------------
@@ -134,14 +135,42 @@ bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
 plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
-install: all
+install: all install-python
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
 	install -m 644 src/dtdel.h $(DESTDIR)$(PREFIX)/include/dtdel.h
 
+# ---- shared library and Python bindings (issue 42, part 4) ------------------
+# build/libdtdel.so from position-independent objects in build/pic/;
+# `make python` copies it into python/dtdel/, the package ctypes loads it
+# from (PYTHONPATH=python /usr/bin/python3 -c 'import dtdel').  `make
+# install` also puts the package into PYDIR, Debian python3's site dir
+# under PREFIX, and records the installed library's path in it.
+P = build/pic
+LIB_OBJ_P = $(LIB_SRC:%.c=$(P)/obj/%.o)
+PYVER := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
+PYDIR ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
+PY_SRC = $(wildcard python/dtdel/*.py)
+.PHONY: python install-python
+$(P)/obj/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) -fPIC -c $< -o $@
+$(B)/libdtdel.so: $(LIB_OBJ_P)
+	$(CC) -shared -Wl,-soname,libdtdel.so.0 -Wl,--no-undefined $^ -o $@ -lgmp -lm
+python/dtdel/libdtdel.so: $(B)/libdtdel.so
+	cp $< $@
+python: $(B)/libdtdel.so python/dtdel/libdtdel.so
+install-python: $(B)/libdtdel.so
+	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PYDIR)/dtdel
+	install -m 755 $(B)/libdtdel.so $(DESTDIR)$(PREFIX)/lib/libdtdel.so
+	install -m 644 $(PY_SRC) $(DESTDIR)$(PYDIR)/dtdel/
+	rm -f $(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+	echo 'LIBRARY = "$(PREFIX)/lib/libdtdel.so"' >$(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+# ---- end of the Python block ------------------------------------------------
+
 clean:
-	rm -rf build
+	rm -rf build python/dtdel/libdtdel.so python/dtdel/__pycache__
 
 # ---- soak: a million deletions checked against CGAL (not in make test) ------
 # SOAK_SCALE=0.01 make soak runs in about a minute; the workers (SOAK_JOBS,

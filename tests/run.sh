@@ -32,6 +32,8 @@ done
 run "release layers" sh scripts/layers.sh "$REL/obj"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
+# the Python bindings (make python: python/dtdel loads the release libdtdel.so)
+run "release python" env PYTHONPATH=python /usr/bin/python3 tests/test_python.py "$REL/dtdel"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     run "asan $(basename "$t")" "$t" small
