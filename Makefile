@@ -4,7 +4,7 @@
 #   make deps         install the Debian packages (or say what to install)
 #   make test         release and sanitizer (ASan+UBSan) test suites
 #   make bench        the full benchmark, tables and plots into results/
-#   make bench-quick  a short benchmark (about 2 minutes)
+#   make bench-quick  a short benchmark (about 2 minutes) into results/quick/
 #   make plots        redraw the plots from results/*.csv
 #   make install      PREFIX=/usr/local: library, header, CLI, Python package
 #   make python       the Python package in place: python/dtdel
@@ -59,60 +59,67 @@ DATA_OBJ_K = $(DATA_SRC:%.c=$(K)/obj/%.o)
 TESTS_R = $(TEST_C:tests/%.c=$(B)/tests/%)
 TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
 
-.PHONY: all deps test test-release test-asan bench bench-quick plots install clean
+.PHONY: all deps test test-release test-asan bench bench-quick plots install clean print-goals
 .DEFAULT_GOAL := all
 
 all: deps $(B)/dtdel $(B)/libdtdel.a
 
-deps:
+# Every compile waits for the Debian packages: it has the stamp that
+# `make deps` writes as an order-only prerequisite, so `make -jN` on a
+# fresh machine compiles nothing before CGAL's headers are there.  The
+# stamp is remade when the package list (scripts/deps.sh) changes.
+DEPS_STAMP = build/.deps-stamp
+deps: $(DEPS_STAMP)
+$(DEPS_STAMP): scripts/deps.sh
 	@sh scripts/deps.sh
+	@mkdir -p $(dir $@) && touch $@
 
 # ---- release ----------------------------------------------------------------
-$(B)/obj/%.o: %.c $(HDRS)
+$(B)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@
-$(B)/obj/%.o: %.cpp $(HDRS)
+$(B)/obj/%.o: %.cpp $(HDRS)  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS_R) -c $< -o $@
-$(B)/libdtdel.a: $(LIB_OBJ_R)
+$(B)/libdtdel.a: $(LIB_OBJ_R)  | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a  | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
-$(A)/obj/%.o: %.c $(HDRS)
+$(A)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@
-$(A)/libdtdel.a: $(LIB_OBJ_A)
+$(A)/libdtdel.a: $(LIB_OBJ_A)  | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a  | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h
+$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
-$(K)/obj/%.o: %.c $(HDRS)
+$(K)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_C) -c $< -o $@
-$(K)/libdtdel.a: $(LIB_OBJ_K)
+$(K)/libdtdel.a: $(LIB_OBJ_K)  | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.a
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.a  | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
-$(B)/summarize: scripts/summarize.c src/cli/buckets.h
+$(B)/summarize: scripts/summarize.c src/cli/buckets.h  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) $< -o $@ -lm
-$(A)/summarize: scripts/summarize.c src/cli/buckets.h
+$(A)/summarize: scripts/summarize.c src/cli/buckets.h  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) $< -o $@ -lm
 
@@ -122,6 +129,11 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h
 test: deps
 	@$(MAKE) --no-print-directory python $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
 	@sh tests/run.sh $(B) $(A)
+
+# The files make test, bench, soak and fuzz build (tests/test_make.sh
+# checks that each waits for the deps stamp).
+print-goals:
+	@echo $(B)/dtdel $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(F)/fuzz_readers $(F)/fuzz_ops
 
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.
@@ -197,10 +209,10 @@ DATA_OBJ_F = $(DATA_SRC:%.c=$(F)/obj/%.o)
 # The engine's objects: optimised, and without the comparison tracing that
 # guides the fuzzer through parsers: the interpreter runs about 3x faster.
 $(LIB_OBJ_F): FUZZ_LIB_FLAGS = -O2 -fno-sanitize-coverage=trace-cmp
-$(F)/obj/%.o: %.c $(HDRS)
+$(F)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CFLAGS_F) $(FUZZ_LIB_FLAGS) -c $< -o $@
-$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F)
+$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F)  | $(DEPS_STAMP)
 	$(FUZZ_CC) $(CFLAGS_F) -fsanitize=fuzzer $< $(LIB_OBJ_F) $(DATA_OBJ_F) -o $@ $(LIBS)
 fuzz-build: $(F)/fuzz_readers $(F)/fuzz_ops
 fuzz:

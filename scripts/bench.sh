@@ -1,20 +1,35 @@
 #!/bin/sh
 # make bench (full) / make bench-quick: the deletion benchmark, then the
-# construction benchmark, then tables and plots, all into results/.
-#   1. build/count/dtdel bench  -> results/phases/*.csv (phase split, counters on)
-#   2. build/dtdel bench        -> results/<dataset>.csv (timings, phases merged)
-#   3. build/summarize          -> results/summary.md, results/plotdata/,
-#                                  results/readme-table.md
-#   4. scripts/plots.sh         -> results/*.png
+# construction benchmark, then tables and plots.  The full run writes into
+# results/ and rewrites README.md's results table; the quick run writes
+# into results/quick/ (not tracked) and leaves README.md and results/ as
+# they are, so its smaller figures are never taken for the project's.
+#   1. $DTDEL_COUNT bench       -> OUT/phases/*.csv (phase split, counters on)
+#   2. $DTDEL bench             -> OUT/<dataset>.csv (timings, phases merged)
+#   3. build/summarize          -> OUT/summary.md, OUT/plotdata/,
+#                                  OUT/readme-table.md
+#   4. scripts/plots.sh         -> OUT/*.png
 #   5. scripts/readme-table.sh  -> README.md's results table (between its
 #                                  bench-table markers), from step 3's
-#                                  results/readme-table.md
-#   (2b. build/dtdel bench --reps 1 on uniform, sphere, bunny -> results/cold/)
-#   (2c. build/dtdel build-bench -> results/build.txt, seq-bench -> results/sequence.txt)
+#                                  OUT/readme-table.md: full run only
+#   (2b. $DTDEL bench --reps 1 on uniform, sphere, bunny -> OUT/cold/)
+#   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt)
+# DTDEL, DTDEL_COUNT and SUMMARIZE name the binaries (default build/dtdel,
+# build/count/dtdel and build/summarize).  BENCH_SIZES=tiny runs the
+# deletion bench on uniform points only and shrinks the whole-workload
+# rows to a few thousand points: for tests of this script
+# (tests/test_bench_quick.sh), never for figures.
 mode=${1:-full}
 scale=${2:-1}
+DTDEL=${DTDEL:-build/dtdel}
+DTDEL_COUNT=${DTDEL_COUNT:-build/count/dtdel}
+SUMMARIZE=${SUMMARIZE:-build/summarize}
+out=results
+[ "$mode" = quick ] && out=results/quick
+only=
+[ "${BENCH_SIZES:-}" = tiny ] && only="--dataset uniform"
 set -e
-mkdir -p results/phases
+mkdir -p "$out/phases"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
     echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
@@ -25,51 +40,59 @@ commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
     echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
     echo "commit: $commit"
     echo "mode: $mode (scale $scale)"
-} >results/meta.txt
+} >"$out/meta.txt"
 echo "bench ($mode): phase split with the counting build" >&2
-build/count/dtdel bench --mode "$mode" --scale "$scale" --out results/phases
+"$DTDEL_COUNT" bench --mode "$mode" --scale "$scale" $only --out $out/phases
 echo "bench ($mode): timings with the release build" >&2
 rc=0
-build/dtdel bench --mode "$mode" --scale "$scale" --out results --phases results/phases || rc=$?
+"$DTDEL" bench --mode "$mode" --scale "$scale" $only --out "$out" --phases $out/phases || rc=$?
 # Cold pass: every deletion timed once (--reps 1), so neither CGAL nor we
 # run with branch predictors and caches trained by the repetitions of the
-# same deletion: results/cold/summary.md, low-degree datasets only.
-mkdir -p results/cold
-{ cat results/meta.txt; echo "reps: 1 (each deletion timed once)"; } >results/cold/meta.txt
+# same deletion: $out/cold/summary.md, low-degree datasets only.
+mkdir -p $out/cold
+{ cat $out/meta.txt; echo "reps: 1 (each deletion timed once)"; } >$out/cold/meta.txt
 for ds in uniform sphere bunny; do
-    build/dtdel bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out results/cold || rc=$?
+    "$DTDEL" bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out $out/cold || rc=$?
 done
-build/summarize results/cold results/cold/*.csv
+"$SUMMARIZE" $out/cold $out/cold/*.csv
 n=1000000 nh=16000
 [ "$mode" = quick ] && n=200000 nh=4000
-build/dtdel build-bench "$n" --reps 5 >results/build.txt || rc=$?
+[ "${BENCH_SIZES:-}" = tiny ] && n=2000 nh=500
+"$DTDEL" build-bench "$n" --reps 5 >$out/build.txt || rc=$?
 # and on a curve, where point location is most of the work
-echo >>results/build.txt
-build/dtdel build-bench "$nh" --dataset helix >>results/build.txt || rc=$?
-cat results/build.txt
+echo >>$out/build.txt
+"$DTDEL" build-bench "$nh" --dataset helix >>$out/build.txt || rc=$?
+cat $out/build.txt
 # whole workloads: a random sequence of deletions, no repetition, cold
 # caches (seq-bench), on uniform points and on the degenerate grid
 ns=1000000 ng=27000
 [ "$mode" = quick ] && ns=200000 ng=8000
-build/dtdel seq-bench "$ns" --fraction 0.1 >results/sequence.txt || rc=$?
-echo >>results/sequence.txt
-build/dtdel seq-bench "$ng" --dataset grid --fraction 0.5 >>results/sequence.txt || rc=$?
-cat results/sequence.txt
+[ "${BENCH_SIZES:-}" = tiny ] && ns=2000 ng=1000
+"$DTDEL" seq-bench "$ns" --fraction 0.1 >$out/sequence.txt || rc=$?
+echo >>$out/sequence.txt
+"$DTDEL" seq-bench "$ng" --dataset grid --fraction 0.5 >>$out/sequence.txt || rc=$?
+cat $out/sequence.txt
 # insertion of new points, location and nearest-vertex queries against
 # CGAL (with and without Fast_location), and memory under churn
 nq=200000 kq=50000 lq=100000
 [ "$mode" = quick ] && nq=50000 kq=10000 lq=20000
-build/dtdel query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq" >results/queries.txt || rc=$?
-cat results/queries.txt
+[ "${BENCH_SIZES:-}" = tiny ] && nq=2000 kq=500 lq=1000
+"$DTDEL" query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq" >$out/queries.txt || rc=$?
+cat $out/queries.txt
 # moves (smoothing) against move_if_no_collision, set deletion against
 # remove(first, last)
 ne=100000 me=200000
 [ "$mode" = quick ] && ne=20000 me=40000
-build/dtdel edit-bench "$ne" --set "$me" >results/edits.txt || rc=$?
-cat results/edits.txt
-csvs=$(ls results/*.csv)
-build/summarize results $csvs
-sh scripts/plots.sh results
-sh scripts/readme-table.sh results/readme-table.md README.md
-echo "results: results/summary.md, results/*.png and README.md's table" >&2
+[ "${BENCH_SIZES:-}" = tiny ] && ne=1000 me=2000
+"$DTDEL" edit-bench "$ne" --set "$me" >$out/edits.txt || rc=$?
+cat $out/edits.txt
+csvs=$(ls $out/*.csv)
+"$SUMMARIZE" "$out" $csvs
+sh scripts/plots.sh "$out"
+if [ "$mode" = full ]; then
+    sh scripts/readme-table.sh "$out/readme-table.md" README.md
+    echo "results: $out/summary.md, $out/*.png and README.md's table" >&2
+else
+    echo "results: $out/summary.md and $out/*.png (quick run: README.md and results/ unchanged)" >&2
+fi
 exit $rc

@@ -30,6 +30,8 @@ for t in "$REL"/tests/test_*; do
     run "release $(basename "$t")" "$t"
 done
 run "release layers" sh scripts/layers.sh "$REL/obj"
+run "release make" sh tests/test_make.sh
+run "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 # the Python bindings (make python: python/dtdel loads the release libdtdel.so)

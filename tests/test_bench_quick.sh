@@ -1,0 +1,34 @@
+#!/bin/sh
+# test_bench_quick.sh BUILD -- `make bench-quick` writes its figures into
+# results/quick/ and leaves README.md and the full run's results/ byte for
+# byte as they were.  Runs scripts/bench.sh quick (what make bench-quick
+# runs) on a copy of the tracked tree, with the deletion bench scaled down
+# and BENCH_SIZES=tiny, so it takes seconds; the binaries are BUILD's.
+# Prints "ok NAME" / "FAIL NAME: why" lines; exits 1 on a failure.
+top=$(cd "$(dirname "$0")/.." && pwd)
+build=$(cd "${1:-build}" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+ok() { echo "ok bench-quick/$1"; }
+bad() { echo "FAIL bench-quick/$1: $2"; fail=1; }
+
+tree=$tmp/tree
+mkdir -p "$tree"
+(cd "$top" && git ls-files -z README.md scripts results datasets | xargs -0 tar cf -) | (cd "$tree" && tar xf -)
+(cd "$tree" && find README.md results -type f | sort | xargs md5sum) >"$tmp/before"
+(cd "$tree" && DTDEL="$build/dtdel" DTDEL_COUNT="$build/dtdel" SUMMARIZE="$build/summarize" \
+    BENCH_SIZES=tiny sh scripts/bench.sh quick 0.02) >"$tmp/out" 2>"$tmp/err"
+rc=$?
+[ $rc -eq 0 ] && ok runs || bad runs "scripts/bench.sh quick exited $rc: $(tail -n 5 "$tmp/err")"
+(cd "$tree" && find README.md results -path results/quick -prune -o -type f -print | sort | xargs md5sum) >"$tmp/after"
+if cmp -s "$tmp/before" "$tmp/after"; then
+    ok readme-and-results-unchanged
+else
+    bad readme-and-results-unchanged "changed: $(diff "$tmp/before" "$tmp/after" | grep '^[<>]' | head -n 4 | tr '\n' ' ')"
+fi
+[ -s "$tree/results/quick/summary.md" ] && ok writes-results-quick ||
+    bad writes-results-quick "no results/quick/summary.md"
+grep -q "results/quick/summary.md" "$tmp/err" && ok says-where ||
+    bad says-where "the run does not say where its results are"
+exit $fail
