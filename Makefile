@@ -133,7 +133,7 @@ test: deps
 # The files make test, bench, soak and fuzz build (tests/test_make.sh
 # checks that each waits for the deps stamp).
 print-goals:
-	@echo $(B)/dtdel $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(F)/fuzz_readers $(F)/fuzz_ops
+	@echo $(B)/dtdel $(B)/libdtdel.so $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(F)/fuzz_readers $(F)/fuzz_ops
 
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.
@@ -159,16 +159,16 @@ install: all install-python
 # from (PYTHONPATH=python /usr/bin/python3 -c 'import dtdel').  `make
 # install` also puts the package into PYDIR, Debian python3's site dir
 # under PREFIX, and records the installed library's path in it.
-P = build/pic
+P = $(B)/pic
 LIB_OBJ_P = $(LIB_SRC:%.c=$(P)/obj/%.o)
 PYVER := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
 PYDIR ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
 PY_SRC = $(wildcard python/dtdel/*.py)
 .PHONY: python install-python
-$(P)/obj/%.o: %.c $(HDRS)
+$(P)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -fPIC -c $< -o $@
-$(B)/libdtdel.so: $(LIB_OBJ_P)
+$(B)/libdtdel.so: $(LIB_OBJ_P) | $(DEPS_STAMP)
 	$(CC) -shared -Wl,-soname,libdtdel.so.0 -Wl,--no-undefined $^ -o $@ -lgmp -lm
 python/dtdel/libdtdel.so: $(B)/libdtdel.so
 	cp $< $@

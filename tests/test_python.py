@@ -343,9 +343,31 @@ def test_stable_indices():
         check("default reuses", t.insert([0.3, 0.3, 0.3]) == 3, "")
 
 
+def test_install():
+    """make install-python into a temporary prefix: the installed package
+    imports from Debian python3's site dir there and loads the installed
+    library."""
+    top = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    with tempfile.TemporaryDirectory() as pre:
+        r = subprocess.run(["make", "-s", "--no-print-directory", "install-python",
+                            "PREFIX=" + pre], cwd=top, capture_output=True, text=True)
+        check("install-python", r.returncode == 0, r.stderr[-300:])
+        site = os.path.join(pre, "lib", "python%d.%d" % sys.version_info[:2], "dist-packages")
+        code = ("import dtdel, dtdel._lib as L, numpy as np; "
+                "t = dtdel.Triangulation([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]); "
+                "print(L.PATH, t.num_finite_tets)")
+        env = dict(os.environ, PYTHONPATH=site)
+        env.pop("DTDEL_LIBRARY", None)
+        r = subprocess.run(["/usr/bin/python3", "-c", code], cwd=pre, env=env,
+                           capture_output=True, text=True)
+        want = os.path.join(pre, "lib", "libdtdel.so") + " "
+        check("installed package loads the installed library",
+              r.returncode == 0 and r.stdout.startswith(want), r.stdout + r.stderr[-300:])
+
+
 def main():
     for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
-              test_errors, test_cell_handles, test_write, test_stable_indices):
+              test_errors, test_cell_handles, test_write, test_stable_indices, test_install):
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure

@@ -116,7 +116,9 @@ def _take(ptr, count, width=4, dtype=np.int32):
 class Triangulation:
     """DT of an (n, 3) float64 array of points (dd_create); a point's row
     number is its input index.  Duplicates are merged into their first
-    occurrence (alias).  Use `with` or close() to free it early."""
+    occurrence (alias).  Use `with` or close() to free it early.  ctypes
+    lets other threads run during a call: an edit needs the triangulation
+    to itself (no other call on it meanwhile), as in C."""
 
     def __init__(self, points, weights=None, stable_indices=False):
         xyz = np.ascontiguousarray(points, dtype=np.float64)
