@@ -100,13 +100,14 @@ def test_bindings():
     enum = re.search(r"enum dd_status\s*\{(.*?)\}", text, flags=re.S).group(1)
     in_header = [e for e in re.findall(r"\b(DD_[A-Z_]+)\b", enum) if e != "DD_NUM_STATUS"]
     check("status names as the enum", in_header == dtdel.STATUS_NAMES, str(in_header))
-    m = re.search(r"#define\s+DD_STABLE_INDICES\s+\(?\s*([0-9xXa-fA-Fu]+)", text)
+    m = re.search(r"\bDD_STABLE_INDICES\b\s*=?\s*\(?\s*([0-9xXa-fA-F]+)[uU]?\s*(<<\s*(\d+))?", text)
     if m:
-        check("DD_STABLE_INDICES value", int(m.group(1).rstrip("uU"), 0) == dtdel.STABLE_INDICES,
-              m.group(1))
-    m = re.search(r'#define\s+DD_VERSION\s+"([^"]*)"', text)
-    if m:
-        check("version", dtdel.version() == m.group(1), "%r vs %r" % (dtdel.version(), m.group(1)))
+        val = int(m.group(1), 0) << int(m.group(3) or 0)
+        check("DD_STABLE_INDICES value", val == dtdel.STABLE_INDICES, m.group(0))
+    ver = [re.search(r"#define\s+DD_VERSION_%s\s+(\d+)" % k, text) for k in ("MAJOR", "MINOR", "PATCH")]
+    if all(ver):
+        want = ".".join(m.group(1) for m in ver)
+        check("version", dtdel.version() == want, "%r vs %r" % (dtdel.version(), want))
 
 
 def test_module():

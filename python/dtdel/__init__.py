@@ -167,9 +167,13 @@ class Triangulation:
             raise ValueError("the triangulation is closed")
         return self._t
 
-    def _check(self, s):
+    def _check(self, s, what=None):
+        """Raises DtdelError for a failed status.  An edit's message is
+        dd_errmsg's; a read-only call (what: the call and its argument)
+        reports by status alone (dtdel.h), so its message is made here."""
         if s != 0:
-            raise DtdelError(s, self.errmsg())
+            msg = "%s: %s" % (what, status_name(s)) if what else self.errmsg()
+            raise DtdelError(s, msg or status_name(s))
 
     def _vid(self, v):
         v = int(v)
@@ -240,7 +244,7 @@ class Triangulation:
     def point(self, v):
         """Coordinates of vertex v (dd_point)."""
         p = np.empty(3)
-        self._check(lib.dd_point(self._h, self._vid(v), _dptr(p)))
+        self._check(lib.dd_point(self._h, self._vid(v), _dptr(p)), "point(%d)" % v)
         return p
 
     @property
@@ -250,7 +254,7 @@ class Triangulation:
         vs = self.vertices()
         out = np.empty((len(vs), 3))
         for k, v in enumerate(vs):
-            self._check(lib.dd_point(self._h, int(v), _dptr(out[k])))
+            self._check(lib.dd_point(self._h, int(v), _dptr(out[k])), "point(%d)" % v)
         return out
 
     def degree(self, v):
@@ -315,7 +319,7 @@ class Triangulation:
         """The four vertices of a cell whose closure holds p (dd_locate)."""
         a = _point(p)
         cell = (c_int32 * 4)()
-        self._check(lib.dd_locate(self._h, _dptr(a), cell))
+        self._check(lib.dd_locate(self._h, _dptr(a), cell), "locate(%s)" % a.tolist())
         return tuple(cell)
 
     def nearest_vertex(self, p):
@@ -324,23 +328,22 @@ class Triangulation:
         v = lib.dd_nearest_vertex(self._h, _dptr(a))
         if v == _U32 - 1:
             bad = "DD_ERR_NAN" if np.isnan(a).any() else "DD_ERR_INFINITE"
-            raise DtdelError(STATUS_NAMES.index(bad), self.errmsg())
+            raise DtdelError(STATUS_NAMES.index(bad), "nearest_vertex(%s): %s"
+                             % (a.tolist(), status_name(STATUS_NAMES.index(bad))))
         return int(v)
 
     def cells(self):
         """(verts, nbrs): (m, 4) int32 arrays of all cells (dd_cells):
         verts[c, i] a vertex (-1 infinite), nbrs[c, i] the cell opposite it."""
         pv, pn, n = ctypes.POINTER(c_int32)(), ctypes.POINTER(c_int32)(), c_size_t()
-        s = lib.dd_cells(self._h, byref(pv), byref(pn), byref(n))
-        if s != 0:
-            raise DtdelError(s, self.errmsg())
+        self._check(lib.dd_cells(self._h, byref(pv), byref(pn), byref(n)), "cells()")
         verts = _take(pv, n.value)
         return verts, _take(pn, n.value)
 
     def canonical(self):
         """The canonical form (dd_canonical): (m, 4) int32, rows sorted."""
         p, n = ctypes.POINTER(c_int32)(), c_size_t()
-        self._check(lib.dd_canonical(self._h, byref(p), byref(n)))
+        self._check(lib.dd_canonical(self._h, byref(p), byref(n)), "canonical()")
         return _take(p, n.value)
 
     def local_canonical(self, vs):
@@ -348,7 +351,8 @@ class Triangulation:
         a = _vertex_list(vs)
         p, n = ctypes.POINTER(c_int32)(), c_size_t()
         self._check(lib.dd_local_canonical(self._h, a.ctypes.data_as(ctypes.POINTER(c_uint32)),
-                                           a.size, byref(p), byref(n)))
+                                           a.size, byref(p), byref(n)),
+                    "local_canonical(%s)" % a.tolist()[:8])
         return _take(p, n.value)
 
     def canonical_hash(self):
@@ -357,7 +361,15 @@ class Triangulation:
 
     def check(self):
         """The full validator (dd_check); raises DtdelError on a broken mesh."""
-        self._check(lib.dd_check(self._h))
+        f = getattr(lib, "dd_check_msg", None)
+        if f is None:
+            self._check(lib.dd_check(self._h), "check()")
+            return
+        msg = ctypes.create_string_buffer(_MSGLEN)
+        s = f(self._h, msg, _MSGLEN)
+        if s != 0:
+            raise DtdelError(s, "check(): " + (msg.value.decode(errors="replace")
+                                               or status_name(s)))
 
     # ---- cell handles and files (issue 42) -------------------------------------
     def cell_end(self):
@@ -371,27 +383,28 @@ class Triangulation:
         """(verts, nbrs) of cell id c: 4 vertices (-1 infinite) and the 4
         cell ids across the facets opposite them (dd_cell)."""
         v, nb = (c_int32 * 4)(), (c_int64 * 4)()
-        self._check(_need("dd_cell")(self._h, int(c), v, nb))
+        self._check(_need("dd_cell")(self._h, int(c), v, nb), "cell(%d)" % c)
         return tuple(v), tuple(nb)
 
     def locate_from(self, p, hint=-1):
         """The id of a cell whose closure holds p, walked from hint (dd_locate_from)."""
         a = _point(p)
         c = c_int64()
-        self._check(_need("dd_locate_from")(self._h, _dptr(a), int(hint), byref(c)))
+        self._check(_need("dd_locate_from")(self._h, _dptr(a), int(hint), byref(c)),
+                    "locate_from(%s, hint=%d)" % (a.tolist(), hint))
         return int(c.value)
 
     def created_cells(self):
         """The ids of the live cells the last edit made (dd_created_cells)."""
         p, n = ctypes.POINTER(c_int64)(), c_size_t()
-        self._check(_need("dd_created_cells")(self._h, byref(p), byref(n)))
+        self._check(_need("dd_created_cells")(self._h, byref(p), byref(n)), "created_cells()")
         if n.value == 0:
             return np.zeros(0, dtype=np.int64)
         return np.ctypeslib.as_array(p, shape=(n.value,)).copy()
 
     def write(self, path):
         """Writes the finite cells to a .vtu or .mesh file (dd_write)."""
-        self._check(_need("dd_write")(self._h, str(path).encode()))
+        self._check(_need("dd_write")(self._h, str(path).encode()), "write(%r)" % str(path))
 
 
 STABLE_INDICES = 1   # DD_STABLE_INDICES

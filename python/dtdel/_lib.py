@@ -44,6 +44,7 @@ PROTOTYPES = {
                                    POINTER(_p_int32), POINTER(c_size_t)]),
     "dd_canonical_hash": (c_uint64, [_p_int32, c_size_t]),
     "dd_check": (c_int, [c_void_p]),
+    "dd_check_msg": (c_int, [c_void_p, c_char_p, c_size_t]),
     "dd_point": (c_int, [c_void_p, c_uint32, _p_double]),
     "dd_cells": (c_int, [c_void_p, POINTER(_p_int32), POINTER(_p_int32),
                          POINTER(c_size_t)]),
