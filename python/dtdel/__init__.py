@@ -223,6 +223,12 @@ class Triangulation:
     def __len__(self):
         return self.num_vertices
 
+    def __repr__(self):
+        if self._t is None:
+            return "<dtdel.Triangulation (closed)>"
+        return "<dtdel.Triangulation: %d vertices, %d finite cells>" % (
+            self.num_vertices, self.num_finite_tets)
+
     # ---- vertices ------------------------------------------------------------
     def alias(self, i):
         """The vertex input point i became (i unless a duplicate)."""
