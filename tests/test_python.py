@@ -307,9 +307,19 @@ def test_cell_handles():
         c = t.locate_from([0.5, 0.5, 0.5])
         check("locate_from", sorted(t.cell(c)[0]) == sorted(t.locate([0.5, 0.5, 0.5]))
               and t.locate_from([0.5, 0.5, 0.5], hint=live[0]) >= 0, str(c))
-        t.insert([0.31, 0.41, 0.59])
+        i = t.insert([0.31, 0.41, 0.59])
         made = t.created_cells()
-        check("created_cells", len(made) > 0 and all(t.cell_alive(c) for c in made), "")
+        star = sort_rows([t.cell(c)[0] for c in made])
+        check("created_cells: the new star", np.array_equal(star, sort_rows(t.incident_cells(i))),
+              "%d cells" % len(made))
+        t.delete(i)
+        made = t.created_cells()
+        check("created_cells after a deletion", all(t.cell_alive(c) for c in made)
+              and np.array_equal(sort_rows([t.cell(c)[0] for c in range(t.cell_end())
+                                            if t.cell_alive(c)]), t.canonical()), "")
+        raises("cell of a dead id", "DD_ERR_UNKNOWN_CELL", t.cell, t.cell_end() + 5)
+        raises("locate_from a bad hint", "DD_ERR_UNKNOWN_CELL", t.locate_from, [0.5] * 3,
+               t.cell_end() + 5)
 
 
 def test_write():
@@ -322,11 +332,16 @@ def test_write():
             path = os.path.join(d, "m." + ext)
             t.write(path)
             check("write ." + ext, os.path.getsize(path) > 0, path)
-        try:
-            t.write(os.path.join(d, "m.unknown"))
-            check("write an unknown extension", False, "no exception")
-        except DtdelError as e:
-            check("write an unknown extension", bool(e.message), e.status)
+        # the Medit file's tetrahedra, 1-based over the vertices in index order
+        words = open(os.path.join(d, "m.mesh")).read().split()
+        k = words.index("Tetrahedra")
+        m = int(words[k + 1])
+        tets = np.array(words[k + 2:k + 2 + 5 * m], dtype=np.int64).reshape(m, 5)[:, :4] - 1
+        finite = t.canonical()[(t.canonical() >= 0).all(axis=1)]
+        check("write .mesh: the finite cells",
+              np.array_equal(sort_rows(t.vertices()[tets]), finite), "%d tetrahedra" % m)
+        raises("write an unknown extension", "DD_ERR_UNKNOWN_FORMAT", t.write,
+               os.path.join(d, "m.unknown"))
 
 
 def test_stable_indices():
