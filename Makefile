@@ -1,12 +1,13 @@
 # dtdel -- vertex deletion for 3D Delaunay triangulations, checked against CGAL.
 #
-#   make              build/dtdel (CLI) and build/libdtdel.a (+ src/dtdel.h)
+#   make              build/dtdel (CLI), build/libdtdel.so and build/libdtdel.a
 #   make deps         install the Debian packages (or say what to install)
 #   make test         release and sanitizer (ASan+UBSan) test suites
 #   make bench        the full benchmark, tables and plots into results/
 #   make bench-quick  a short benchmark (about 2 minutes) into results/quick/
 #   make plots        redraw the plots from results/*.csv
-#   make install      PREFIX=/usr/local: library, header, CLI, Python package
+#   make install      PREFIX=/usr/local [DESTDIR=]: libraries, headers,
+#                     dtdel.pc, the CLI and the Python package
 #   make python       the Python package in place: python/dtdel
 #   make clean
 #
@@ -23,7 +24,12 @@ CSTD     = -std=c11 -D_POSIX_C_SOURCE=200809L -Isrc -I.
 # -O3 for our engine and for the CGAL shim alike (CGAL's own CMake Release
 # default), so the bench compares like with like.
 OPT      = -O3 -DNDEBUG -ffp-contract=off
-CFLAGS_R = $(CSTD) $(WARN) $(OPT)
+# Position-independent, so that the objects make the shared library and a
+# static archive that can go into one; -fvisibility=hidden exports only
+# what dtdel.h and dtdel_stats.h declare (DD_API_BEGIN), and lets the
+# library's internal calls bind locally, as -fPIE's do.
+PIC      = -fPIC -fvisibility=hidden
+CFLAGS_R = $(CSTD) $(WARN) $(OPT) $(PIC)
 CFLAGS_A = $(CSTD) $(WARN) -O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-omit-frame-pointer -DDD_TEST_BUILD
 CFLAGS_C = $(CFLAGS_R) -DDD_COUNTERS
 CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
@@ -32,6 +38,13 @@ CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
 # minutes.  CXXFLAGS_A only links the sanitizer runtime in.
 CXXFLAGS_A = -std=c++17 -O1 -fsanitize=address,undefined
 LIBS     = -lgmp -lmpfr -lm
+# What the library itself needs (the CLI and tests add CGAL's MPFR).
+LIB_LIBS = -lgmp -lm
+
+# The version, read from its one source, dtdel.h.
+version_part = $(shell sed -n 's/^\#define DD_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' src/dtdel.h)
+VERSION  := $(call version_part,MAJOR).$(call version_part,MINOR).$(call version_part,PATCH)
+SONAME   := libdtdel.so.$(call version_part,MAJOR)
 
 # The engine's layers, bottom up (docs/architecture.md): each folder of
 # src/ uses only those before it; variants/ and src/api.c sit on top.
@@ -62,7 +75,7 @@ TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
 .PHONY: all deps test test-release test-asan bench bench-quick plots install clean print-goals
 .DEFAULT_GOAL := all
 
-all: deps $(B)/dtdel $(B)/libdtdel.a
+all: deps $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc
 
 # Every compile waits for the Debian packages: it has the stamp that
 # `make deps` writes as an order-only prerequisite, so `make -jN` on a
@@ -75,51 +88,71 @@ $(DEPS_STAMP): scripts/deps.sh
 	@mkdir -p $(dir $@) && touch $@
 
 # ---- release ----------------------------------------------------------------
-$(B)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
+$(B)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@
-$(B)/obj/%.o: %.cpp $(HDRS)  | $(DEPS_STAMP)
+$(B)/obj/%.o: %.cpp $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS_R) -c $< -o $@
-$(B)/libdtdel.a: $(LIB_OBJ_R)  | $(DEPS_STAMP)
+# The installed static archive: one object, linked partially, whose
+# hidden (internal) names are made local, so that it defines only the
+# public names, as the shared library exports them.
+$(B)/libdtdel.a: $(LIB_OBJ_R) | $(DEPS_STAMP)
+	@rm -f $@ $(B)/obj/libdtdel.o
+	$(LD) -r -o $(B)/obj/libdtdel.o $^
+	objcopy --localize-hidden $(B)/obj/libdtdel.o
+	ar rcs $@ $(B)/obj/libdtdel.o
+# The tests' archive: every object, internal names included (tests call
+# the layers directly); never installed.
+$(B)/libdtdel-internal.a: $(LIB_OBJ_R) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a  | $(DEPS_STAMP)
+$(B)/libdtdel.so.$(VERSION): $(LIB_OBJ_R) | $(DEPS_STAMP)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,-z,defs $^ -o $@ $(LIB_LIBS)
+$(B)/libdtdel.so: $(B)/libdtdel.so.$(VERSION) | $(DEPS_STAMP)
+	ln -sf libdtdel.so.$(VERSION) $(B)/$(SONAME)
+	ln -sf $(SONAME) $@
+# pkg-config's file for PREFIX (make install writes its own for its PREFIX)
+MAKE_PC = sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS_PRIVATE@|$(LIB_LIBS)|' dtdel.pc.in
+$(B)/dtdel.pc: dtdel.pc.in src/dtdel.h | $(DEPS_STAMP)
+	$(MAKE_PC) >$@
+# The CLI uses only the public calls: it links the installed archive.
+$(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a tests/testlib.h  | $(DEPS_STAMP)
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
-	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a -o $@ $(LIBS)
+	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a -o $@ $(LIBS)
 
 # ---- sanitizers ---------------------------------------------------------------
-$(A)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
+$(A)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@
-$(A)/libdtdel.a: $(LIB_OBJ_A)  | $(DEPS_STAMP)
+$(A)/libdtdel.a: $(LIB_OBJ_A) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a  | $(DEPS_STAMP)
+$(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h  | $(DEPS_STAMP)
+$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
 
 # ---- counting build -----------------------------------------------------------
-$(K)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
+$(K)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_C) -c $< -o $@
-$(K)/libdtdel.a: $(LIB_OBJ_K)  | $(DEPS_STAMP)
+$(K)/libdtdel.a: $(LIB_OBJ_K) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.a  | $(DEPS_STAMP)
+$(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.a | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
-$(B)/summarize: scripts/summarize.c src/cli/buckets.h  | $(DEPS_STAMP)
+$(B)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) $< -o $@ -lm
-$(A)/summarize: scripts/summarize.c src/cli/buckets.h  | $(DEPS_STAMP)
+$(A)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) $< -o $@ -lm
 
@@ -127,13 +160,13 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h  | $(DEPS_STAMP)
 # Both suites run; the runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
-	@$(MAKE) --no-print-directory python $(B)/dtdel $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
+	@$(MAKE) --no-print-directory all python $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize
 	@sh tests/run.sh $(B) $(A)
 
 # The files make test, bench, soak and fuzz build (tests/test_make.sh
 # checks that each waits for the deps stamp).
 print-goals:
-	@echo $(B)/dtdel $(B)/libdtdel.so $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(F)/fuzz_readers $(F)/fuzz_ops
+	@echo $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(F)/fuzz_readers $(F)/fuzz_ops
 
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.
@@ -147,38 +180,36 @@ bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
 plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
+# DESTDIR only stages the files: dtdel.pc names PREFIX.
 install: all install-python
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
-	install -m 644 src/dtdel.h $(DESTDIR)$(PREFIX)/include/dtdel.h
+	install -m 755 $(B)/libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/libdtdel.so.$(VERSION)
+	ln -sf libdtdel.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libdtdel.so
+	$(MAKE_PC) >$(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
+	chmod 644 $(DESTDIR)$(PREFIX)/lib/pkgconfig/dtdel.pc
+	install -m 644 src/dtdel.h src/dtdel_stats.h $(DESTDIR)$(PREFIX)/include/
 
-# ---- shared library and Python bindings (issue 42, part 4) ------------------
-# build/libdtdel.so from position-independent objects in build/pic/;
-# `make python` copies it into python/dtdel/, the package ctypes loads it
-# from (PYTHONPATH=python /usr/bin/python3 -c 'import dtdel').  `make
-# install` also puts the package into PYDIR, Debian python3's site dir
-# under PREFIX, and records the installed library's path in it.
-P = $(B)/pic
-LIB_OBJ_P = $(LIB_SRC:%.c=$(P)/obj/%.o)
+# ---- Python bindings (issue 42, part 4) -------------------------------------
+# `make python` copies build/libdtdel.so into python/dtdel/, the package
+# ctypes loads it from (PYTHONPATH=python /usr/bin/python3 -c 'import
+# dtdel').  `make install` also puts the package into PYDIR, Debian
+# python3's site dir under PREFIX, recording there the installed
+# library's path, which the installed package loads.
 PYVER := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
 PYDIR ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
 PY_SRC = $(wildcard python/dtdel/*.py)
 .PHONY: python install-python
-$(P)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_R) -fPIC -c $< -o $@
-$(B)/libdtdel.so: $(LIB_OBJ_P) | $(DEPS_STAMP)
-	$(CC) -shared -Wl,-soname,libdtdel.so.0 -Wl,--no-undefined $^ -o $@ -lgmp -lm
 python/dtdel/libdtdel.so: $(B)/libdtdel.so
 	cp $< $@
 python: $(B)/libdtdel.so python/dtdel/libdtdel.so
-install-python: $(B)/libdtdel.so
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PYDIR)/dtdel
-	install -m 755 $(B)/libdtdel.so $(DESTDIR)$(PREFIX)/lib/libdtdel.so
+install-python:
+	install -d $(DESTDIR)$(PYDIR)/dtdel
 	install -m 644 $(PY_SRC) $(DESTDIR)$(PYDIR)/dtdel/
 	rm -f $(DESTDIR)$(PYDIR)/dtdel/_libpath.py
-	echo 'LIBRARY = "$(PREFIX)/lib/libdtdel.so"' >$(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+	echo 'LIBRARY = "$(PREFIX)/lib/$(SONAME)"' >$(DESTDIR)$(PYDIR)/dtdel/_libpath.py
 # ---- end of the Python block ------------------------------------------------
 
 clean:
@@ -209,10 +240,10 @@ DATA_OBJ_F = $(DATA_SRC:%.c=$(F)/obj/%.o)
 # The engine's objects: optimised, and without the comparison tracing that
 # guides the fuzzer through parsers: the interpreter runs about 3x faster.
 $(LIB_OBJ_F): FUZZ_LIB_FLAGS = -O2 -fno-sanitize-coverage=trace-cmp
-$(F)/obj/%.o: %.c $(HDRS)  | $(DEPS_STAMP)
+$(F)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CFLAGS_F) $(FUZZ_LIB_FLAGS) -c $< -o $@
-$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F)  | $(DEPS_STAMP)
+$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F) | $(DEPS_STAMP)
 	$(FUZZ_CC) $(CFLAGS_F) -fsanitize=fuzzer $< $(LIB_OBJ_F) $(DATA_OBJ_F) -o $@ $(LIBS)
 fuzz-build: $(F)/fuzz_readers $(F)/fuzz_ops
 fuzz:

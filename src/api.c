@@ -16,6 +16,8 @@
 /* The registry (variants/registry.c): NULL-terminated, first = default. */
 extern const dd_variant *const dd_variant_table[];
 
+const char *dd_version(void) { return DD_VERSION; }
+
 void dd_free(dd_tri *t)
 {
     if (!t) return;
@@ -48,12 +50,14 @@ const char *dd_variant_description(size_t i)
     return dd_variant_table[i]->description;
 }
 
-/* Records deleted vertex q for dd_insert to reuse.  Entries of vertices
- * re-inserted since are stale and skipped; when stale entries make the
- * list longer than the vertex ids, it is compacted (amortised O(1)).  A
- * failed push only forgoes the reuse.                                    */
+/* Records deleted vertex q for dd_insert to reuse (not with
+ * DD_STABLE_INDICES, which reuses none).  Entries of vertices re-inserted
+ * since are stale and skipped; when stale entries make the list longer
+ * than the vertex ids, it is compacted (amortised O(1)).  A failed push
+ * only forgoes the reuse.                                                */
 static void note_deleted(dd_tri *t, uint32_t q)
 {
+    if (t->flags & DD_STABLE_INDICES) return;
     dd_vec *f = &t->vfree;
     if (f->n >= t->nvid && f->n > 64) {
         size_t m = 0;
@@ -70,11 +74,10 @@ static void note_deleted(dd_tri *t, uint32_t q)
     (void)dd_vec_push(f, q);
 }
 
-/* The strategy named `variant` (NULL: the default) in *var, clearing the
- * message of an earlier failure; DD_ERR_UNKNOWN_VARIANT if none is.     */
+/* The strategy named `variant` (NULL: the default) in *var;
+ * DD_ERR_UNKNOWN_VARIANT if none is.                                     */
 static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_variant **var)
 {
-    t->err[0] = 0;
     *var = find_variant(variant);
     return *var ? DD_OK
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
@@ -84,11 +87,12 @@ dd_status dd_delete_with(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
+    t->err[0] = 0;
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
     if (s == DD_OK) note_deleted(t, q);
-    return s;
+    return dd_end_call(t, s);
 }
 
 dd_status dd_delete(dd_tri *t, uint32_t v) { return dd_delete_with(t, v, NULL); }
@@ -216,7 +220,7 @@ static void prefetch_stars(const dd_tri *t, const uint32_t *next, size_t n)
  * and not all in one plane; then no deletion of the sequence can be
  * refused (each leaves a superset of them).  An unforeseen failure (out
  * of memory) re-inserts those done, in reverse, which restores DT(S).   */
-dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
     const dd_variant *var;
     dd_status s = resolve_variant(t, variant, &var);
@@ -231,7 +235,7 @@ dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char
         qsort(ids, n, sizeof *ids, cmp_u32);
         for (size_t k = 1; k < n && s == DD_OK; k++)
             if (ids[k] == ids[k - 1])
-                s = dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "point %u is listed twice", t->v2in[ids[k]]);
+                s = dd_fail(t, DD_ERR_ARG, "point %u is listed twice", t->v2in[ids[k]]);
     }
     if (s == DD_OK && t->nvert - n < 4)
         s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
@@ -260,13 +264,19 @@ dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char
         memcpy(why, t->err, sizeof why);
         while (done > 0) {
             uint32_t v = ids[--done];
-            if (dd_reinsert(t, t->v2in[v]) != DD_OK) break;
+            if (dd_insert_vertex(t, v) != DD_OK) break;
         }
         memcpy(t->err, why, sizeof why);
     }
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     free(ids);
     return s;
+}
+
+dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+{
+    t->err[0] = 0;
+    return dd_end_call(t, delete_set(t, vs, n, variant));
 }
 
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n)
@@ -301,6 +311,7 @@ dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **
 {
     dd_vec cells = {NULL, 0, 0};
     dd_status s = DD_OK;
+    t->err[0] = 0;
     for (size_t i = 0; i < n && s == DD_OK; i++) {
         dd_del *d;
         s = dd_del_star_of(t, vs[i], &d);
@@ -312,7 +323,7 @@ dd_status dd_local_canonical(dd_tri *t, const uint32_t *vs, size_t n, int32_t **
     }
     if (s == DD_OK) s = dd_canonical_of_cells(t, cells.a, cells.n, tets, ntets);
     dd_vec_free(&cells);
-    return s;
+    return dd_end_call(t, s);
 }
 
 void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
@@ -340,9 +351,8 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
 
 /* ---- insertion ----------------------------------------------------------- */
 
-dd_status dd_reinsert(dd_tri *t, uint32_t input)
+static dd_status reinsert(dd_tri *t, uint32_t input)
 {
-    t->err[0] = 0;
     if (input >= t->np)
         return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
     uint32_t v = t->in2v[input];
@@ -353,9 +363,16 @@ dd_status dd_reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
+dd_status dd_reinsert(dd_tri *t, uint32_t input)
+{
+    t->err[0] = 0;
+    return dd_end_call(t, reinsert(t, input));
+}
 
-/* A vertex id for a new point: a deleted one to reuse (*reused = 1), or
- * the next unused one, the vertex arrays grown if needed.               */
+
+/* A vertex id for a new point: a deleted one to reuse (*reused = 1;
+ * never with DD_STABLE_INDICES, whose vfree stays empty), or the next
+ * unused one, the vertex arrays grown if needed.                         */
 static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
 {
     while (t->vfree.n > 0) {
@@ -376,9 +393,8 @@ static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
     return DD_OK;
 }
 
-dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+static dd_status insert(dd_tri *t, const double p[3], uint32_t *index)
 {
-    t->err[0] = 0;
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
@@ -406,3 +422,8 @@ dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
     return DD_OK;
 }
 
+dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
+{
+    t->err[0] = 0;
+    return dd_end_call(t, insert(t, p, index));
+}

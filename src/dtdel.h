@@ -14,8 +14,24 @@
  *    point in the array given to dd_create (or the index returned by
  *    dd_insert).  A duplicate input point is not a vertex; dd_alias maps it
  *    to the first occurrence, which is.
- *  - Every function returns a dd_status.  On failure the triangulation is
- *    left exactly as it was, and dd_errmsg() says what went wrong.
+ *  - Return values, one rule per kind:
+ *      a call that can fail returns a dd_status: DD_OK, or the reason; on
+ *        failure the triangulation is left exactly as it was, and out-
+ *        parameters are unspecified unless the call says otherwise;
+ *      a count (dd_num_*, dd_degree, dd_neighbors, dd_incident_cells)
+ *        cannot fail: 0 for an index that names no vertex;
+ *      a yes/no (dd_is_vertex, dd_on_hull) is 1 or 0, 0 for a bad index;
+ *      a name (dd_status_name, dd_variant_name, dd_version, dd_errmsg) is
+ *        a string the library owns; dd_variant_name is NULL past the end;
+ *      dd_alias answers UINT32_MAX for an index out of range.
+ *  - A list written into a caller's array of `max` entries (dd_neighbors,
+ *    dd_incident_cells) is truncated as snprintf truncates: at most max
+ *    entries are written, and the return value is the full count, so a
+ *    return value above max says the array was too short (with max 0 the
+ *    array may be NULL: a call that only counts).
+ *  - dd_errmsg(t) is the message of the last call on t that failed; a
+ *    later success leaves it.  Only calls taking a non-const dd_tri *
+ *    write it; read-only calls (const dd_tri *) report by status alone.
  *  - Exported names start with dd_; nothing here keeps global state.
  *  - Diagnostics for benchmarks and tests (what a deletion did, predicate
  *    counters, test-build controls) are in dtdel_stats.h, not here.
@@ -26,9 +42,41 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* ---- version and exports ------------------------------------------------ */
+
+/* The version: the one source of truth, which the Makefile reads for the
+ * shared library's soname (libdtdel.so.MAJOR) and for dtdel.pc.  MAJOR
+ * changes when the ABI breaks.                                           */
+#define DD_VERSION_MAJOR 0
+#define DD_VERSION_MINOR 1
+#define DD_VERSION_PATCH 0
+#define DD_STRINGIFY_(x) #x
+#define DD_STRINGIFY(x) DD_STRINGIFY_(x)
+#define DD_VERSION \
+    DD_STRINGIFY(DD_VERSION_MAJOR) "." DD_STRINGIFY(DD_VERSION_MINOR) "." DD_STRINGIFY(DD_VERSION_PATCH)
+
+/* What the library exports.  It is built with -fvisibility=hidden; the
+ * declarations between DD_API_BEGIN and DD_API_END (all of this header's
+ * and dtdel_stats.h's) are exported, DD_API marks a single one.  Nothing
+ * else is: internal names cannot clash with a user's.                    */
+#if defined(__GNUC__) || defined(__clang__)
+#define DD_API __attribute__((visibility("default")))
+#define DD_API_BEGIN _Pragma("GCC visibility push(default)")
+#define DD_API_END _Pragma("GCC visibility pop")
+#else
+#define DD_API
+#define DD_API_BEGIN
+#define DD_API_END
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
+DD_API_BEGIN
+
+/* The library's version, DD_VERSION of the build ("0.1.0"): the header a
+ * program was compiled with may be older than the library it runs with. */
+const char *dd_version(void);
 
 typedef enum dd_status {
     DD_OK = 0,
@@ -46,6 +94,9 @@ typedef enum dd_status {
     DD_ERR_DIMENSION,      /* deletion would leave fewer than 4 or only
                               coplanar points (dimension drop unsupported)   */
     DD_ERR_INTERNAL,       /* an invariant broke: a bug, please report it    */
+    DD_ERR_ARG,            /* a bad argument: unknown flag bits, an index
+                              listed twice in a set                         */
+    DD_ERR_UNSUPPORTED,    /* a feature not supported yet (weights)         */
     DD_NUM_STATUS
 } dd_status;
 
@@ -55,17 +106,43 @@ const char *dd_status_name(dd_status s);
 
 typedef struct dd_tri dd_tri;
 
+/* ---- creation ------------------------------------------------------------ */
+
 /* Builds DT of the n points xyz[3i..3i+2].  On success *out owns a copy of
  * the points.  On failure *out is NULL, and if msg is not NULL a message
- * naming the problem (and the offending index) is written to msg.        */
+ * naming the problem (and the offending index) is written to msg (at most
+ * msglen bytes, terminated).  dd_create is dd_create_ex(out, xyz, NULL,
+ * n, 0, msg, msglen).                                                    */
 dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n,
                     char *msg, size_t msglen);
+
+/* Flags of dd_create_ex. */
+enum {
+    /* dd_insert never reuses an index: each new point gets the index
+     * dd_num_input() had before the call, a deleted index stays deleted
+     * (dd_reinsert still puts it back), and a user's per-index arrays
+     * stay true.  Memory then grows with the insertions, not with the
+     * live size.  Without it, dd_insert reuses a deleted vertex's index
+     * (see dd_insert).                                                   */
+    DD_STABLE_INDICES = 1u << 0
+};
+
+/* dd_create with options.  weights must be NULL (weighted points are not
+ * supported yet: DD_ERR_UNSUPPORTED); flags is 0 or an OR of the DD_*
+ * flags above (any other bit: DD_ERR_ARG).                              */
+dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n,
+                       unsigned flags, char *msg, size_t msglen);
+
 void dd_free(dd_tri *t);
 
-/* The message of the last failed call on t ("" if none). */
+/* The message of the last failed call on t: "" if none has failed; a
+ * later success does not clear it (see Conventions above).               */
 const char *dd_errmsg(const dd_tri *t);
 
-uint32_t dd_num_input(const dd_tri *t);      /* points given + inserted     */
+/* The end of the index range: every input index lies in [0, dd_num_input),
+ * deleted ones and duplicates included (dd_insert may reuse a deleted
+ * index: then the range does not grow).                                  */
+uint32_t dd_num_input(const dd_tri *t);
 uint32_t dd_num_vertices(const dd_tri *t);   /* finite vertices now in DT   */
 uint32_t dd_num_duplicates(const dd_tri *t); /* input points merged away    */
 size_t dd_num_tets(const dd_tri *t);         /* finite + infinite cells     */
@@ -83,8 +160,9 @@ int dd_on_hull(dd_tri *t, uint32_t v);
  * -1 for the infinite vertex; the cells sorted lexicographically.  *tets
  * is malloc'd (4 * *ntets ints); the caller frees it.                    */
 dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets);
-/* The input indices of v's finite neighbours (at most max written);
- * returns their number, 0 if v is not a vertex.                         */
+/* The input indices of v's finite neighbours: at most max written to
+ * out; returns their full number (more than max: out was too short), 0
+ * if v is not a vertex.                                                  */
 uint32_t dd_neighbors(dd_tri *t, uint32_t v, uint32_t *out, uint32_t max);
 /* Canonical form (as dd_canonical) of the cells incident to any of the
  * input vertices vs[0..n): what deleting their common neighbour changes. */
@@ -111,8 +189,9 @@ dd_status dd_point(const dd_tri *t, uint32_t v, double p[3]);
  * O(cells).                                                              */
 dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *ncells);
 /* The cells incident to input vertex v, as their four vertices (input
- * indices, -1 = infinite), at most max written; returns their number, 0
- * if v is not a vertex.  O(number of cells).                             */
+ * indices, -1 = infinite): at most max written to out; returns their full
+ * number (more than max: out was too short), 0 if v is not a vertex.
+ * O(number of cells).                                                    */
 uint32_t dd_incident_cells(dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max);
 /* The four vertices (input indices, -1 = infinite) of a cell whose
  * closure holds p, or, when p is outside the convex hull, of an infinite
@@ -123,11 +202,11 @@ uint32_t dd_incident_cells(dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t ma
  * first query or insertion in O(n), remade as the size doubles or
  * halves).                                                               */
 dd_status dd_locate(dd_tri *t, const double p[3], int32_t cell[4]);
-/* An input index of a vertex nearest to p in Euclidean distance (any one
- * of ties), exact.  UINT32_MAX (and dd_errmsg says why) for a NaN or
- * infinite p.  dd_locate's cost, then a greedy descent over Delaunay
- * edges: O(degree) a step, a few steps.                                  */
-uint32_t dd_nearest_vertex(dd_tri *t, const double p[3]);
+/* In *v, the input index of a vertex nearest to p in Euclidean distance
+ * (any one of ties), exact.  DD_ERR_NAN / DD_ERR_INFINITE for a bad p.
+ * dd_locate's cost, then a greedy descent over Delaunay edges: O(degree)
+ * a step, a few steps.                                                   */
+dd_status dd_nearest_vertex(dd_tri *t, const double p[3], uint32_t *v);
 /* 1 if the vertex index v is the infinite vertex (-1 in the arrays). */
 static inline int dd_is_infinite(int32_t v) { return v < 0; }
 
@@ -147,9 +226,9 @@ dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
  * own (along its insertion order, so that consecutive deletions touch
  * nearby memory: faster than deleting the set one dd_delete at a time in
  * a random order).  All or nothing: DD_ERR_UNKNOWN_VERTEX for an index
- * that is no vertex or is listed twice, DD_ERR_DIMENSION when fewer than
- * 4 or only coplanar points would be left, checked before any deletion;
- * on any failure the triangulation is unchanged.                         */
+ * that is no vertex, DD_ERR_ARG for one listed twice, DD_ERR_DIMENSION
+ * when fewer than 4 or only coplanar points would be left, checked before
+ * any deletion; on any failure the triangulation is unchanged.          */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n);
 dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
@@ -168,10 +247,11 @@ dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
  * is reused when there is one, else the index is dd_num_input() before
  * the call; so memory stays bounded by the live size under churn, and an
  * index deleted before a dd_insert may name the new point after it
- * (dd_reinsert of it then fails).  DD_ERR_DUPLICATE if p equals a
- * vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p; on failure nothing
- * changes.  The walk starts near p (as dd_locate): expected O(1) cells
- * on evenly spread points, plus the O(degree) update.                    */
+ * (dd_reinsert of it then fails).  With DD_STABLE_INDICES (dd_create_ex)
+ * the index is always dd_num_input() before the call.  DD_ERR_DUPLICATE
+ * if p equals a vertex, DD_ERR_NAN / DD_ERR_INFINITE for a bad p; on
+ * failure nothing changes.  The walk starts near p (as dd_locate):
+ * expected O(1) cells on evenly spread points, plus the O(degree) update. */
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
 /* Puts back input vertex v after dd_delete (same index, same point). */
 dd_status dd_reinsert(dd_tri *t, uint32_t v);
@@ -183,6 +263,7 @@ const char *dd_variant_description(size_t i);
 /* Bytes held by the triangulation's arrays (capacity, not just use). */
 size_t dd_memory_bytes(const dd_tri *t);
 
+DD_API_END
 #ifdef __cplusplus
 }
 #endif

@@ -12,6 +12,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+DD_API_BEGIN
 
 #define DD_LINKDEG_BUCKETS 16
 #define DD_STRATEGY_STATS 16
@@ -88,6 +89,7 @@ typedef enum dd_test_ctl {
 long dd_test_control(dd_tri *t, dd_test_ctl ctl, long value);
 #endif
 
+DD_API_END
 #ifdef __cplusplus
 }
 #endif

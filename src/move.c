@@ -69,9 +69,8 @@ static dd_status move_by_reinsertion(dd_tri *t, uint32_t v, const double p[3])
     return DD_OK;
 }
 
-dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
+static dd_status move(dd_tri *t, uint32_t input, const double p[3])
 {
-    t->err[0] = 0;
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c of the new point is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c of the new point is infinite", "xyz"[c]);
@@ -92,4 +91,10 @@ dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
     s = move_by_reinsertion(t, v, p);
     if (s == DD_OK) dd_grid_note(t, v);
     return s;
+}
+
+dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
+{
+    t->err[0] = 0;
+    return dd_end_call(t, move(t, input, p));
 }

@@ -79,14 +79,16 @@ dd_status dd_locate(dd_tri *t, const double p[3], int32_t cell[4])
 {
     uint32_t c;
     dd_status s = locate_cell(t, p, &c);
-    if (s != DD_OK) return s;
+    if (s != DD_OK) return dd_end_call(t, s);
     for (int i = 0; i < 4; i++) cell[i] = dd_input_index(t, dd_tv(t, c)[i]);
     return DD_OK;
 }
 
-uint32_t dd_nearest_vertex(dd_tri *t, const double p[3])
+dd_status dd_nearest_vertex(dd_tri *t, const double p[3], uint32_t *v)
 {
-    uint32_t c, v;
-    if (locate_cell(t, p, &c) != DD_OK || dd_nearest_from(t, p, c, &v) != DD_OK) return UINT32_MAX;
-    return t->v2in[v];
+    uint32_t c, w;
+    dd_status s = locate_cell(t, p, &c);
+    if (s == DD_OK) s = dd_nearest_from(t, p, c, &w);
+    if (s == DD_OK) *v = t->v2in[w];
+    return dd_end_call(t, s);
 }

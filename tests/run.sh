@@ -34,6 +34,8 @@ run "release make" sh tests/test_make.sh
 run "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
+run "release exports" sh tests/test_exports.sh "$REL"
+run "release install" sh tests/test_install.sh "$REL"
 # the Python bindings (make python: python/dtdel loads the release libdtdel.so)
 run "release python" env PYTHONPATH=python /usr/bin/python3 tests/test_python.py "$REL/dtdel"
 for t in "$ASAN"/tests/test_*; do

@@ -183,7 +183,8 @@ static void check_queries(tl_state *st, const char *name, dd_tri *t, const doubl
             int32_t cell[4];
             done++;
             bad_loc += dd_locate(t, p, cell) != DD_OK || !holds(t, cell, p);
-            bad_near += !nearest_ok(t, pts, n, p, dd_nearest_vertex(t, p));
+            uint32_t nv = UINT32_MAX;
+            bad_near += dd_nearest_vertex(t, p, &nv) != DD_OK || !nearest_ok(t, pts, n, p, nv);
         }
         snprintf(tn, sizeof tn, "locate/%s/%s", name, kinds[kind]);
         tl_check(st, done > 0 && bad_loc == 0, tn, "%ld of %ld located cells do not hold their point", bad_loc, done);
@@ -329,14 +330,15 @@ static void check_bad_input(tl_state *st)
     int32_t cell[4];
     uint32_t idx;
     dd_status s1 = dd_locate(t, nanp, cell), s2 = dd_locate(t, infp, cell), s3 = dd_insert(t, infp, &idx);
-    uint32_t nv = dd_nearest_vertex(t, nanp);
+    uint32_t nv = 77;
+    dd_status s0 = dd_nearest_vertex(t, nanp, &nv);
     double q[3];
     dd_status s4 = dd_point(t, 100000, q);
     dd_delete(t, 7);                       /* a failed insert keeps 7's slot */
     dd_status s5 = dd_insert(t, p + 3 * 8, &idx), s6 = dd_reinsert(t, 7);
     dd_canonical(t, &after, &na);
     int same = na == nb && !memcmp(before, after, 4 * na * sizeof *after);
-    tl_check(st, s1 == DD_ERR_NAN && s2 == DD_ERR_INFINITE && s3 == DD_ERR_INFINITE && nv == UINT32_MAX &&
+    tl_check(st, s1 == DD_ERR_NAN && s2 == DD_ERR_INFINITE && s3 == DD_ERR_INFINITE && s0 == DD_ERR_NAN &&
                      s4 == DD_ERR_UNKNOWN_VERTEX && s5 == DD_ERR_DUPLICATE && s6 == DD_OK && same,
              "access/bad-input", "statuses %s %s %s %s %s %s, nearest %u, unchanged %d", dd_status_name(s1),
              dd_status_name(s2), dd_status_name(s3), dd_status_name(s4), dd_status_name(s5), dd_status_name(s6), nv,

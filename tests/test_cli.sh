@@ -38,6 +38,13 @@ expect no-args 2 "usage" "$DTDEL"
 expect unknown-command 2 "unknown command" "$DTDEL" frobnicate
 expect help 0 "" "$DTDEL" --help
 expect tets-help 0 "" "$DTDEL" tets --help
+# the help names every format the readers accept (datasets/readers.c)
+if "$DTDEL" tets --help 2>&1 | grep -q '\.xyz' && "$DTDEL" tets --help 2>&1 | grep -q '\.off' &&
+   "$DTDEL" tets --help 2>&1 | grep -q '\.ply' && "$DTDEL" tets --help 2>&1 | grep -q '\.obj'; then
+    echo "ok cli/tets-help-formats"
+else
+    echo "FAIL cli/tets-help-formats: $("$DTDEL" tets --help 2>&1 | tr '\n' ' ')"
+fi
 expect gen-help 0 "" "$DTDEL" gen --help
 expect tets-no-file 2 "usage" "$DTDEL" tets
 expect tets-missing-file 1 "cannot open" "$DTDEL" tets "$tmp/nope.xyz"

@@ -1066,7 +1066,7 @@ int main(int argc, char **argv)
             for (uint32_t i = 0; i < np - 3; i++) vs[i] = i;
             set_refused(&st, "three-left", t, vs, np - 3, NULL, DD_ERR_DIMENSION);
             uint32_t twice[] = {5, 9, 5}, unknown[] = {5, np}, bad_last[] = {1, 2, 3, np + 7};
-            set_refused(&st, "listed-twice", t, twice, 3, NULL, DD_ERR_UNKNOWN_VERTEX);
+            set_refused(&st, "listed-twice", t, twice, 3, NULL, DD_ERR_ARG);
             set_refused(&st, "unknown-vertex", t, unknown, 2, NULL, DD_ERR_UNKNOWN_VERTEX);
             set_refused(&st, "unknown-last", t, bad_last, 4, "grr-edge", DD_ERR_UNKNOWN_VERTEX);
             set_refused(&st, "unknown-variant", t, twice, 2, "nope", DD_ERR_UNKNOWN_VARIANT);

@@ -331,12 +331,10 @@ class Triangulation:
     def nearest_vertex(self, p):
         """A vertex nearest to p, exact (dd_nearest_vertex)."""
         a = _point(p)
-        v = lib.dd_nearest_vertex(self._h, _dptr(a))
-        if v == _U32 - 1:
-            bad = "DD_ERR_NAN" if np.isnan(a).any() else "DD_ERR_INFINITE"
-            raise DtdelError(STATUS_NAMES.index(bad), "nearest_vertex(%s): %s"
-                             % (a.tolist(), status_name(STATUS_NAMES.index(bad))))
-        return int(v)
+        v = c_uint32()
+        self._check(lib.dd_nearest_vertex(self._h, _dptr(a), byref(v)),
+                    "nearest_vertex(%s)" % a.tolist())
+        return int(v.value)
 
     def cells(self):
         """(verts, nbrs): (m, 4) int32 arrays of all cells (dd_cells):

@@ -50,7 +50,7 @@ PROTOTYPES = {
                          POINTER(c_size_t)]),
     "dd_incident_cells": (c_uint32, [c_void_p, c_uint32, _p_int32, c_uint32]),
     "dd_locate": (c_int, [c_void_p, _p_double, _p_int32]),
-    "dd_nearest_vertex": (c_uint32, [c_void_p, _p_double]),
+    "dd_nearest_vertex": (c_int, [c_void_p, _p_double, _p_uint32]),
     "dd_delete": (c_int, [c_void_p, c_uint32]),
     "dd_delete_with": (c_int, [c_void_p, c_uint32, c_char_p]),
     "dd_delete_set": (c_int, [c_void_p, _p_uint32, c_size_t]),
@@ -84,7 +84,7 @@ STATUS_NAMES = [
     "DD_OK", "DD_ERR_NOMEM", "DD_ERR_IO", "DD_ERR_PARSE", "DD_ERR_NAN",
     "DD_ERR_INFINITE", "DD_ERR_TOO_FEW", "DD_ERR_COLLINEAR", "DD_ERR_COPLANAR",
     "DD_ERR_UNKNOWN_VERTEX", "DD_ERR_UNKNOWN_VARIANT", "DD_ERR_DUPLICATE",
-    "DD_ERR_DIMENSION", "DD_ERR_INTERNAL",
+    "DD_ERR_DIMENSION", "DD_ERR_INTERNAL", "DD_ERR_ARG", "DD_ERR_UNSUPPORTED",
 ]
 
 

@@ -332,8 +332,11 @@ static const command commands[] = {
     {"tets", "tets FILE",
      "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
      "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
-     "ascending, -1 for the infinite vertex, lines sorted.  FILE is .xyz or\n"
-     ".off; input index = 0-based order of the points in the file.", cmd_tets},
+     "ascending, -1 for the infinite vertex, lines sorted.  FILE is read by\n"
+     "its extension: .off (vertices; faces ignored), .ply (ascii or binary,\n"
+     "either endian: the x, y, z of the vertex element), .obj (the 'v'\n"
+     "lines), anything else .xyz (x y z per line, # comments); input index =\n"
+     "0-based order of the points in the file.", cmd_tets},
     {"cgal-tets", "cgal-tets FILE",
      "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
     {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats] [--set]",

@@ -36,7 +36,12 @@ int cmd_locate(int argc, char **argv)
         dd_free(t);
         return EXIT_INPUT;
     }
-    const uint32_t v = dd_nearest_vertex(t, p);
+    uint32_t v = 0;
+    if ((s = dd_nearest_vertex(t, p, &v)) != DD_OK) {
+        fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
+        dd_free(t);
+        return EXIT_INPUT;
+    }
     printf("cell: %d %d %d %d%s\n", cell[0], cell[1], cell[2], cell[3],
            cell[0] < 0 || cell[1] < 0 || cell[2] < 0 || cell[3] < 0 ? " (outside the hull)" : "");
     printf("nearest: %u\n", v);

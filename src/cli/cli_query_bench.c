@@ -126,7 +126,8 @@ static qb_row bench_nearest(dd_tri *t, dd_cgalq *g, dd_cgalq *gf, const double *
     int64_t *theirs = malloc(k * sizeof *theirs);
     if (!ours || !theirs) { free(ours); free(theirs); r.bad = 1; return r; }
     double t0 = now_seconds();
-    for (uint64_t i = 0; i < k; i++) ours[i] = dd_nearest_vertex(t, q + 3 * i);
+    for (uint64_t i = 0; i < k; i++)
+        if (dd_nearest_vertex(t, q + 3 * i, &ours[i]) != DD_OK) ours[i] = UINT32_MAX;
     double t1 = now_seconds();
     for (uint64_t i = 0; i < k; i++) theirs[i] = dd_cgalq_nearest(g, q + 3 * i);
     double t2 = now_seconds();

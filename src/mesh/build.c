@@ -255,16 +255,29 @@ static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
     return s;
 }
 
-dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
+/* The flags dd_create_ex knows. */
+#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES)
+
+dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
+                       char *msg, size_t msglen)
 {
     *out = NULL;
     if (msg && msglen) msg[0] = 0;
+    if (weights) {
+        if (msg && msglen) snprintf(msg, msglen, "weights are not supported yet: pass NULL");
+        return DD_ERR_UNSUPPORTED;
+    }
+    if (flags & ~KNOWN_FLAGS) {
+        if (msg && msglen) snprintf(msg, msglen, "unknown flag bits 0x%x", flags & ~KNOWN_FLAGS);
+        return DD_ERR_ARG;
+    }
     dd_tri *t;
     dd_status s = dd_tri_alloc(&t, n);
     if (s != DD_OK) {
         if (msg && msglen) snprintf(msg, msglen, "out of memory");
         return s;
     }
+    t->flags = flags;
     for (uint32_t i = 0; i < n; i++)
         for (int c = 0; c < 3; c++) {
             double x = xyz[3 * (size_t)i + (size_t)c];
@@ -302,6 +315,11 @@ dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size
     dd_shrink_cells(t);     /* the reserve above was a guess */
     *out = t;
     return DD_OK;
+}
+
+dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
+{
+    return dd_create_ex(out, xyz, NULL, n, 0, msg, msglen);
 }
 
 /* ---- rebuilding without a set of vertices ----------------------------- */

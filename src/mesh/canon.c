@@ -19,11 +19,12 @@ const char *dd_status_name(dd_status s)
         "ok", "out of memory", "i/o error", "parse error", "NaN coordinate",
         "infinite coordinate", "too few points", "collinear points",
         "coplanar points", "unknown vertex", "unknown variant",
-        "duplicate point", "dimension would drop", "internal error"};
+        "duplicate point", "dimension would drop", "internal error",
+        "bad argument", "unsupported"};
     return (unsigned)s < DD_NUM_STATUS ? names[s] : "unknown status";
 }
 
-const char *dd_errmsg(const dd_tri *t) { return t->err; }
+const char *dd_errmsg(const dd_tri *t) { return t->errmsg; }
 uint32_t dd_num_input(const dd_tri *t) { return t->np; }
 uint32_t dd_num_vertices(const dd_tri *t) { return t->nvert; }
 uint32_t dd_num_duplicates(const dd_tri *t) { return t->ndup; }

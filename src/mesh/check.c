@@ -28,7 +28,7 @@ static int same_facet(const dd_tri *t, uint32_t c, uint32_t i, uint32_t d, uint3
     return 1;
 }
 
-dd_status dd_check(dd_tri *t)
+static dd_status check_all(dd_tri *t)
 {
     size_t live = 0, finite = 0;
     for (uint32_t c = 0; c < t->ncell; c++) {
@@ -99,4 +99,10 @@ dd_status dd_check(dd_tri *t)
         }
     }
     return DD_OK;
+}
+
+dd_status dd_check(dd_tri *t)
+{
+    t->err[0] = 0;
+    return dd_end_call(t, check_all(t));
 }

@@ -53,6 +53,12 @@ dd_status dd_fail(dd_tri *t, dd_status s, const char *fmt, ...)
     return s;
 }
 
+dd_status dd_end_call(dd_tri *t, dd_status s)
+{
+    if (s != DD_OK) snprintf(t->errmsg, sizeof t->errmsg, "%s", t->err[0] ? t->err : dd_status_name(s));
+    return s;
+}
+
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
 {
     *out = NULL;

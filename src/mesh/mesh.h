@@ -229,7 +229,9 @@ struct dd_tri {
     struct dd_edge_slot *ehash;   /* edge -> facet, see glue_new_cells   */
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
-    char err[256];
+    unsigned flags;           /* dd_create_ex's DD_* flags               */
+    char err[256];            /* the message of the failure at hand (dd_fail) */
+    char errmsg[256];         /* dd_errmsg: the last failed public call's */
 #ifdef DD_TEST_BUILD
     long testctl[DD_TEST_NCTL];   /* dd_test_control (dtdel_stats.h)     */
 #endif
@@ -238,6 +240,11 @@ struct dd_tri {
 /* Sets t->err and returns s. */
 dd_status dd_fail(dd_tri *t, dd_status s, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The end of a public call on t that returns s: a failure's message (t->err,
+ * or the status's name if the failure set none) becomes dd_errmsg's; a
+ * success leaves dd_errmsg as it was.  Returns s.  Public calls clear
+ * t->err when they start, so that a message is the call's own.          */
+dd_status dd_end_call(dd_tri *t, dd_status s);
 
 static inline const double *dd_pt(const dd_tri *t, uint32_t v)
 {
