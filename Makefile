@@ -52,11 +52,11 @@ LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
 DATA_SRC = datasets/datasets.c datasets/readers.c
-SHIM_SRC = src/cgal/cgal_shim.cpp src/cgal/cgal_query.cpp
+SHIM_SRC = src/cgal/cgal_shim.cpp src/cgal/cgal_query.cpp src/cgal/cgal_refine.cpp
 # The CGAL reference objects, compiled once in the release build (see below).
 SHIM_OBJ = $(SHIM_SRC:%.cpp=$(B)/obj/%.o)
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h $(wildcard datasets/*.h)
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h src/cgal/cgal_refine.h $(wildcard datasets/*.h)
 
 B = build
 A = build/asan

@@ -13,7 +13,8 @@
 #                                  bench-table markers), from step 3's
 #                                  OUT/readme-table.md: full run only
 #   (2b. $DTDEL bench --reps 1 on uniform, sphere, bunny -> OUT/cold/)
-#   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt)
+#   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt,
+#        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt)
 # DTDEL, DTDEL_COUNT and SUMMARIZE name the binaries (default build/dtdel,
 # build/count/dtdel and build/summarize).  BENCH_SIZES=tiny runs the
 # deletion bench on uniform points only and shrinks the whole-workload
@@ -86,6 +87,14 @@ ne=100000 me=200000
 [ "${BENCH_SIZES:-}" = tiny ] && ne=1000 me=2000
 "$DTDEL" edit-bench "$ne" --set "$me" >$out/edits.txt || rc=$?
 cat $out/edits.txt
+# refinement: the circumcentre of the largest cell inserted, again and
+# again, our queue fed by dd_created_cells, CGAL's by find_conflicts and
+# insert_in_hole; both must end in the same triangulation
+nr=100000 kr=100000
+[ "$mode" = quick ] && nr=20000 kr=20000
+[ "${BENCH_SIZES:-}" = tiny ] && nr=1000 kr=1000
+"$DTDEL" refine-bench "$nr" --inserts "$kr" >$out/refine.txt || rc=$?
+cat $out/refine.txt
 csvs=$(ls $out/*.csv)
 "$SUMMARIZE" "$out" $csvs
 sh scripts/plots.sh "$out"

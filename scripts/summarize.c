@@ -1201,13 +1201,13 @@ static void readme_construction(const ctx *c, FILE *out)
     fclose(f);
 }
 
-/* One README row of a line of queries.txt or edits.txt (dtdel
- * query-bench, edit-bench), or none; *header says whether the table's
+/* One README row of a line of queries.txt, edits.txt or refine.txt
+ * (dtdel query-bench, edit-bench, refine-bench), or none; *header says whether the table's
  * head was written.                                                     */
 static void readme_extra_row(const char *line, long long nq, FILE *out, int *header)
 {
     char what[64], ok[8], b[40];
-    long long k, n;
+    long long k, n, mism;
     double ours, cgal, rc, fast, rf, share, frac;
     if (!*header) {
         fputs("\n| beyond deletion (uniform points) | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |\n"
@@ -1228,18 +1228,26 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
                           "last) %lf us (%lfx); identical to CGAL: %7s", &frac, &k, &n, &ours, &cgal, &rc, ok) == 7)
         fprintf(out, "| delete a set, %.0f%% of %s%s | %.2f | %.2f | %.1f× | | |\n", frac, fmt_int(n, b),
                 strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+    else if (sscanf(line, "refine: %lld uniform points, %lld circumcentres of the largest cell inserted (CGAL %*d); "
+                          "dtdel %lf us an insertion (queue fed by dd_created_cells), CGAL find_conflicts + "
+                          "insert_in_hole %lf us (%lfx); hashes %*x / %*x; %lld mismatches",
+                    &n, &k, &ours, &cgal, &rc, &mism) == 6) {
+        char b2[40];
+        fprintf(out, "| refine (%s circumcentres of the largest cell into %s points)%s | %.2f | %.2f | %.1f× | | |\n",
+                fmt_int(k, b), fmt_int(n, b2), mism ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+    }
 }
 
-/* The rows of OUTDIR/queries.txt and OUTDIR/edits.txt as a second table:
- * insertion of new points, locate and nearest vertex against CGAL with
- * and without Fast_location, moves and set deletion, then the churn
- * line; nothing without the files.                                      */
+/* The rows of OUTDIR/queries.txt, edits.txt and refine.txt as a second
+ * table: insertion of new points, locate and nearest vertex against CGAL
+ * with and without Fast_location, moves, set deletion and refinement,
+ * then the churn line; nothing without the files.                       */
 static void readme_queries(const ctx *c, FILE *out)
 {
-    static const char *const files[2] = {"queries.txt", "edits.txt"};
+    static const char *const files[3] = {"queries.txt", "edits.txt", "refine.txt"};
     char path[4096], churn[512] = "", b[40];
     int header = 0;
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < 3; i++) {
         snprintf(path, sizeof path, "%s/%s", c->outdir, files[i]);
         FILE *f = fopen(path, "r");
         if (!f) continue;

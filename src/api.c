@@ -83,16 +83,24 @@ static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_varian
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
 }
 
-dd_status dd_delete_with(dd_tri *t, uint32_t input, const char *variant)
+/* The public edits below are each the body of a dd_edit_begin / end
+ * pair: the cells they make become dd_created_cells' list, and a
+ * failure's message dd_errmsg's.                                      */
+static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
-    t->err[0] = 0;
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
     if (s == DD_OK) note_deleted(t, q);
-    return dd_end_call(t, s);
+    return s;
+}
+
+dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant)
+{
+    dd_edit_begin(t);
+    return dd_edit_end(t, delete_one(t, v, variant));
 }
 
 dd_status dd_delete(dd_tri *t, uint32_t v) { return dd_delete_with(t, v, NULL); }
@@ -243,6 +251,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
     if (s == DD_OK) s = check_left(t, ids, n);
     if (s == DD_OK && rebuild_is_cheaper(t, n)) {
         s = dd_rebuild_without(t, ids, n);
+        if (s == DD_OK) dd_note_all(t);
         for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
         free(ids);
         return s;
@@ -275,8 +284,8 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
 
 dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
-    t->err[0] = 0;
-    return dd_end_call(t, delete_set(t, vs, n, variant));
+    dd_edit_begin(t);
+    return dd_edit_end(t, delete_set(t, vs, n, variant));
 }
 
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n)
@@ -363,11 +372,12 @@ static dd_status reinsert(dd_tri *t, uint32_t input)
     return dd_insert_vertex(t, v);
 }
 
-dd_status dd_reinsert(dd_tri *t, uint32_t input)
+dd_status dd_reinsert(dd_tri *t, uint32_t v)
 {
-    t->err[0] = 0;
-    return dd_end_call(t, reinsert(t, input));
+    dd_edit_begin(t);
+    return dd_edit_end(t, reinsert(t, v));
 }
+
 
 
 /* A vertex id for a new point: a deleted one to reuse (*reused = 1;
@@ -393,7 +403,7 @@ static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
     return DD_OK;
 }
 
-static dd_status insert(dd_tri *t, const double p[3], uint32_t *index)
+static dd_status insert_point(dd_tri *t, const double p[3], uint32_t *index)
 {
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
@@ -424,6 +434,6 @@ static dd_status insert(dd_tri *t, const double p[3], uint32_t *index)
 
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
-    t->err[0] = 0;
-    return dd_end_call(t, insert(t, p, index));
+    dd_edit_begin(t);
+    return dd_edit_end(t, insert_point(t, p, index));
 }

@@ -97,6 +97,8 @@ typedef enum dd_status {
     DD_ERR_ARG,            /* a bad argument: unknown flag bits, an index
                               listed twice in a set                         */
     DD_ERR_UNSUPPORTED,    /* a feature not supported yet (weights)         */
+    DD_ERR_UNKNOWN_CELL,   /* the id names no live cell (dd_cell_alive)      */
+    DD_ERR_UNKNOWN_FORMAT, /* a file name's extension names no format we write */
     DD_NUM_STATUS
 } dd_status;
 
@@ -255,6 +257,75 @@ dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
 /* Puts back input vertex v after dd_delete (same index, same point). */
 dd_status dd_reinsert(dd_tri *t, uint32_t v);
+
+/* ---- cell handles -------------------------------------------------------- */
+
+/* A cell id: the cell's slot in the mesh's own storage, so every call
+ * below is O(1) but the walk.  -1: none.  An edit (dd_insert,
+ * dd_reinsert, dd_delete(_with), dd_delete_set(_with), dd_move) kills
+ * some cells and makes others: a live cell it does not touch keeps its
+ * id, its vertices and its neighbours' ids across the facets it did not
+ * touch; a killed cell's id may name a cell the edit made (check
+ * dd_cell_alive and the vertices, or keep a stamp per id, refreshed from
+ * dd_created_cells).  Read-only calls never change an id.             */
+typedef int64_t dd_cell_id;
+
+/* Live ids lie in [0, dd_cell_end(t)); dead ones are interspersed.    */
+dd_cell_id dd_cell_end(const dd_tri *t);
+/* 1 if c is the id of a live cell, 0 otherwise (any c, -1 included).  */
+int dd_cell_alive(const dd_tri *t, dd_cell_id c);
+/* Cell c's vertices and neighbours, as dd_cells writes them: v[i] the
+ * input index of vertex i (-1: the infinite vertex; a finite cell is
+ * positively oriented, an infinite one as if -1 were a point beyond its
+ * hull facet), nbr[i] the id of the cell across the facet opposite
+ * v[i].  Either array may be NULL.  DD_ERR_UNKNOWN_CELL if c is not
+ * alive.  O(1).                                                       */
+dd_status dd_cell(const dd_tri *t, dd_cell_id c, int32_t v[4], dd_cell_id nbr[4]);
+/* A cell whose closure holds p, found by an exact visibility walk from
+ * cell `hint`; when p is outside the convex hull, an infinite cell whose
+ * hull facet p sees (p on its outer side).  The same answer class as
+ * dd_locate.  Cost: the cells crossed from the hint to p, so a hint near
+ * p (a cell of the last edit, a neighbour's cell) makes it a short walk.
+ * hint -1: the library's choice, a cell of a vertex near p when the
+ * location grid exists (dd_locate, dd_insert make it), else the last
+ * edit's last cell.
+ * DD_ERR_UNKNOWN_CELL if hint is neither -1 nor alive, DD_ERR_NAN /
+ * DD_ERR_INFINITE for a bad p.  Writes nothing to t.                  */
+dd_status dd_locate_from(const dd_tri *t, const double p[3], dd_cell_id hint, dd_cell_id *cell);
+/* The live cells made by the last edit, each once, in *cells[0..*n):
+ * after dd_create every cell; after dd_insert / dd_reinsert the new
+ * vertex's star; after a deletion the cells that fill the cavities;
+ * after dd_move the cells its flips, or its re-insertion, made (a move
+ * that keeps every cell, the relocation filter, makes none, though the
+ * cells around the vertex change shape under their ids).  With the
+ * rule above, a queue of cells kept from this list alone stays exact:
+ * every live cell not listed existed before the edit, unchanged.  A
+ * set deletion that rebuilds lists every cell.  An edit that fails
+ * before changing anything (every refusal: bad index, duplicate,
+ * dimension, most out-of-memory cases) leaves the list as it was; a
+ * failure undone by a compensating edit (dd_move refused with
+ * DD_ERR_DIMENSION after its temporary insertion, an out-of-memory
+ * in the middle of a set deletion) leaves the triangulation as it was
+ * but lists the cells it re-made, whose ids are new.  The array
+ * belongs to t, valid until the next edit or dd_free.  DD_ERR_NOMEM
+ * (and an empty list) if the list could not be kept: the edit itself
+ * succeeded.  O(1).                                                   */
+dd_status dd_created_cells(const dd_tri *t, const dd_cell_id **cells, size_t *n);
+
+/* ---- mesh files ------------------------------------------------------------ */
+
+/* Writes the finite cells and the vertices to path, the format chosen by
+ * the extension: ".vtu", VTK's XML UnstructuredGrid (ASCII; VTK_TETRA
+ * cells; point data "input_index", Int32, the input index of each
+ * point), for ParaView and meshio; ".mesh", Medit's (MeshVersionFormatted
+ * 2, Dimension 3, Vertices with reference 0, Tetrahedra 1-based with
+ * reference 0), for Gmsh, Medit and meshio.  Points are the live
+ * vertices, in input index order; coordinates printed exactly (%.17g).
+ * Each tetrahedron (a, b, c, d) has (b - a) x (c - a) . (d - a) > 0, the
+ * positive volume both formats expect.  DD_ERR_UNKNOWN_FORMAT for
+ * another extension, DD_ERR_IO if the file cannot be written (a partial
+ * file may be left), DD_ERR_NOMEM.  O(cells).                          */
+dd_status dd_write(const dd_tri *t, const char *path);
 
 /* The strategies, in registry order (i = 0, 1, ... until NULL). */
 const char *dd_variant_name(size_t i);

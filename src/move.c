@@ -69,7 +69,7 @@ static dd_status move_by_reinsertion(dd_tri *t, uint32_t v, const double p[3])
     return DD_OK;
 }
 
-static dd_status move(dd_tri *t, uint32_t input, const double p[3])
+static dd_status move_vertex(dd_tri *t, uint32_t input, const double p[3])
 {
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c of the new point is NaN", "xyz"[c]);
@@ -95,6 +95,6 @@ static dd_status move(dd_tri *t, uint32_t input, const double p[3])
 
 dd_status dd_move(dd_tri *t, uint32_t input, const double p[3])
 {
-    t->err[0] = 0;
-    return dd_end_call(t, move(t, input, p));
+    dd_edit_begin(t);
+    return dd_edit_end(t, move_vertex(t, input, p));
 }

@@ -33,6 +33,7 @@ run "release layers" sh scripts/layers.sh "$REL/obj"
 run "release make" sh tests/test_make.sh
 run "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"
+run "release write" sh tests/test_write.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 run "release exports" sh tests/test_exports.sh "$REL"
 run "release install" sh tests/test_install.sh "$REL"
@@ -43,6 +44,7 @@ for t in "$ASAN"/tests/test_*; do
     run "asan $(basename "$t")" "$t" small
 done
 run "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
+run "asan write" sh tests/test_write.sh "$ASAN/dtdel"
 run "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
 
 grep -A20 "^FAIL " "$log" | grep -v '^ok ' | sed 's/^/  /'

@@ -242,3 +242,20 @@ expect tets-ply-nan 1 "nan.ply: byte 135: vertex 1: coordinate z is NaN" "$DTDEL
 expect tets-ply-truncated 1 "short.ply:3: .*need at least 48 bytes" "$DTDEL" tets "$tmp/short.ply"
 expect tets-ply-line 1 "line.ply:9: element 'vertex' 1: expected 3 values" "$DTDEL" tets "$tmp/line.ply"
 expect tets-obj-inf 1 "inf.obj:5: vertex 3: coordinate z is infinite" "$DTDEL" tets "$tmp/inf.obj"
+
+# mesh files (tets --out) and the refinement bench
+expect tets-out-vtu 0 "" "$DTDEL" tets "$tmp/withdup.xyz" --out "$tmp/m.vtu"
+if [ -s "$tmp/m.vtu" ] && [ ! -s "$tmp/out" ] && grep -q 'Name="input_index"' "$tmp/m.vtu"; then echo "ok cli/tets-out-vtu-written"
+else echo "FAIL cli/tets-out-vtu-written: no .vtu with input_index, or something on stdout"; fi
+expect tets-out-mesh 0 "" "$DTDEL" tets "$tmp/withdup.xyz" --out "$tmp/m.mesh"
+if head -n 1 "$tmp/m.mesh" | grep -q "MeshVersionFormatted 2" && grep -q "^Tetrahedra" "$tmp/m.mesh" && tail -n 1 "$tmp/m.mesh" | grep -q "^End"
+then echo "ok cli/tets-out-mesh-written"; else echo "FAIL cli/tets-out-mesh-written: not a Medit file"; fi
+expect tets-out-unknown-format 2 "unknown mesh format.*\.vtu or \.mesh" "$DTDEL" tets "$tmp/good.xyz" --out "$tmp/m.txt"
+expect tets-out-unwritable 1 "cannot write" "$DTDEL" tets "$tmp/good.xyz" --out "$tmp/no/such/dir/m.vtu"
+expect tets-out-no-name 2 "needs a file name" "$DTDEL" tets "$tmp/good.xyz" --out
+expect tets-help-out 0 "" "$DTDEL" tets --help
+grep -q "\.vtu" "$tmp/out" && echo "ok cli/tets-help-mentions-out" || echo "FAIL cli/tets-help-mentions-out: no .vtu in tets --help"
+expect refine-bench-help 0 "" "$DTDEL" refine-bench --help
+expect refine-bench-small 0 "" "$DTDEL" refine-bench 400 --inserts 300
+grep -q " 0 mismatches" "$tmp/out" && echo "ok cli/refine-bench-agrees" || echo "FAIL cli/refine-bench-agrees: $(cat "$tmp/out")"
+expect refine-bench-bad 2 "usage" "$DTDEL" refine-bench 3

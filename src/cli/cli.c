@@ -3,7 +3,7 @@
  * and picks exit codes: 0 success, 1 bad input, 2 bad usage.
  *
  *   dtdel gen DATASET N [--seed S]   points of a dataset as .xyz on stdout
- *   dtdel tets FILE                  canonical DT(points of FILE)
+ *   dtdel tets FILE [--out F]        canonical DT(points of FILE), or a mesh file
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
  *   dtdel variants                   the deletion strategies and CGAL rows
@@ -152,16 +152,42 @@ int build_file(const char *cmd, const char *path, dd_tri **t)
     return 0;
 }
 
+/* `tets FILE --out OUT`: the mesh file instead of the canonical form. */
+static int write_mesh_file(dd_tri *t, const char *out)
+{
+    const dd_status s = dd_write(t, out);
+    dd_free(t);
+    if (s == DD_OK) return 0;
+    if (s == DD_ERR_UNKNOWN_FORMAT) {
+        fprintf(stderr, "dtdel tets: %s: unknown mesh format (the name must end in .vtu or .mesh)\n", out);
+        return EXIT_USAGE;
+    }
+    fprintf(stderr, "dtdel tets: %s: %s\n", out, s == DD_ERR_IO ? "cannot write the file" : dd_status_name(s));
+    return EXIT_INPUT;
+}
+
 static int cmd_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("tets");
-    if (argc != 2) return usage_error("tets", "expected exactly one FILE%s", "");
+    const char *file = NULL, *out = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--out")) {
+            if (++i >= argc) return usage_error("tets", "--out needs a file name%s", "");
+            out = argv[i];
+        } else if (!file) {
+            file = argv[i];
+        } else {
+            return usage_error("tets", "unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!file) return usage_error("tets", "expected one FILE%s", "");
     dd_tri *t;
-    int rc = build_file("tets", argv[1], &t);
+    int rc = build_file("tets", file, &t);
     if (rc) return rc;
     if (dd_num_duplicates(t))
         fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
                 dd_num_duplicates(t));
+    if (out) return write_mesh_file(t, out);
     int32_t *tets;
     size_t n;
     if (dd_canonical(t, &tets, &n) != DD_OK) {
@@ -329,14 +355,18 @@ static const command commands[] = {
      "Datasets: moment, helix, uniform, sphere, grid, cosphere, layers,\n"
      "grid-perturbed, and real models (bunny, elephant, armadillo, ...; N is\n"
      "then a maximum, 0 = all).", cmd_gen},
-    {"tets", "tets FILE",
+    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh]",
      "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
      "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
      "ascending, -1 for the infinite vertex, lines sorted.  FILE is read by\n"
      "its extension: .off (vertices; faces ignored), .ply (ascii or binary,\n"
      "either endian: the x, y, z of the vertex element), .obj (the 'v'\n"
      "lines), anything else .xyz (x y z per line, # comments); input index =\n"
-     "0-based order of the points in the file.", cmd_tets},
+     "0-based order of the points in the file.\n"
+     "--out OUT: instead (nothing on stdout), the finite tetrahedra as a mesh\n"
+     "file, by OUT's extension: .vtu (VTK XML, ParaView; point data\n"
+     "'input_index') or .mesh (Medit, Gmsh); points in input index order,\n"
+     "coordinates exact (dd_write).  Readable by meshio.", cmd_tets},
     {"cgal-tets", "cgal-tets FILE",
      "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
     {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats] [--set]",
@@ -386,6 +416,13 @@ static const command commands[] = {
      "R rounds (default 12) of deleting a random half of L live vertices\n"
      "(default 100000) and inserting as many new points; exit 1 if the\n"
      "resident memory after the last round passes 1.3 times round 2's.", cmd_query_bench},
+    {"refine-bench", "refine-bench [N] [--inserts K] [--seed S]",
+     "Against CGAL: a refinement loop on N uniform points in the unit cube\n"
+     "(default 100000) inserting K times (default 100000) the circumcentre of\n"
+     "the largest cell (circumradius; finite cells whose circumcentre is in\n"
+     "the cube), our queue fed by dd_created_cells, CGAL's by find_conflicts\n"
+     "and insert_in_hole; the same rule on both sides, so both must end in the\n"
+     "same triangulation (exit 1 on a mismatch).", cmd_refine_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",

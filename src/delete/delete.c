@@ -285,6 +285,7 @@ static dd_status sew(dd_del *d)
             }
             sew_settle(t, m);
         }
+        dd_note_made(t, d->fill.a, nf);
         t->vcell[d->q] = DD_NONE;
         t->nvert--;
         return DD_OK;
@@ -305,6 +306,7 @@ static dd_status sew(dd_del *d)
         uint32_t r = d->fill.a[k], m = dd_new_cell(t);
         memcpy(dd_tv(t, m), dd_tv(x, r), 4 * sizeof(uint32_t));
         d->cellmap.a[r] = m;
+        dd_note_cell(t, m);
     }
     for (size_t k = 0; k < nf; k++) {
         uint32_t r = d->fill.a[k], m = d->cellmap.a[r];

@@ -313,6 +313,7 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
     if (s != DD_OK) return report(t, s, msg, msglen);
     dd_shrink_cells(t);     /* the reserve above was a guess */
+    if (dd_publish_all_cells(t) != DD_OK) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     *out = t;
     return DD_OK;
 }

@@ -20,7 +20,7 @@ const char *dd_status_name(dd_status s)
         "infinite coordinate", "too few points", "collinear points",
         "coplanar points", "unknown vertex", "unknown variant",
         "duplicate point", "dimension would drop", "internal error",
-        "bad argument", "unsupported"};
+        "bad argument", "unsupported", "unknown cell", "unknown file format"};
     return (unsigned)s < DD_NUM_STATUS ? names[s] : "unknown status";
 }
 
@@ -55,7 +55,8 @@ size_t dd_memory_bytes(const dd_tri *t)
          + (t->flip[0].cap + t->flip[1].cap + t->flip[2].cap + t->flip[3].cap + t->flip[4].cap) * sizeof(uint32_t)
          + t->grid.cap * sizeof(uint32_t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
-         + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0);
+         + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0)
+         + t->made.cap * sizeof(int64_t);
 }
 
 static void sort4(int32_t *a)

@@ -288,9 +288,10 @@ static int star_test(flip_state *f, uint32_t v, const double *p)
     return 1;
 }
 
-/* The repair succeeded: vertex links, the count of finite cells (every
- * flipped cell is finite: + the new ones, - the replaced ones; a cell
- * made and replaced counts in both), the replaced cells killed.         */
+/* The repair succeeded: vertex links, the cells made and kept noted
+ * (dd_note_made), the count of finite cells (every flipped cell is
+ * finite: + the new ones, - the replaced ones; a cell made and replaced
+ * counts in both), the replaced cells killed.                          */
 static void commit(flip_state *f)
 {
     dd_tri *t = f->t;
@@ -298,6 +299,7 @@ static void commit(flip_state *f)
         const uint32_t c = f->made->a[k];
         if (is_gone(f, c)) continue;
         for (int i = 0; i < 4; i++) t->vcell[dd_tv(t, c)[i]] = c;
+        dd_note_cell(t, c);
     }
     t->nfinite += (uint32_t)f->made->n;
     t->nfinite -= (uint32_t)f->gone->n;

@@ -129,7 +129,7 @@ static uint32_t grid_vertex(const dd_tri *t, const double *p)
     return DD_NONE;
 }
 
-uint32_t dd_start_near(dd_tri *t, const double *p)
+uint32_t dd_start_near(const dd_tri *t, const double *p)
 {
     uint32_t v = t->grid.box ? grid_vertex(t, p) : DD_NONE;
     if (v != DD_NONE) return t->vcell[v];

@@ -105,6 +105,7 @@ void dd_tri_destroy(dd_tri *t)
     free(t->etab);
     dd_grid_free(&t->grid);
     dd_vec_free(&t->vfree);
+    dd_made_free(&t->made);
     for (int k = 0; k < 5; k++) dd_vec_free(&t->flip[k]);
     dd_pred_clear(&t->pred);
     free(t);
@@ -705,6 +706,7 @@ void dd_fill_star(dd_tri *t, uint32_t v)
         if (!outer) t->nfinite++;
     }
     if (nb) t->hint = t->boundary.a[nb - 1];
+    dd_note_made(t, t->boundary.a, nb);
     for (size_t k = 0; k < t->conflict.n; k++) {
         uint32_t c = t->conflict.a[k];
         if (!dd_is_outer_cell(t, c)) t->nfinite--;

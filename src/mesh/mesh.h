@@ -185,6 +185,18 @@ typedef struct dd_grid {
     uint32_t made_for;        /* t->nvert when it was made                */
 } dd_grid;
 
+/* The cells the last edit made (cells.c): noted where the edit commits
+ * them, straight into the public list of dd_created_cells; filtered when
+ * the outermost edit ends if more than one step noted some.            */
+typedef struct dd_made {
+    int64_t *list;            /* live cells, each once, once filtered    */
+    size_t n, cap;
+    int depth;                /* edits open (a set's rollback re-inserts) */
+    int notes;                /* dd_note_made calls in this edit          */
+    int all;                  /* this edit replaced every cell            */
+    int lost;                 /* a note could not be kept (no memory)     */
+} dd_made;
+
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
@@ -230,6 +242,7 @@ struct dd_tri {
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
     unsigned flags;           /* dd_create_ex's DD_* flags               */
+    dd_made made;             /* the cells the last edit made (cells.c)   */
     char err[256];            /* the message of the failure at hand (dd_fail) */
     char errmsg[256];         /* dd_errmsg: the last failed public call's */
 #ifdef DD_TEST_BUILD
@@ -429,7 +442,7 @@ void dd_grid_note(dd_tri *t, uint32_t v);
 void dd_grid_free(dd_grid *g);
 /* A live cell near p to start a walk from: the cell of a vertex of p's
  * box or a box next to it, else t->hint, else the infinite cell.        */
-uint32_t dd_start_near(dd_tri *t, const double *p);
+uint32_t dd_start_near(const dd_tri *t, const double *p);
 /* The cells incident to vertex v, in out (reset first), O(star).        */
 dd_status dd_star_cells(dd_tri *t, uint32_t v, dd_vec *out);
 /* A vertex nearest to p (exactly; any one of ties), by greedy descent
@@ -506,6 +519,52 @@ void dd_tri_destroy(dd_tri *t);
 /* Room for one more vertex id (t->nvid < cap_v) and input index (t->np <
  * cap_in), the arrays doubled if needed: DD_ERR_NOMEM if they cannot.  */
 dd_status dd_reserve_vertex(dd_tri *t);
+
+/* ---- cell handles (cells.c) -------------------------------------------- */
+
+/* An edit of t begins and ends (the public edits of src/ call them;
+ * nested pairs count as one, the outermost).  dd_edit_end(t, s) returns
+ * s; when the outermost edit ends, dd_created_cells lists the live cells
+ * it noted, each once, or none if it succeeded without a note; an edit
+ * that failed with no note leaves the list as it was; a failure's
+ * message becomes dd_errmsg's (dd_end_call).  O(1), or O(cells noted)
+ * when several steps noted cells (a cell of one step may have died in a
+ * later one).                                                         */
+static inline void dd_edit_begin(dd_tri *t)
+{
+    if (t->made.depth++ == 0) {
+        t->made.notes = t->made.all = 0;
+        t->err[0] = 0;
+    }
+}
+void dd_edit_settle(dd_tri *t, dd_status s);
+static inline dd_status dd_edit_end(dd_tri *t, dd_status s)
+{
+    if (--t->made.depth != 0) return s;
+    if (t->made.notes != 1 || t->made.all) dd_edit_settle(t, s);
+    return dd_end_call(t, s);
+}
+/* Notes cells made by the edit under way (nothing outside an edit, as in
+ * the scratch triangulations).  Where the edit commits them: the star of
+ * an insertion, the fill a deletion sews in, the flips a move keeps.
+ * Never fails: a note that cannot be kept makes dd_created_cells say
+ * DD_ERR_NOMEM.  dd_note_all: the edit replaced every cell.            */
+void dd_note_made(dd_tri *t, const uint32_t *cells, size_t n);
+void dd_note_all(dd_tri *t);
+static inline void dd_note_cell(dd_tri *t, uint32_t c)
+{
+    if (t->made.depth) dd_note_made(t, &c, 1);
+}
+/* Publishes every live cell as made (dd_create).  DD_ERR_NOMEM.        */
+dd_status dd_publish_all_cells(dd_tri *t);
+void dd_made_free(dd_made *m);
+/* The exact visibility walk from live cell `start` to a cell whose
+ * closure holds p, or an infinite cell whose hull facet p sees (strictly
+ * beyond it); writes nothing to t (pr: the caller's predicate context,
+ * rng: the caller's dd_xorshift state, not 0).  DD_ERR_INTERNAL if it
+ * does not end (a broken mesh).                                       */
+dd_status dd_walk_const(const dd_tri *t, dd_pred *pr, uint64_t *rng, const double *p, uint32_t start,
+                        uint32_t *out);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);

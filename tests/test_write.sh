@@ -1,0 +1,30 @@
+#!/bin/sh
+# Mesh files (dd_write through `dtdel tets --out`) read back by real
+# readers: meshio (.vtu, .mesh) and VTK's Python module (.vtu), compared
+# with the canonical form (tests/test_write.py).  Needs Debian's
+# python3-meshio, python3-vtk9 and python3-numpy (scripts/deps.sh), run
+# by /usr/bin/python3.  Prints ok/FAIL lines.
+DTDEL=${1:-build/dtdel}
+PY=/usr/bin/python3
+dir=$(dirname "$0")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+if ! $PY -c 'import meshio, vtk, numpy' 2>"$tmp/err"; then
+    echo "FAIL write/readers: $PY cannot import meshio, vtk and numpy (scripts/deps.sh): $(tail -n 1 "$tmp/err")"
+    exit 1
+fi
+"$DTDEL" gen uniform 300 --seed 4 >"$tmp/uniform.xyz"
+"$DTDEL" gen grid 125 >"$tmp/grid.xyz"               # cospherical: the perturbation decides
+{ "$DTDEL" gen cosphere 200; echo "0 0 0"; } >"$tmp/cosphere.xyz"
+# duplicates and a point deleted nowhere: input indices with gaps
+{ head -n 50 "$tmp/uniform.xyz"; head -n 3 "$tmp/uniform.xyz"; sed -n 51,80p "$tmp/uniform.xyz"; } >"$tmp/dups.xyz"
+for ds in uniform grid cosphere dups; do
+    f=$tmp/$ds.xyz
+    if ! "$DTDEL" tets "$f" >"$tmp/$ds.canon" 2>"$tmp/err" || ! "$DTDEL" tets "$f" --out "$tmp/$ds.vtu" 2>>"$tmp/err" ||
+        ! "$DTDEL" tets "$f" --out "$tmp/$ds.mesh" 2>>"$tmp/err"; then
+        echo "FAIL write/$ds: dtdel failed: $(head -c 300 "$tmp/err")"
+        continue
+    fi
+    $PY "$dir/test_write.py" "write/$ds" "$f" "$tmp/$ds.canon" "$tmp/$ds.vtu" "$tmp/$ds.mesh" 2>"$tmp/err" ||
+        echo "FAIL write/$ds: test_write.py exited $?: $(tail -n 3 "$tmp/err")"
+done
