@@ -7,7 +7,8 @@
 #   make bench-quick  a short benchmark (about 2 minutes) into results/quick/
 #   make plots        redraw the plots from results/*.csv
 #   make install      PREFIX=/usr/local [DESTDIR=]: libraries, headers,
-#                     dtdel.pc and the CLI
+#                     dtdel.pc, the CLI and the Python package
+#   make python       the Python package in place: python/dtdel
 #   make clean
 #
 # Three builds share the sources: build/ (release, -O2), build/asan/
@@ -201,7 +202,7 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
 # runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
 test: deps
-	@$(MAKE) --no-print-directory all $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
+	@$(MAKE) --no-print-directory all python $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
 		$(T)/tests/test_threads $(TESTS_CT)
 	@sh tests/run.sh $(B) $(A) $(T) $(C)
 
@@ -223,7 +224,7 @@ plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
 
 # DESTDIR only stages the files: dtdel.pc names PREFIX.
-install: all
+install: all install-python
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
@@ -236,8 +237,28 @@ install: all
 	install -d $(DESTDIR)$(PREFIX)/include/dtdel
 	install -m 644 src/dtdel/types.h src/dtdel/stats_types.h $(DESTDIR)$(PREFIX)/include/dtdel/
 
+# ---- Python bindings (issue 42, part 4) -------------------------------------
+# `make python` copies build/libdtdel.so into python/dtdel/, the package
+# ctypes loads it from (PYTHONPATH=python /usr/bin/python3 -c 'import
+# dtdel').  `make install` also puts the package into PYDIR, Debian
+# python3's site dir under PREFIX, recording there the installed
+# library's path, which the installed package loads.
+PYVER := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
+PYDIR ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
+PY_SRC = $(wildcard python/dtdel/*.py)
+.PHONY: python install-python
+python/dtdel/libdtdel.so: $(B)/libdtdel.so
+	cp $< $@
+python: $(B)/libdtdel.so python/dtdel/libdtdel.so
+install-python:
+	install -d $(DESTDIR)$(PYDIR)/dtdel
+	install -m 644 $(PY_SRC) $(DESTDIR)$(PYDIR)/dtdel/
+	rm -f $(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+	echo 'LIBRARY = "$(PREFIX)/lib/$(SONAME)"' >$(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+# ---- end of the Python block ------------------------------------------------
+
 clean:
-	rm -rf build
+	rm -rf build python/dtdel/libdtdel.so python/dtdel/__pycache__
 
 # ---- soak: a million deletions checked against CGAL (not in make test) ------
 # SOAK_SCALE=0.01 make soak runs in about a minute; the workers (SOAK_JOBS,

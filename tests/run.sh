@@ -44,6 +44,8 @@ run "release write" sh tests/test_write.sh "$REL/dtdel"
 run "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 run "release exports" sh tests/test_exports.sh "$REL"
 run "release install" sh tests/test_install.sh "$REL"
+# the Python bindings (make python: python/dtdel loads the release libdtdel.so)
+run "release python" env PYTHONPATH=python /usr/bin/python3 tests/test_python.py "$REL/dtdel"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     run "asan $(basename "$t")" "$t" small

@@ -1,0 +1,407 @@
+"""
+test_python.py -- the Python bindings (python/dtdel) against CGAL and the header.
+
+Run as tests/run.sh does, from the top of the tree after `make python`:
+    PYTHONPATH=python /usr/bin/python3 tests/test_python.py build/dtdel
+Prints "ok NAME" / "FAIL NAME: why" per assertion (as tests/testlib.h) and
+exits 1 on any failure.  CGAL's triangulations come from the CLI's
+`cgal-tets FILE` (canonical form of the points of FILE, renumbered 0..k-1:
+mapped back to our input indices here).
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+import dtdel
+from dtdel import DtdelError, Triangulation, _lib
+
+CLI = sys.argv[1] if len(sys.argv) > 1 else "build/dtdel"
+HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src", "dtdel.h")
+failed = 0
+
+
+def check(name, cond, why=""):
+    global failed
+    if cond:
+        print("ok " + name)
+    else:
+        failed += 1
+        print("FAIL %s: %s" % (name, why))
+    sys.stdout.flush()
+
+
+def raises(name, status, fn, *args):
+    """fn(*args) must raise DtdelError with that status and a message (or
+    the exception class named by status, such as ValueError)."""
+    try:
+        fn(*args)
+    except DtdelError as e:
+        check(name, e.status == status and e.message and isinstance(e, Exception),
+              "raised %s (%r), expected %s" % (e.status, e.message, status))
+        return
+    except Exception as e:  # noqa: BLE001 - any other exception is the failure
+        check(name, type(e).__name__ == status, "raised %r, expected %s" % (e, status))
+        return
+    check(name, False, "no exception, expected %s" % status)
+
+
+def sort_rows(a):
+    a = np.sort(np.asarray(a, dtype=np.int32).reshape(-1, 4), axis=1)
+    return a[np.lexsort(a.T[::-1])] if len(a) else a
+
+
+def cgal_canonical(live):
+    """CGAL's canonical form of the points {index: xyz}, in our indices."""
+    idx = sorted(live)
+    with tempfile.NamedTemporaryFile("w", suffix=".xyz", delete=False) as f:
+        for i in idx:
+            f.write("%r %r %r\n" % tuple(float(c) for c in live[i]))
+        path = f.name
+    try:
+        out = subprocess.run([CLI, "cgal-tets", path], check=True, capture_output=True,
+                             text=True).stdout
+    finally:
+        os.unlink(path)
+    rows = np.array([[int(x) for x in line.split()] for line in out.splitlines() if line.strip()],
+                    dtype=np.int64)
+    back = np.array(idx + [-1], dtype=np.int64)   # -1 indexes the appended -1
+    return sort_rows(back[rows])
+
+
+def same_as_cgal(name, t, live):
+    ours, ref = t.canonical(), cgal_canonical(live)
+    check(name, ours.shape == ref.shape and np.array_equal(ours, ref),
+          "%d cells, CGAL %d" % (len(ours), len(ref)))
+
+
+def header_functions():
+    text = open(HEADER).read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    return sorted(set(re.findall(r"\b(dd_[a-z0-9_]+)\s*\(", text))), text
+
+
+def test_bindings():
+    names, text = header_functions()
+    check("header has calls", len(names) > 30, "%d names" % len(names))
+    src = open(os.path.join(os.path.dirname(dtdel.__file__), "__init__.py")).read()
+    for n in names:
+        if n in _lib.UNBOUND:
+            continue
+        check("bound " + n, n in _lib.PROTOTYPES and n not in _lib.MISSING
+              and re.search(r"\b%s\b" % n, src) is not None,
+              "not declared in _lib.PROTOTYPES, missing from %s, or unused in __init__.py"
+              % _lib.PATH)
+    for n in _lib.UNBOUND:
+        check("unbound %s is in the header" % n, n in names, "stale exclusion")
+    enum = re.search(r"enum dd_status\s*\{(.*?)\}", text, flags=re.S).group(1)
+    in_header = [e for e in re.findall(r"\b(DD_[A-Z_]+)\b", enum) if e != "DD_NUM_STATUS"]
+    check("status names as the enum", in_header == dtdel.STATUS_NAMES, str(in_header))
+    m = re.search(r"\bDD_STABLE_INDICES\b\s*=?\s*\(?\s*([0-9xXa-fA-F]+)[uU]?\s*(<<\s*(\d+))?", text)
+    if m:
+        val = int(m.group(1), 0) << int(m.group(3) or 0)
+        check("DD_STABLE_INDICES value", val == dtdel.STABLE_INDICES, m.group(0))
+    ver = [re.search(r"#define\s+DD_VERSION_%s\s+(\d+)" % k, text) for k in ("MAJOR", "MINOR", "PATCH")]
+    if all(ver):
+        want = ".".join(m.group(1) for m in ver)
+        check("version", dtdel.version() == want, "%r vs %r" % (dtdel.version(), want))
+
+
+def test_module():
+    vs = dtdel.variants()
+    check("variants", len(vs) >= 5 and "auto" in vs and len(set(vs)) == len(vs), str(vs))
+    d = dtdel.variant_descriptions()
+    check("variant descriptions", list(d) == vs and all(d.values()), str(d))
+    check("status_name", dtdel.status_name(0) == "ok"
+          and dtdel.status_name(9) != dtdel.status_name(10), dtdel.status_name(0))
+
+
+def test_uniform():
+    rng = np.random.default_rng(42)
+    xyz = rng.random((300, 3))
+    live = {i: xyz[i] for i in range(len(xyz))}
+    t = Triangulation(xyz)
+    same_as_cgal("uniform build", t, live)
+    t.check()
+    check("sizes", t.num_input == 300 and t.num_vertices == 300 == len(t)
+          and t.num_duplicates == 0 and t.num_tets == len(t.canonical())
+          and t.num_finite_tets == int((t.canonical() >= 0).all(axis=1).sum())
+          and t.memory_bytes > 0, "")
+    check("points", np.array_equal(t.points, xyz) and np.array_equal(t.point(7), xyz[7])
+          and np.array_equal(t.vertices(), np.arange(300)), "")
+    h = t.canonical_hash()
+    check("canonical_hash", h == dtdel.canonical_hash(t.canonical())
+          and h == dtdel.canonical_hash(cgal_canonical(live)), hex(h))
+
+    # one deletion per variant, each compared with CGAL's triangulation
+    order = rng.permutation(300)
+    for k, var in enumerate(dtdel.variants()):
+        v = int(order[k])
+        t.delete(v, variant=var)
+        del live[v]
+        same_as_cgal("delete with %s" % var, t, live)
+    t.delete(int(order[20]))
+    del live[int(order[20])]
+    same_as_cgal("delete default", t, live)
+    check("hash changes", t.canonical_hash() != h, "")
+
+    # put back, then a set
+    v = int(order[20])
+    t.reinsert(v)
+    live[v] = xyz[v]
+    same_as_cgal("reinsert", t, live)
+    s = [int(x) for x in order[30:80]]
+    t.delete_set(s)
+    for x in s:
+        del live[x]
+    same_as_cgal("delete_set", t, live)
+    s = [int(x) for x in order[80:90]]
+    t.delete_set(s, variant="grr-hashing")
+    for x in s:
+        del live[x]
+    same_as_cgal("delete_set with a variant", t, live)
+
+    p = np.array([0.25, 0.5, 0.75])
+    i = t.insert(p)
+    check("insert index", not any(i == j for j in live) and np.array_equal(t.point(i), p), str(i))
+    live[i] = p
+    same_as_cgal("insert", t, live)
+    v = int(order[100])
+    q = np.array([0.1, 0.9, 0.3])
+    t.move(v, q)
+    live[v] = q
+    same_as_cgal("move", t, live)
+    t.check()
+    check("check after edits", True)
+    test_queries(t, live, "edited: ")
+    t.close()
+    try:
+        t.num_vertices
+        check("closed raises", False, "no exception")
+    except ValueError:
+        check("closed raises", True)
+
+
+def test_queries(t, live, tag):
+    can = t.canonical()
+    verts, nbrs = t.cells()
+    check(tag + "cells are the canonical cells", np.array_equal(sort_rows(verts), can), "")
+    sym = all(c in nbrs[nbrs[c, i]] for c in range(len(nbrs)) for i in range(4))
+    shared = all(len(set(verts[c]) & set(verts[nbrs[c, i]])) == 3
+                 for c in range(len(nbrs)) for i in range(4))
+    check(tag + "cells' neighbours", sym and shared and verts.dtype == np.int32
+          and nbrs.dtype == np.int32, "")
+
+    finite = np.flatnonzero((verts >= 0).all(axis=1))
+    ok_loc = ok_near = True
+    idx = np.array(sorted(live))
+    pts = np.array([live[i] for i in idx])
+    for c in finite[:40]:
+        centre = pts[np.searchsorted(idx, verts[c])].mean(axis=0)
+        ok_loc &= sorted(t.locate(centre)) == sorted(verts[c].tolist())
+        near = int(idx[np.argmin(((pts - centre) ** 2).sum(axis=1))])
+        ok_near &= t.nearest_vertex(centre) == near
+    check(tag + "locate a cell's centroid", ok_loc, "")
+    check(tag + "nearest_vertex", ok_near, "")
+    out = t.locate([5.0, 5.0, 5.0])
+    check(tag + "locate outside the hull", -1 in out, str(out))
+
+    ok_nb = ok_inc = ok_loc_can = True
+    for v in idx[:30]:
+        v = int(v)
+        rows = can[(can == v).any(axis=1)]
+        nb = set(rows[rows >= 0].tolist()) - {v}
+        hull = bool((rows < 0).any())
+        ok_nb &= (set(t.neighbors(v).tolist()) == nb and t.degree(v) == len(nb) + hull
+                  and t.on_hull(v) == hull and len(t.neighbors(v)) == len(nb))
+        ok_inc &= np.array_equal(sort_rows(t.incident_cells(v)), rows)
+        ok_loc_can &= np.array_equal(t.local_canonical([v]), rows)
+    check(tag + "neighbors, degree, on_hull", ok_nb, "")
+    check(tag + "incident_cells", ok_inc, "")
+    check(tag + "local_canonical", ok_loc_can, "")
+    check(tag + "is_vertex", t.is_vertex(int(idx[0])) and not t.is_vertex(10 ** 6)
+          and not t.is_vertex(-1), "")
+
+
+def test_degenerate():
+    g = np.array([[x, y, z] for x in range(4) for y in range(4) for z in range(4)], dtype=float)
+    xyz = np.vstack([g, g[5:6]])                    # a duplicate of point 5 at the end
+    t = Triangulation(xyz)
+    live = {i: g[i] for i in range(len(g))}
+    check("duplicates", t.num_duplicates == 1 and t.alias(64) == 5 and t.alias(5) == 5
+          and not t.is_vertex(64) and t.num_input == 65, "")
+    same_as_cgal("grid build", t, live)
+    for v in (0, 21, 42, 63):                       # a corner, interior, interior, corner
+        t.delete(v)
+        del live[v]
+    same_as_cgal("grid deletions", t, live)
+    t.check()
+    check("grid check", True)
+
+
+def test_errors():
+    rng = np.random.default_rng(7)
+    xyz = rng.random((50, 3))
+    bad = xyz.copy()
+    bad[3, 1] = np.nan
+    raises("create NaN", "DD_ERR_NAN", Triangulation, bad)
+    bad[3, 1] = np.inf
+    raises("create inf", "DD_ERR_INFINITE", Triangulation, bad)
+    flat = xyz.copy()
+    flat[:, 2] = 0.5
+    raises("create coplanar", "DD_ERR_COPLANAR", Triangulation, flat)
+    raises("create too few", "DD_ERR_TOO_FEW", Triangulation, xyz[:3])
+    try:
+        Triangulation(xyz[:, :2])
+        check("create bad shape", False, "no exception")
+    except ValueError:
+        check("create bad shape", True)
+    try:
+        Triangulation(bad)
+    except DtdelError as e:
+        check("error message names the point", "3" in e.message and e.code == 5
+              and str(e).startswith("DD_ERR_INFINITE"), e.message)
+
+    with Triangulation(xyz) as t:
+        before = t.canonical()
+        raises("delete unknown vertex", "DD_ERR_UNKNOWN_VERTEX", t.delete, 1000)
+        raises("delete negative vertex", "DD_ERR_UNKNOWN_VERTEX", t.delete, -1)
+        raises("delete 2^32", "DD_ERR_UNKNOWN_VERTEX", t.delete, 1 << 32)
+        raises("bad variant", "DD_ERR_UNKNOWN_VARIANT", t.delete, 3, "no-such-fill")
+        raises("delete_set twice listed", "DD_ERR_ARG", t.delete_set, [4, 9, 4])
+        raises("delete_set bad variant", "DD_ERR_UNKNOWN_VARIANT", t.delete_set, [4], "x")
+        raises("insert duplicate", "DD_ERR_DUPLICATE", t.insert, xyz[8])
+        raises("insert NaN", "DD_ERR_NAN", t.insert, [0.5, np.nan, 0.5])
+        raises("move NaN", "DD_ERR_NAN", t.move, 2, [0.5, np.nan, 0.5])
+        raises("move onto a vertex", "DD_ERR_DUPLICATE", t.move, 2, xyz[8])
+        raises("reinsert a vertex", "DD_ERR_DUPLICATE", t.reinsert, 2)
+        raises("locate NaN", "DD_ERR_NAN", t.locate, [np.nan, 0, 0])
+        raises("nearest inf", "DD_ERR_INFINITE", t.nearest_vertex, [np.inf, 0, 0])
+        raises("point of no vertex", "DD_ERR_UNKNOWN_VERTEX", t.point, 1000)
+        raises("degree of no vertex", "DD_ERR_UNKNOWN_VERTEX", t.degree, 1000)
+        raises("neighbors of no vertex", "DD_ERR_UNKNOWN_VERTEX", t.neighbors, 1000)
+        raises("alias out of range", "DD_ERR_UNKNOWN_VERTEX", t.alias, 1000)
+        check("failures change nothing", np.array_equal(t.canonical(), before), "")
+        t.delete_set(list(range(4, 50)))
+        raises("delete to 3 points", "DD_ERR_DIMENSION", t.delete, 0)
+        check("4 points left", t.num_vertices == 4 and t.num_finite_tets == 1, "")
+
+
+def test_cell_handles():
+    """The cell handles of issue 42, once the library has them."""
+    if "dd_cell" in _lib.MISSING:
+        print("# cell handles not in this libdtdel: skipped")
+        return
+    rng = np.random.default_rng(3)
+    xyz = rng.random((200, 3))
+    with Triangulation(xyz) as t:
+        end = t.cell_end()
+        live = [c for c in range(end) if t.cell_alive(c)]
+        rows = [t.cell(c)[0] for c in live]
+        check("cell ids are the cells", np.array_equal(sort_rows(rows), t.canonical()), "")
+        ok = all(c in t.cell(t.cell(c)[1][i])[1] for c in live[:100] for i in range(4))
+        check("cell neighbours", ok, "")
+        c = t.locate_from([0.5, 0.5, 0.5])
+        check("locate_from", sorted(t.cell(c)[0]) == sorted(t.locate([0.5, 0.5, 0.5]))
+              and t.locate_from([0.5, 0.5, 0.5], hint=live[0]) >= 0, str(c))
+        i = t.insert([0.31, 0.41, 0.59])
+        made = t.created_cells()
+        star = sort_rows([t.cell(c)[0] for c in made])
+        check("created_cells: the new star", np.array_equal(star, sort_rows(t.incident_cells(i))),
+              "%d cells" % len(made))
+        t.delete(i)
+        made = t.created_cells()
+        check("created_cells after a deletion", all(t.cell_alive(c) for c in made)
+              and np.array_equal(sort_rows([t.cell(c)[0] for c in range(t.cell_end())
+                                            if t.cell_alive(c)]), t.canonical()), "")
+        raises("cell of a dead id", "DD_ERR_UNKNOWN_CELL", t.cell, t.cell_end() + 5)
+        raises("locate_from a bad hint", "DD_ERR_UNKNOWN_CELL", t.locate_from, [0.5] * 3,
+               t.cell_end() + 5)
+
+
+def test_write():
+    if "dd_write" in _lib.MISSING:
+        print("# dd_write not in this libdtdel: skipped")
+        return
+    rng = np.random.default_rng(5)
+    with Triangulation(rng.random((60, 3))) as t, tempfile.TemporaryDirectory() as d:
+        for ext in ("vtu", "mesh"):
+            path = os.path.join(d, "m." + ext)
+            t.write(path)
+            check("write ." + ext, os.path.getsize(path) > 0, path)
+        # the Medit file's tetrahedra, 1-based over the vertices in index order
+        words = open(os.path.join(d, "m.mesh")).read().split()
+        k = words.index("Tetrahedra")
+        m = int(words[k + 1])
+        tets = np.array(words[k + 2:k + 2 + 5 * m], dtype=np.int64).reshape(m, 5)[:, :4] - 1
+        finite = t.canonical()[(t.canonical() >= 0).all(axis=1)]
+        check("write .mesh: the finite cells",
+              np.array_equal(sort_rows(t.vertices()[tets]), finite), "%d tetrahedra" % m)
+        raises("write an unknown extension", "DD_ERR_UNKNOWN_FORMAT", t.write,
+               os.path.join(d, "m.unknown"))
+
+
+def test_stable_indices():
+    if "dd_create_ex" in _lib.MISSING:
+        print("# dd_create_ex not in this libdtdel: skipped")
+        return
+    rng = np.random.default_rng(9)
+    xyz = rng.random((40, 3))
+    with Triangulation(xyz, stable_indices=True) as t:
+        t.delete(3)
+        i = t.insert([0.3, 0.3, 0.3])
+        check("stable indices: no reuse", i == 40, str(i))
+    with Triangulation(xyz) as t:
+        t.delete(3)
+        check("default reuses", t.insert([0.3, 0.3, 0.3]) == 3, "")
+    raises("weights unsupported", "DD_ERR_UNSUPPORTED", Triangulation, xyz, np.zeros(40))
+    raises("bad weights shape", "ValueError", Triangulation, xyz, np.zeros(3))
+
+
+def test_install():
+    """make install into a temporary prefix: the installed package imports
+    from Debian python3's site dir there and loads the installed library."""
+    top = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    build = os.path.dirname(os.path.abspath(CLI))
+    with tempfile.TemporaryDirectory() as pre:
+        r = subprocess.run(["make", "-s", "--no-print-directory", "install", "PREFIX=" + pre,
+                            "B=" + build], cwd=top, capture_output=True, text=True)
+        check("make install", r.returncode == 0, r.stderr[-300:])
+        site = os.path.join(pre, "lib", "python%d.%d" % sys.version_info[:2], "dist-packages")
+        code = ("import dtdel, dtdel._lib as L, numpy as np; "
+                "t = dtdel.Triangulation([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]); "
+                "print(L.PATH, t.num_finite_tets)")
+        env = dict(os.environ, PYTHONPATH=site)
+        env.pop("DTDEL_LIBRARY", None)
+        r = subprocess.run(["/usr/bin/python3", "-c", code], cwd=pre, env=env,
+                           capture_output=True, text=True)
+        want = os.path.join(pre, "lib", "libdtdel.so.") 
+        check("installed package loads the installed library",
+              r.returncode == 0 and r.stdout.startswith(want), r.stdout + r.stderr[-300:])
+
+
+def main():
+    for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
+              test_errors, test_cell_handles, test_write, test_stable_indices, test_install):
+        try:
+            f()
+        except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
+            import traceback
+            traceback.print_exc()
+            check(f.__name__, False, "raised %r" % e)
+    sys.exit(1 if failed else 0)
+
+
+def test_queries_on_build():
+    rng = np.random.default_rng(11)
+    xyz = rng.random((150, 3))
+    with Triangulation(xyz) as t:
+        test_queries(t, {i: xyz[i] for i in range(150)}, "built: ")
+
+
+if __name__ == "__main__":
+    main()
