@@ -47,20 +47,6 @@ static dd_status refute(char *msg, size_t msglen, dd_status s, const char *fmt, 
     return s;
 }
 
-/* dd_cell_conflict on the predicates pr. */
-static int cell_conflict(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p)
-{
-    const uint32_t *v = dd_tv(t, c);
-    const double *q[4];
-    int k = -1, kd = -1;
-    for (int i = 0; i < 4; i++) {
-        if (v[i] == DD_INF) { k = i; q[i] = NULL; }
-        else if (v[i] == DD_QD) { kd = i; q[i] = t->qd_point; }
-        else q[i] = dd_pt(t, v[i]);
-    }
-    return dd_points_conflict(pr, q, k, kd, p);
-}
-
 /* The checks on combinatorics, orientation and links (all but the
  * empty-sphere test).                                                   */
 static dd_status check_cells(const dd_tri *t, dd_pred *pr, char *msg, size_t msglen)
@@ -136,7 +122,7 @@ dd_status dd_mesh_check(const dd_tri *t, char *msg, size_t msglen)
             uint32_t f = dd_tn(t, c)[i];
             uint32_t w = *dd_fv(t, f);
             if (w == DD_INF) continue;
-            if (cell_conflict(t, &pr, c, dd_pt(t, w)))
+            if (dd_cell_conflict_on(t, &pr, c, dd_pt(t, w)))
                 s = refute(msg, msglen, DD_ERR_INTERNAL,
                            "facet %u of cell %u is not locally Delaunay: point %d is in conflict",
                            i, c, dd_input_index(t, w));

@@ -375,6 +375,11 @@ int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const dou
 
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
 {
+    return dd_cell_conflict_on(t, &t->pred, c, p);
+}
+
+int dd_cell_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p)
+{
     const uint32_t *v = dd_tv(t, c);
     const double *q[4];
     int k = -1, kd = -1;
@@ -383,7 +388,7 @@ int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p)
         else if (v[i] == DD_QD) { kd = i; q[i] = t->qd_point; }
         else q[i] = dd_pt(t, v[i]);
     }
-    return dd_points_conflict(&t->pred, q, k, kd, p);
+    return dd_points_conflict(pr, q, k, kd, p);
 }
 
 /* orient3d of cell c with its vertex i replaced by p (c finite). */

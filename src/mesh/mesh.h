@@ -389,6 +389,8 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
  * two other vertices swapped (paper 4.1: (a,b,c,q_d) is tested as the
  * ordinary cell (b,a,c,q)).                                               */
 int dd_cell_conflict(dd_tri *t, uint32_t c, const double *p);
+/* dd_cell_conflict on the predicates pr (a read-only call's own).      */
+int dd_cell_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p);
 /* dd_cell_conflict with the filter inlined for finite cells (the hot
  * tests of the conflict search and of the flips): only these sites
  * inline the filter, which elsewhere would grow the code for no gain.   */
