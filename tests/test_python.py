@@ -79,7 +79,9 @@ def same_as_cgal(name, t, live):
 
 
 def header_functions():
+    # dtdel.h and the types it includes (dtdel/types.h: the status enum)
     text = open(HEADER).read()
+    text += open(os.path.join(os.path.dirname(HEADER), "dtdel", "types.h")).read()
     text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
     text = re.sub(r"//[^\n]*", " ", text)
     return sorted(set(re.findall(r"\b(dd_[a-z0-9_]+)\s*\(", text))), text
