@@ -133,7 +133,7 @@ $(B)/dtdel.pc: dtdel.pc.in src/dtdel.h | $(DEPS_STAMP)
 # The CLI uses only the public calls: it links the installed archive.
 $(B)/dtdel: $(CLI_SRC:%.c=$(B)/obj/%.o) $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel.a | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
-$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h | $(DEPS_STAMP)
+$(B)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a -o $@ $(LIBS)
@@ -147,7 +147,7 @@ $(A)/libdtdel.a: $(LIB_OBJ_A) | $(DEPS_STAMP)
 	ar rcs $@ $^
 $(A)/dtdel: $(CLI_SRC:%.c=$(A)/obj/%.o) $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a | $(DEPS_STAMP)
 	$(CXX) $(CXXFLAGS_A) $^ -o $@ $(LIBS)
-$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h | $(DEPS_STAMP)
+$(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
@@ -165,7 +165,7 @@ $(T)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 $(T)/libdtdel.a: $(LIB_OBJ_T) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(T)/tests/test_threads: tests/test_threads.c $(DATA_OBJ_T) $(T)/libdtdel.a tests/testlib.h | $(DEPS_STAMP)
+$(T)/tests/test_threads: tests/test_threads.c $(DATA_OBJ_T) $(T)/libdtdel.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_T) -pthread $< $(DATA_OBJ_T) $(T)/libdtdel.a -o $@ $(LIBS)
 $(B)/tests/test_threads $(A)/tests/test_threads: LIBS += -pthread
@@ -177,7 +177,7 @@ $(C)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 $(C)/libdtdel.a: $(LIB_OBJ_CT) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(C)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(C)/libdtdel.a tests/testlib.h | $(DEPS_STAMP)
+$(C)/tests/%: tests/%.c $(DATA_OBJ_B) $(SHIM_OBJ) $(C)/libdtdel.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_CT) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_R) $@.o $(DATA_OBJ_B) $(SHIM_OBJ) $(C)/libdtdel.a -o $@ $(LIBS)

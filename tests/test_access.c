@@ -15,43 +15,12 @@
  *  - NaN or infinite queries get their status and change nothing.
  */
 #include "testlib.h"
+#include "testcgal.h"
 #include <gmp.h>
 #include <math.h>
 #include "dtdel.h"
 #include "cgal/cgal_shim.h"
 #include "../datasets/datasets.h"
-
-static double *gen(const char *ds, uint32_t n, uint64_t seed, uint32_t *np)
-{
-    double *p = NULL;
-    char msg[256];
-    if (dd_gen(ds, n, seed, &p, np, msg, sizeof msg) != DD_OK) {
-        fprintf(stderr, "gen %s: %s\n", ds, msg);
-        exit(1);
-    }
-    return p;
-}
-
-/* sign(|p - a|^2 - |p - b|^2) in exact rationals. */
-static int cmp_dist_exact(const double *p, const double *a, const double *b)
-{
-    mpq_t x, y, s;
-    mpq_inits(x, y, s, NULL);
-    for (int c = 0; c < 3; c++) {
-        mpq_set_d(x, p[c]);
-        mpq_set_d(y, a[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_add(s, s, y);
-        mpq_set_d(y, b[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_sub(s, s, y);
-    }
-    int r = mpq_sgn(s);
-    mpq_clears(x, y, s, NULL);
-    return r;
-}
 
 static int cmp_i4(const void *a, const void *b)
 {
@@ -116,33 +85,13 @@ static void check_cells(tl_state *st, const char *name, dd_tri *t, const double 
     free(ref), free(mine), free(v), free(nb);
 }
 
-/* Whether the located cell holds p: every orientation with p in a
- * vertex's place >= 0 (for an infinite cell, the one in the infinite
- * vertex's place: p on the outer side of its hull facet or in its plane). */
-static int holds(dd_tri *t, const int32_t cell[4], const double *p)
-{
-    double x[4][3];
-    int inf = -1;
-    for (int i = 0; i < 4; i++) {
-        if (cell[i] < 0) inf = i;
-        else if (dd_point(t, (uint32_t)cell[i], x[i]) != DD_OK) return 0;
-    }
-    for (int i = 0; i < 4; i++) {
-        if (inf >= 0 && i != inf) continue;
-        const double *q[4] = {x[0], x[1], x[2], x[3]};
-        q[i] = p;
-        if (dd_cgal_orientation(q[0], q[1], q[2], q[3]) < 0) return 0;
-    }
-    return 1;
-}
-
 /* The nearest vertex by brute force, exactly; 1 if v is as near. */
 static int nearest_ok(dd_tri *t, const double *pts, uint32_t n, const double *p, uint32_t v)
 {
     double a[3];
     if (dd_point(t, v, a) != DD_OK) return 0;
     for (uint32_t w = 0; w < n; w++)
-        if (dd_is_vertex(t, w) && cmp_dist_exact(p, a, pts + 3 * (size_t)w) > 0) return 0;
+        if (dd_is_vertex(t, w) && tl_cmp_dist_exact(p, a, pts + 3 * (size_t)w) > 0) return 0;
     return 1;
 }
 
@@ -182,7 +131,7 @@ static void check_queries(tl_state *st, const char *name, dd_tri *t, const doubl
             }
             int32_t cell[4];
             done++;
-            bad_loc += dd_locate(t, p, cell) != DD_OK || !holds(t, cell, p);
+            bad_loc += dd_locate(t, p, cell) != DD_OK || !tl_holds(t, cell, p);
             uint32_t nv = UINT32_MAX;
             bad_near += dd_nearest_vertex(t, p, &nv) != DD_OK || !nearest_ok(t, pts, n, p, nv);
         }
@@ -223,7 +172,7 @@ static void check_sequence(tl_state *st, const char *ds, uint32_t n, uint32_t op
     char tn[128], msg[256];
     snprintf(tn, sizeof tn, "insert-sequence/%s-%u", ds, n);
     uint32_t np, nn;
-    double *p = gen(ds, n, seed, &np), *fresh = gen(ds, 2 * n, seed + 11, &nn);
+    double *p = tl_gen(ds, n, seed, &np), *fresh = tl_gen(ds, 2 * n, seed + 11, &nn);
     dd_tri *t;
     if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
         tl_check(st, 0, tn, "dd_create: %s", msg);
@@ -283,7 +232,7 @@ static void check_churn(tl_state *st, uint32_t n, uint32_t rounds)
     char tn[64], msg[256];
     snprintf(tn, sizeof tn, "churn-memory/uniform-%u", n);
     uint32_t np;
-    double *p = gen("uniform", n, 3, &np);
+    double *p = tl_gen("uniform", n, 3, &np);
     dd_tri *t;
     dd_create(&t, p, np, msg, sizeof msg);
     free(p);
@@ -323,7 +272,7 @@ static void check_bad_input(tl_state *st)
 {
     char msg[256];
     uint32_t np;
-    double *p = gen("uniform", 300, 9, &np);
+    double *p = tl_gen("uniform", 300, 9, &np);
     dd_tri *t;
     dd_create(&t, p, np, msg, sizeof msg);
     int32_t *before = NULL, *after = NULL;
@@ -358,7 +307,7 @@ int main(int argc, char **argv)
         {"uniform", 2000}, {"grid", 216}, {"grid", 1000}, {"cosphere", 300}, {"sphere", 500}, {"layers", 128}};
     for (size_t i = 0; i < sizeof sets / sizeof *sets; i++) {
         uint32_t np;
-        double *p = gen(sets[i].ds, small ? sets[i].n / 2 : sets[i].n, 5, &np);
+        double *p = tl_gen(sets[i].ds, small ? sets[i].n / 2 : sets[i].n, 5, &np);
         char name[64], msg[256];
         snprintf(name, sizeof name, "%s-%u", sets[i].ds, np);
         dd_tri *t;

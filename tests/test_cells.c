@@ -15,6 +15,7 @@
  *    keeps the exact maximum and ends in CGAL's triangulation.
  */
 #include "testlib.h"
+#include "testcgal.h"
 #include <math.h>
 #include "dtdel.h"
 #include "cgal/cgal_shim.h"
@@ -22,17 +23,6 @@
 #include "../datasets/datasets.h"
 
 static int small;
-
-static double *gen(const char *ds, uint32_t n, uint64_t seed, uint32_t *np)
-{
-    double *p = NULL;
-    char msg[256];
-    if (dd_gen(ds, n, seed, &p, np, msg, sizeof msg) != DD_OK) {
-        fprintf(stderr, "gen %s: %s\n", ds, msg);
-        exit(1);
-    }
-    return p;
-}
 
 static dd_tri *create(const double *p, uint32_t n)
 {
@@ -318,7 +308,7 @@ static dd_cell_id *copy_list(dd_tri *t, size_t *n)
 static void check_edits(tl_state *st, uint64_t seed)
 {
     uint32_t n0 = small ? 400 : 3000, np;
-    double *pts = gen("uniform", n0, seed, &np);
+    double *pts = tl_gen("uniform", n0, seed, &np);
     dd_tri *t = create(pts, np);
     char tn[128];
     {
@@ -481,7 +471,7 @@ static int entry_of(dd_tri *t, const double *pts, dd_cell_id c, qentry *e)
 static void check_refinement(tl_state *st, uint64_t seed)
 {
     uint32_t n0 = small ? 300 : 2000, k = small ? 150 : 1500, np;
-    double *pts = gen("uniform", n0, seed, &np);
+    double *pts = tl_gen("uniform", n0, seed, &np);
     pts = realloc(pts, 3 * ((size_t)np + k) * sizeof *pts);
     dd_tri *t = create(pts, np);
     queue q = {0};
@@ -537,7 +527,7 @@ int main(int argc, char **argv)
     uint32_t np;
     const char *sets[] = {"uniform", "grid", "cosphere"};
     for (int i = 0; i < 3; i++) {
-        double *pts = gen(sets[i], small ? 300 : 2000, 5, &np);
+        double *pts = tl_gen(sets[i], small ? 300 : 2000, 5, &np);
         dd_tri *t = create(pts, np);
         check_cell_reads(&st, sets[i], t);
         check_locate_from(&st, sets[i], t, pts, np, 11 + (uint64_t)i);

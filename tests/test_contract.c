@@ -17,21 +17,11 @@
  *    the points with their indices, and memory grows with the churn.
  */
 #include "testlib.h"
+#include "testcgal.h"
 
 #include <math.h>
 
 #include "../datasets/datasets.h"
-
-static double *gen(const char *ds, uint32_t n, uint64_t seed, uint32_t *np)
-{
-    double *p = NULL;
-    char msg[256];
-    if (dd_gen(ds, n, seed, &p, np, msg, sizeof msg) != DD_OK) {
-        fprintf(stderr, "gen %s: %s\n", ds, msg);
-        exit(1);
-    }
-    return p;
-}
 
 static int same_canonical(const dd_tri *a, const dd_tri *b)
 {
@@ -222,7 +212,7 @@ int main(int argc, char **argv)
     tl_state st = {0, 0};
     const int small = argc > 1 && !strcmp(argv[1], "small");
     uint32_t np;
-    double *p = gen("uniform", small ? 300 : 2000, 5, &np);
+    double *p = tl_gen("uniform", small ? 300 : 2000, 5, &np);
     char msg[256];
     dd_tri *t;
     if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {

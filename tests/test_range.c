@@ -28,6 +28,7 @@
  * (a unit cube, an integer grid).
  */
 #include "testlib.h"
+#include "testcgal.h"
 #include <float.h>
 #include <gmp.h>
 #include <math.h>
@@ -54,47 +55,6 @@ static int same_as(dd_tri *t, const dd_cgal *g)
     int ok = dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(g, &b, &nb) && same_canon(a, na, b, nb);
     free(a), free(b);
     return ok;
-}
-
-/* sign(|p - a|^2 - |p - b|^2) in exact rationals. */
-static int cmp_dist_exact(const double *p, const double *a, const double *b)
-{
-    mpq_t x, y, s;
-    mpq_inits(x, y, s, NULL);
-    for (int c = 0; c < 3; c++) {
-        mpq_set_d(x, p[c]);
-        mpq_set_d(y, a[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_add(s, s, y);
-        mpq_set_d(y, b[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_sub(s, s, y);
-    }
-    int r = mpq_sgn(s);
-    mpq_clears(x, y, s, NULL);
-    return r;
-}
-
-/* Whether the located cell holds p (CGAL's exact orientations): every
- * orientation with p in a vertex's place >= 0; for an infinite cell, the
- * one in the infinite vertex's place.                                    */
-static int holds(dd_tri *t, const int32_t cell[4], const double *p)
-{
-    double x[4][3];
-    int inf = -1;
-    for (int i = 0; i < 4; i++) {
-        if (cell[i] < 0) inf = i;
-        else if (dd_point(t, (uint32_t)cell[i], x[i]) != DD_OK) return 0;
-    }
-    for (int i = 0; i < 4; i++) {
-        if (inf >= 0 && i != inf) continue;
-        const double *q[4] = {x[0], x[1], x[2], x[3]};
-        q[i] = p;
-        if (dd_cgal_orientation(q[0], q[1], q[2], q[3]) < 0) return 0;
-    }
-    return 1;
 }
 
 /* ---- the predicates at the ends of the range ----------------------------- */
@@ -125,7 +85,7 @@ static void pred_tuple(dd_pred *pr, ptally *t, double q[5][3], int e)
             if (q[i][0] == q[j][0] && q[i][1] == q[j][1] && q[i][2] == q[j][2]) return;
     int o = dd_orient3d(pr, q[0], q[1], q[2], q[3]);
     pnote(t, o, dd_cgal_orientation(q[0], q[1], q[2], q[3]), "orientation", e);
-    pnote(t, dd_compare_distance(pr, q[4], q[0], q[1]), cmp_dist_exact(q[4], q[0], q[1]), "compare_distance", e);
+    pnote(t, dd_compare_distance(pr, q[4], q[0], q[1]), tl_cmp_dist_exact(q[4], q[0], q[1]), "compare_distance", e);
     if (o == 0) return;
     if (o < 0) {
         double x[3];
@@ -513,7 +473,7 @@ static void check_queries(tl_state *st, const rset *s, dd_tri *t, double (*q)[3]
     for (uint32_t k = 0; k < nq; k++) {
         int32_t cell[4];
         dd_status ls = dd_locate(t, q[k], cell);
-        if (ls != DD_OK || !holds(t, cell, q[k])) {
+        if (ls != DD_OK || !tl_holds(t, cell, q[k])) {
             if (!bad_loc++)
                 snprintf(why, sizeof why, "locate (%g, %g, %g): %s", q[k][0], q[k][1], q[k][2], dd_status_name(ls));
         }
@@ -521,9 +481,9 @@ static void check_queries(tl_state *st, const rset *s, dd_tri *t, double (*q)[3]
         double a[3];
         int ok = dd_nearest_vertex(t, q[k], &v) == DD_OK && dd_point(t, v, a) == DD_OK;
         for (uint32_t w = 0; w < s->n && ok; w++)
-            if (dd_is_vertex(t, w)) ok = cmp_dist_exact(q[k], a, s->p + 3 * (size_t)w) <= 0;
+            if (dd_is_vertex(t, w)) ok = tl_cmp_dist_exact(q[k], a, s->p + 3 * (size_t)w) <= 0;
         int64_t c = cq ? dd_cgalq_nearest(cq, q[k]) : -1;
-        ok = ok && c >= 0 && c < s->n && cmp_dist_exact(q[k], a, s->p + 3 * c) == 0;
+        ok = ok && c >= 0 && c < s->n && tl_cmp_dist_exact(q[k], a, s->p + 3 * c) == 0;
         if (!ok && !bad_near++)
             snprintf(why, sizeof why, "nearest (%g, %g, %g): %u, CGAL's %lld", q[k][0], q[k][1], q[k][2], v,
                      (long long)c);
