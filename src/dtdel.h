@@ -123,16 +123,45 @@ enum {
      * stay true.  Memory then grows with the insertions, not with the
      * live size.  Without it, dd_insert reuses a deleted vertex's index
      * (see dd_insert).                                                   */
-    DD_STABLE_INDICES = 1u << 0
+    DD_STABLE_INDICES = 1u << 0,
+    /* Weighted only: a point that becomes hidden is forgotten, as CGAL's
+     * Discard_hidden_points (Mesh_3's compact cell base); by default
+     * hidden points are kept, as in CGAL's default cell base.          */
+    DD_DISCARD_HIDDEN = 1u << 1
 };
 
-/* dd_create with options.  weights must be NULL (weighted points are not
- * supported yet: DD_ERR_UNSUPPORTED); flags is 0 or an OR of the DD_*
- * flags above (any other bit: DD_ERR_ARG).                              */
+/* dd_create with options.  weights NULL: the Delaunay triangulation, as
+ * dd_create.  Otherwise weights[i] is the weight of point i, and the result
+ * is the regular triangulation, identical simplex for simplex to CGAL's
+ * Regular_triangulation_3 (Epick), with the same hidden points.  flags is 0
+ * or an OR of the DD_* flags above (any other bit: DD_ERR_ARG).          */
 dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n,
                        unsigned flags, char *msg, size_t msglen);
 
 void dd_free(dd_tri *t);
+
+/* ---- weighted points (regular triangulations, DESIGN 12) ----------------- */
+
+/* 1 if t was made with weights (dd_create_ex), else 0.  O(1). */
+int dd_is_weighted(const dd_tri *t);
+/* The weight of input point i (0 on an unweighted t).  O(1).
+ * DD_ERR_ARG: i is not an input index.                                  */
+dd_status dd_weight(const dd_tri *t, uint32_t i, double *w);
+/* 1: input point i is kept but hidden (its lifted point lies above the
+ * lower hull); 0 otherwise (a vertex, deleted, forgotten, out of range). O(1). */
+int dd_is_hidden(const dd_tri *t, uint32_t i);
+/* The input indices of the kept hidden points, sorted ascending, in *idx
+ * (malloc'd, the caller frees; NULL when *n is 0).  O(h log h) for h
+ * hidden points.  DD_ERR_NOMEM.                                           */
+dd_status dd_hidden(const dd_tri *t, uint32_t **idx, size_t *n);
+/* Inserts the weighted point (p, w) and returns its input index (numbered
+ * as dd_insert numbers).  It may end hidden (still DD_OK, and *index
+ * names it), and it may hide vertices, which become hidden points (or are
+ * forgotten under DD_DISCARD_HIDDEN).  A point at a vertex's position
+ * follows CGAL's rule.  O(log n) expected plus the conflict region.
+ * DD_ERR_UNSUPPORTED on an unweighted t; DD_ERR_NAN / DD_ERR_INFINITE for a bad
+ * coordinate or weight; DD_ERR_NOMEM.  A failure changes nothing.        */
+dd_status dd_insert_weighted(dd_tri *t, const double p[3], double w, uint32_t *index);
 
 /* The message of the last failed edit on t: "" if none has failed; a
  * later success does not clear it; read-only calls write none (see

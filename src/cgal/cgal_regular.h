@@ -1,0 +1,47 @@
+/*
+ * cgal_regular.h -- the C face of CGAL's Regular_triangulation_3 (DESIGN 7,
+ * 12): the reference for weighted points.
+ *
+ * It wraps Regular_triangulation_3 over Exact_predicates_inexact_
+ * constructions_kernel, with info = input index on vertices, and keeps
+ * hidden points (CGAL's default cell base, Keep_hidden_points) or forgets
+ * them (Discard_hidden_points), as chosen at creation.  Hidden points are
+ * reported by input index.  No function throws; each returns 0 on success,
+ * nonzero on failure.
+ */
+#ifndef DD_CGAL_REGULAR_H
+#define DD_CGAL_REGULAR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct dd_cgal_rt dd_cgal_rt;
+
+/* CGAL's regular triangulation of the n weighted points (xyz[3i..3i+2],
+ * w[i]), built by CGAL's range insert (its own spatial sort), input index
+ * i for point i.  discard_hidden: 1 forgets hidden points.  NULL when CGAL
+ * cannot (fewer than 4 points, or the vertices span less than 3D).       */
+dd_cgal_rt *dd_cgal_rt_build(const double *xyz, const double *w, uint32_t n, int discard_hidden);
+void dd_cgal_rt_free(dd_cgal_rt *c);
+
+/* Canonical cells (as dd_canonical: each cell's four input indices sorted,
+ * -1 for the infinite vertex, the list sorted) and the sorted input
+ * indices of the kept hidden points.  Arrays malloc'd, caller frees.     */
+int dd_cgal_rt_canonical(const dd_cgal_rt *c, int32_t **tets, size_t *ntets);
+int dd_cgal_rt_hidden(const dd_cgal_rt *c, uint32_t **idx, size_t *n);
+
+/* Inserts (p, w) as input index `index` (the next one: the number of
+ * points given so far), hinted by the cell of the last inserted vertex,
+ * as Mesh_3 inserts.  It may end hidden.  0 on success.                  */
+int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
+/* Number of input points given so far. */
+uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
