@@ -55,8 +55,8 @@ SONAME   := libdtdel.so.$(call version_part,MAJOR)
 LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
-DATA_SRC = datasets/datasets.c datasets/readers.c
-SHIM_SRC = src/cgal/cgal_shim.cpp src/cgal/cgal_query.cpp src/cgal/cgal_refine.cpp
+DATA_SRC = $(wildcard datasets/*.c)
+SHIM_SRC = $(wildcard src/cgal/*.cpp)
 # The CGAL reference objects, compiled once in the release build (see below).
 SHIM_OBJ = $(SHIM_SRC:%.cpp=$(B)/obj/%.o)
 TEST_C   = $(wildcard tests/test_*.c)
