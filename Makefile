@@ -204,8 +204,10 @@ $(A)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
 # Both suites run, and the threaded test under ThreadSanitizer; the
 # runner prints per-test lines and ends with
 # "N passed, N failed"; it exits non-zero on any failure.
+# The builds run on every processor unless the caller chose -jN.
+NPROC := $(shell nproc 2>/dev/null || echo 2)
 test: deps
-	@$(MAKE) --no-print-directory all python $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
+	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(NPROC)) all python $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
 		$(T)/tests/test_threads $(TESTS_CT)
 	@sh tests/run.sh $(B) $(A) $(T) $(C)
 
