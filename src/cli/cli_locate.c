@@ -4,6 +4,7 @@
  * `dtdel move FILE --vertex I --to X,Y,Z` (dd_move).
  */
 #include "cli/cli.h"
+#include "dtdel/alloc.h"
 
 #include <errno.h>
 #include <math.h>
@@ -90,7 +91,7 @@ int cmd_move(int argc, char **argv)
     } else {
         write_tets(tets, n);
     }
-    free(tets);
+    dd_mfree(tets);
     dd_free(t);
     return rc;
 }
