@@ -123,8 +123,9 @@ static dd_status brio_fill(dd_del *d)
             }
             nt++;
         }
-        if (dd_bdst(b->ws, b->tri, nt, nv, b->loc[d->base[0]], b->parent, b->order) != 0) {
-            s = DD_ERR_INTERNAL;
+        int bs = dd_bdst(b->ws, b->tri, nt, nv, b->loc[d->base[0]], b->parent, b->order);
+        if (bs != DD_BDST_OK) {
+            s = bs == DD_BDST_ENOMEM ? DD_ERR_NOMEM : DD_ERR_INTERNAL;
             break;
         }
         /* 3. The round's points in BFS order, each with its tree parent. */

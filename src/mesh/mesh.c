@@ -81,7 +81,8 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     t->vcell = dd_malloc((size_t)cap * sizeof *t->vcell);
     t->v2in = dd_malloc((size_t)cap * sizeof *t->v2in);
     t->in2v = dd_malloc((size_t)cap * sizeof *t->in2v);
-    if (!t->xyz || !t->vcell || !t->v2in || !t->in2v) {
+    dd_pred_init(&t->pred);
+    if (!t->xyz || !t->vcell || !t->v2in || !t->in2v || dd_pred_reserve(&t->pred) != DD_OK) {
         dd_mfree(t->xyz); dd_mfree(t->vcell); dd_mfree(t->v2in); dd_mfree(t->in2v); dd_mfree(t);
         return DD_ERR_NOMEM;
     }
@@ -90,7 +91,6 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     t->inf_cell = DD_NONE;
     t->hint = DD_NONE;
     t->rng = 0x9E3779B97F4A7C15ull;
-    dd_pred_init(&t->pred);
     *out = t;
     return DD_OK;
 }
@@ -103,6 +103,7 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out)
     t->free_head = t->inf_cell = t->hint = DD_NONE;
     t->rng = 0x2545F4914F6CDD1Dull;
     dd_pred_init(&t->pred);
+    if (dd_pred_reserve(&t->pred) != DD_OK) { dd_mfree(t); return DD_ERR_NOMEM; }
     *out = t;
     return DD_OK;
 }
