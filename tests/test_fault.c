@@ -145,6 +145,9 @@ typedef struct op {
     long set_course;            /* DD_TEST_SET_COURSE                     */
     tl_course course;           /* the wrap's                             */
     int move_course;            /* 1 filter, 2 flips, 3 re-insertion      */
+    int warm;                   /* 1 + a vertex deleted and put back first,
+                                   with the same strategy: the warm
+                                   scratch grows instead of being made   */
 } op;
 
 static dd_tri *create(const double *p, uint32_t n)
@@ -167,6 +170,11 @@ static dd_tri *fresh(const op *o)
     tl_set_course(t, o->course);
     dd_test_control(t, DD_TEST_SET_COURSE, o->set_course);
 #endif
+    if (o->warm && (dd_delete_with(t, (uint32_t)o->warm - 1, o->variant) != DD_OK ||
+                    dd_reinsert(t, (uint32_t)o->warm - 1) != DD_OK)) {
+        fprintf(stderr, "%s: the warm-up failed\n", o->name);
+        exit(1);
+    }
     if (o->kind == OP_REINSERT && dd_delete(t, o->v) != DD_OK) {
         fprintf(stderr, "%s: the deletion before the reinsertion failed\n", o->name);
         exit(1);
@@ -675,8 +683,15 @@ int main(int argc, char **argv)
         o.v = hull;
         snprintf(o.name, sizeof o.name, "delete/%s/hull", var);
         fault_op(&o);
+        o.warm = 1 + low;                 /* scratch warmed on less */
+        snprintf(o.name, sizeof o.name, "delete/%s/hull/warm", var);
+        fault_op(&o);
+        o.warm = 0;
         o.pts = mom, o.np = nm, o.v = nm / 2;
         snprintf(o.name, sizeof o.name, "delete/%s/degree-%u", var, nm - 1);
+        fault_op(&o);
+        o.warm = 1 + nm / 2 + 1;
+        snprintf(o.name, sizeof o.name, "delete/%s/degree-%u/warm", var, nm - 1);
         fault_op(&o);
     }
     /* the wrap's courses on the high degree: its guesses refuted, its

@@ -472,6 +472,13 @@ static void main_usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+#ifdef DD_TEST_BUILD
+    /* Test builds: DTDEL_TEST_ALLOC_FAIL=k refuses the library's k-th
+     * allocation (tests/test_cli.sh: out of memory exits 1 with one
+     * message).  Release builds read no such variable.                  */
+    const char *fail_at = getenv("DTDEL_TEST_ALLOC_FAIL");
+    if (fail_at) dd_test_control(NULL, DD_TEST_ALLOC_FAIL, atol(fail_at));
+#endif
     if (argc < 2) { main_usage(stderr); return EXIT_USAGE; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         main_usage(stdout);

@@ -64,12 +64,13 @@ static int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
     return st == DD_OK ? 0 : -2;
 }
 
-/* Parses "I,J,K" into a malloc'd list. */
+/* Parses "I,J,K" into a malloc'd list: 0, -1 when malformed, -2 when
+ * out of memory.                                                        */
 static int parse_list(const char *s, uint32_t **out, size_t *n)
 {
     size_t cap = 8, k = 0;
     uint32_t *a = dd_malloc(cap * sizeof *a);
-    if (!a) return -1;
+    if (!a) return -2;
     const char *p = s;
     for (;;) {
         char buf[32];
@@ -81,7 +82,7 @@ static int parse_list(const char *s, uint32_t **out, size_t *n)
         if (parse_u64(buf, &x) || x >= UINT32_MAX) { dd_mfree(a); return -1; }
         if (k == cap) {
             uint32_t *b = dd_realloc(a, 2 * cap * sizeof *a);
-            if (!b) { dd_mfree(a); return -1; }
+            if (!b) { dd_mfree(a); return -2; }
             a = b;
             cap *= 2;
         }
@@ -145,7 +146,9 @@ int cmd_delete(int argc, char **argv)
     if (!file || !vlist) return usage_error("delete", "missing FILE or --vertex%s", "");
     uint32_t *vs;
     size_t nv;
-    if (parse_list(vlist, &vs, &nv))
+    int bad = parse_list(vlist, &vs, &nv);
+    if (bad == -2) { fprintf(stderr, "dtdel delete: out of memory\n"); return EXIT_INPUT; }
+    if (bad)
         return usage_error("delete", "--vertex wants non-negative integers separated by commas, got '%s'", vlist);
     row r = {dd_variant_name(0), ROW_ENGINE};
     if (var && !find_row(var, &r)) {
@@ -200,7 +203,7 @@ int cmd_delete(int argc, char **argv)
     if (!rc) {
         int32_t *a;
         size_t n;
-        if (row_canonical(&r, t, g, &a, &n)) rc = EXIT_INPUT;
+        if (row_canonical(&r, t, g, &a, &n)) rc = EXIT_INPUT, fprintf(stderr, "dtdel delete: out of memory\n");
         else { write_tets(a, n); dd_mfree(a); }
     }
     dd_mfree(vs);

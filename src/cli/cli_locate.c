@@ -43,7 +43,7 @@ int cmd_locate(int argc, char **argv)
     }
     uint32_t v = 0;
     if ((s = dd_nearest_vertex(t, p, &v)) != DD_OK) {
-        fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
+        fprintf(stderr, "dtdel locate: no nearest vertex: %s\n", dd_status_name(s));   /* a read: no dd_errmsg */
         dd_free(t);
         return EXIT_INPUT;
     }
