@@ -4,7 +4,8 @@
 # threaded test in the ThreadSanitizer build (a data race fails it), and the
 # contract build's tests (fourth argument, if given: the library built with
 # -ffp-contract=fast -march=native, src/geom/fp.h; smaller sizes).  Counts the
-# "ok"/"FAIL" lines and ends with "N passed, N failed"; exits 1 on any
+# "ok"/"FAIL" lines (and shows the lines a test begins with "#: ", its
+# summary) and ends with "N passed, N failed"; exits 1 on any
 # failure, including a test program that crashed or exited non-zero.
 REL=${1:-build}
 ASAN=${2:-build/asan}
@@ -19,6 +20,7 @@ run() {   # run LABEL CMD...
     "$@" >"$log.out" 2>"$log.err"
     rc=$?
     cat "$log.out" >>"$log"
+    grep '^#: ' "$log.out" | sed "s/^#: /  $label: /" >&2   # a test's summary for the reader
     if [ $rc -ne 0 ] && ! grep -q "^FAIL" "$log.out"; then
         echo "FAIL $label: exited with status $rc" >>"$log"
         tail -n 20 "$log.err" | sed 's/^/    /' >>"$log"
