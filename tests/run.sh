@@ -6,7 +6,8 @@
 # -ffp-contract=fast -march=native, src/geom/fp.h; smaller sizes).  The
 # programs run TEST_JOBS at a time (default: the number of processors),
 # the slowest queued first; their outputs are reported in the order listed
-# here.  Counts the "ok"/"FAIL" lines and ends with "N passed, N failed";
+# here.  Counts the "ok"/"FAIL" lines (and shows the lines a test begins
+# with "#: ", its summary) and ends with "N passed, N failed";
 # exits 1 on any failure, including a test program that crashed or exited
 # non-zero.
 REL=${1:-build}
@@ -38,6 +39,7 @@ start=\$(date +%s)
 $(quote "$@") >"$f.out" 2>"$f.err"
 rc=\$?
 cat "$f.out" >"$f.log"
+grep '^#: ' "$f.out" | sed "s/^#: /  $label: /" >&2
 if [ \$rc -ne 0 ] && ! grep -q "^FAIL" "$f.out"; then
     echo "FAIL $label: exited with status \$rc" >>"$f.log"
     tail -n 20 "$f.err" | sed 's/^/    /' >>"$f.log"
@@ -60,6 +62,7 @@ for t in "$REL"/tests/test_*; do
 done
 job "release layers" sh scripts/layers.sh "$REL/obj"
 job "release layers-test" sh tests/test_layers.sh "$REL/obj"
+job "release alloc" sh tests/test_alloc.sh
 job "release make" sh tests/test_make.sh
 job "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 job "release cli" sh tests/test_cli.sh "$REL/dtdel"
