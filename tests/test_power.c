@@ -253,6 +253,32 @@ static void lifted_plane_set(run *R, int count, int jitter)
     }
 }
 
+/* Random doubles whose lifted points lie on a random plane up to the
+ * rounding of their weights, the query's moved off it by 2^-j: nearly
+ * degenerate, on both sides of the filter's bound.
+ * Each tuple at several magnitudes (coordinates 2^k, weights 2^2k).    */
+static void near_plane_set(run *R, int count)
+{
+    static const int mags[] = {0, -150, 150, -480, 480};
+    for (int i = 0; i < count; i++) {
+        double v[5][3], w[5], a[3];
+        for (int c = 0; c < 3; c++) a[c] = 2 * tl_unif(&R->r) - 1;
+        const double b = tl_unif(&R->r);
+        for (int k = 0; k < 5; k++) {
+            for (int c = 0; c < 3; c++) v[k][c] = 2 * tl_unif(&R->r) - 1;
+            w[k] = v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2] - (a[0] * v[k][0] + a[1] * v[k][1] +
+                                                                                 a[2] * v[k][2] + b);
+        }
+        /* moved off the plane by 2^-j, j up to 60: across the filter's bound */
+        w[4] += (tl_int(&R->r, 0, 1) ? 1 : -1) * ldexp(1, -(int)tl_int(&R->r, 0, 60));
+        for (size_t m = 0; m < sizeof mags / sizeof *mags; m++) {
+            double x[5][3], wx[5];
+            scale_pts(&x[0][0], &v[0][0], 5, mags[m], 0, wx, w);
+            check5(R, (const double(*)[3])x, wx);
+        }
+    }
+}
+
 /* Integer points of one sphere, every weight wc (zero, or all equal). */
 static void sphere_set(run *R, int count, int64_t r2, double wc)
 {
@@ -370,6 +396,8 @@ int main(int argc, char **argv)
     grid_set(&R, 1000 / q, 3, 3, 2);
     R.where = "lifted-plane";
     for (int j = 0; j < 4; j++) lifted_plane_set(&R, 3000 / q, j);
+    R.where = "near-plane";
+    near_plane_set(&R, 8000 / q);
     R.where = "cosphere";
     static const int64_t radii2[] = {3, 9, 25, 50, 81, 169};
     for (size_t i = 0; i < sizeof radii2 / sizeof *radii2; i++) {

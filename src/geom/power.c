@@ -137,11 +137,127 @@ static int sign_det4(mpz_ptr *const r[4], mpz_ptr *s)
     return mpz_sgn(s[9]);
 }
 
+/* ---- small integers: exact in 128-bit arithmetic --------------------------
+ *
+ * Grids with small integer weights are where exact zeros are common.  When
+ * the points are integers below 2^20 and the weights integers below 2^40,
+ * after the exact scaling of load_weighted, every row difference is below
+ * 2^21, every lifted entry below 3 2^42 + 2^41 < 2^44, the 3x3 minors
+ * below 6 2^63 and the 4x4 determinant below 2^112: __int128 holds them. */
+#define SMALL_COORD_BITS 20
+#define SMALL_WEIGHT_BITS 40
+
+typedef __int128 i128;
+
+/* The n weighted points as integers x[i][0..2], weight x[i][3] (scaled as
+ * load_weighted scales them): 1, or 0 when they are not that small.      */
+static int small_ints(const double *const *pts, const double *w, int n, int64_t x[][4])
+{
+    int e = INT32_MAX;
+    for (int i = 0; i < n; i++) {
+        for (int c = 0; c < 3; c++)
+            if (pts[i][c] != 0) {
+                const int l = low_exponent(pts[i][c]);
+                if (l < e) e = l;
+            }
+        if (w[i] != 0) {
+            const int l = low_exponent(w[i]);
+            const int half = l >= 0 ? l / 2 : -((1 - l) / 2);
+            if (half < e) e = half;
+        }
+    }
+    if (e == INT32_MAX) e = 0;
+    for (int i = 0; i < n; i++) {
+        for (int c = 0; c < 3; c++) {
+            if (pts[i][c] != 0 && ilogb(pts[i][c]) - e >= SMALL_COORD_BITS) return 0;
+            x[i][c] = (int64_t)ldexp(pts[i][c], -e);
+        }
+        if (w[i] != 0 && ilogb(w[i]) - 2 * e >= SMALL_WEIGHT_BITS) return 0;
+        x[i][3] = (int64_t)ldexp(w[i], -2 * e);
+    }
+    return 1;
+}
+
+/* Rows of points 0..n-2 relative to point n-1, lifted, as lift_rows. */
+static void lift_rows_small(int64_t x[][4], int n, i128 d[][4])
+{
+    const int64_t *t = x[n - 1];
+    for (int i = 0; i < n - 1; i++) {
+        for (int c = 0; c < 3; c++) d[i][c] = x[i][c] - t[c];
+        d[i][3] = d[i][0] * d[i][0] + d[i][1] * d[i][1] + d[i][2] * d[i][2] + (t[3] - x[i][3]);
+    }
+}
+
+static int sign128(i128 v) { return (v > 0) - (v < 0); }
+
+/* det[[a0 a1 a2][b0 b1 b2][c0 c1 c2]] for entries below 2^44, 2^21, 2^21
+ * in some order (products of three stay below 2^89).                   */
+static i128 det3_small(const i128 *a, const i128 *b, const i128 *c, int i, int j, int k)
+{
+    return a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i]) +
+           a[k] * (b[i] * c[j] - b[j] * c[i]);
+}
+
+static int power_small(int64_t x[5][4])
+{
+    i128 d[4][4];
+    lift_rows_small(x, 5, d);
+    i128 det = 0;
+    for (int i = 0; i < 4; i++) {   /* Laplace along the lift column */
+        const i128 *m[3];
+        for (int j = 0, k = 0; j < 4; j++)
+            if (j != i) m[k++] = d[j];
+        const i128 minor = det3_small(m[0], m[1], m[2], 0, 1, 2);
+        det += (i & 1) ? d[i][3] * minor : -(d[i][3] * minor);
+    }
+    return -sign128(det);
+}
+
+/* ---- exact rescaling ------------------------------------------------------
+ *
+ * The power test is homogeneous: coordinates times 2^k and weights times
+ * 2^2k keep its sign, exactly while every nonzero value stays a normal
+ * double.  Points near the ends of the double range (where the filter's
+ * guards refuse them) are scaled so that the largest coordinate, or the
+ * square root of the largest weight, is near 1, and filtered again.    */
+static int power_rescaled_filter(dd_pred *ctx, const double *const *pts, const double *w)
+{
+    int cmax = INT32_MIN, cmin = INT32_MAX, wmax = INT32_MIN, wmin = INT32_MAX;
+    for (int i = 0; i < 5; i++) {
+        for (int c = 0; c < 3; c++)
+            if (pts[i][c] != 0) {
+                const int l = ilogb(pts[i][c]);
+                cmax = l > cmax ? l : cmax;
+                cmin = l < cmin ? l : cmin;
+            }
+        if (w[i] != 0) {
+            const int l = ilogb(w[i]);
+            wmax = l > wmax ? l : wmax;
+            wmin = l < wmin ? l : wmin;
+        }
+    }
+    if (cmax == INT32_MIN) return DD_FILTER_UNSURE;
+    int top = cmax;
+    if (wmax != INT32_MIN && (wmax + 1) / 2 > top) top = (wmax + 1) / 2;
+    const int k = -top;
+    if (cmin + k < -1022 || (wmin != INT32_MAX && wmin + 2 * k < -1022)) return DD_FILTER_UNSURE;
+    double x[5][3], ws[5];
+    for (int i = 0; i < 5; i++) {
+        for (int c = 0; c < 3; c++) x[i][c] = ldexp(pts[i][c], k);
+        ws[i] = ldexp(w[i], 2 * k);
+    }
+    return dd_power_filter(ctx, x[0], x[1], x[2], x[3], x[4], ws);
+}
+
 int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p3,
                    const double *p, const double w[5])
 {
     ctx->insphere_exact++;
     const double *pts[5] = {p0, p1, p2, p3, p};
+    int64_t x[5][4];
+    if (small_ints(pts, w, 5, x)) return power_small(x);
+    const int f = power_rescaled_filter(ctx, pts, w);
+    if (f != DD_FILTER_UNSURE) return f;
     mpz_ptr z[DD_PRED_SCRATCH];
     load_weighted(ctx, pts, w, 5, z);
     lift_rows(z, 5);
@@ -149,11 +265,72 @@ int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const doubl
     return -sign_det4(rows, &z[20]);
 }
 
+/* CGAL's static filter of the 3+1 power test (which decides only in the
+ * xy projection): the lifted 3x3 determinant in CGAL's order, then the
+ * 2D orientation, each against CGAL's bound and guards.                  */
+static int power_coplanar_filter(const double *p0, const double *p1, const double *p2, const double *p,
+                                 const double w[4])
+{
+    const double *v[3] = {p0, p1, p2};
+    double d[3][4], maxx = 0, maxy = 0, maxz = 0, maxw = 0;
+    for (int i = 0; i < 3; i++) {
+        const double dx = v[i][0] - p[0], dy = v[i][1] - p[1], dz = v[i][2] - p[2], dw = w[3] - w[i];
+        d[i][0] = dx;
+        d[i][1] = dy;
+        d[i][3] = ((dx * dx + dy * dy) + dz * dz) + dw;
+        if (fabs(dx) > maxx) maxx = fabs(dx);
+        if (fabs(dy) > maxy) maxy = fabs(dy);
+        if (fabs(dz) > maxz) maxz = fabs(dz);
+        if (fabs(dw) > maxw) maxw = fabs(dw);
+    }
+    const double lo = maxx < maxy ? maxx : maxy, hi = dd_max3(maxx, maxy, maxz);
+    if (!(lo >= 2.92391967062015793913e-74) || (maxw < 8.54930624023949352313e-148 && maxw != 0) ||
+        !(hi <= 7.23700557733225980357e+75) || !(maxw <= 5.23742497263382350320e+151))
+        return DD_FILTER_UNSURE;
+    /* determinant(a00..a22), rows (dx, dy, lift) */
+    const double m01 = d[0][0] * d[1][1] - d[1][0] * d[0][1];
+    const double m02 = d[0][0] * d[2][1] - d[2][0] * d[0][1];
+    const double m12 = d[1][0] * d[2][1] - d[2][0] * d[1][1];
+    const double det = m01 * d[2][3] - m02 * d[1][3] + m12 * d[0][3];
+    const double h2 = hi * hi;
+    const double eps = 3.04426660386257731823e-14 * ((maxx * maxy) * (maxw > h2 ? maxw : h2));
+    const int cmp = det > eps ? 1 : det < -eps ? -1 : 0;
+    if (cmp == 0) return DD_FILTER_UNSURE;
+    const double ax = p0[0] - p2[0], by = p1[1] - p2[1], bx = p1[0] - p2[0], ay = p0[1] - p2[1];
+    const double m5 = fabs(ax) > fabs(bx) ? fabs(ax) : fabs(bx), m6 = fabs(by) > fabs(ay) ? fabs(by) : fabs(ay);
+    const double lo2 = m5 < m6 ? m5 : m6, hi2 = m5 > m6 ? m5 : m6;
+    if (!(lo2 >= 5.00368081960964690982e-147) || !(hi2 <= 7.23700557733225980357e+75)) return DD_FILTER_UNSURE;
+    const double o = ax * by - bx * ay, eps2 = 8.88720573725927976811e-16 * (m5 * m6);
+    if (o > eps2) return cmp;
+    if (o < -eps2) return -cmp;
+    return DD_FILTER_UNSURE;
+}
+
+/* The 3+1 power test on small integers (small_ints), CGAL's projections. */
+static int power_coplanar_small(int64_t x[4][4])
+{
+    static const int proj[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    i128 d[3][4];
+    lift_rows_small(x, 4, d);
+    for (int k = 0; k < 3; k++) {
+        const int i = proj[k][0], j = proj[k][1];
+        const int cmp = sign128(det3_small(d[0], d[1], d[2], i, j, 3));
+        if (cmp == 0 && k < 2) continue;
+        const i128 o = (i128)(x[0][i] - x[2][i]) * (x[1][j] - x[2][j]) - (i128)(x[1][i] - x[2][i]) * (x[0][j] - x[2][j]);
+        return cmp * sign128(o);
+    }
+    return 0;
+}
+
 int dd_power_coplanar(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p,
                       const double w[4])
 {
     static const int proj[3][2] = {{0, 1}, {0, 2}, {1, 2}};   /* xy, xz, yz: CGAL's order */
+    const int f = power_coplanar_filter(p0, p1, p2, p, w);
+    if (f != DD_FILTER_UNSURE) return f;
     const double *pts[4] = {p0, p1, p2, p};
+    int64_t x[4][4];
+    if (small_ints(pts, w, 4, x)) return power_coplanar_small(x);
     mpz_ptr z[DD_PRED_SCRATCH];
     load_weighted(ctx, pts, w, 4, z);
     lift_rows(z, 4);
