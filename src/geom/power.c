@@ -213,14 +213,61 @@ static int power_small(int64_t x[5][4])
     return -sign128(det);
 }
 
-/* ---- exact rescaling ------------------------------------------------------
+/* ---- exact rescaling and a dynamic filter ---------------------------------
  *
  * The power test is homogeneous: coordinates times 2^k and weights times
  * 2^2k keep its sign, exactly while every nonzero value stays a normal
  * double.  Points near the ends of the double range (where the filter's
- * guards refuse them) are scaled so that the largest coordinate, or the
- * square root of the largest weight, is near 1, and filtered again.    */
-static int power_rescaled_filter(dd_pred *ctx, const double *const *pts, const double *w)
+ * guards refuse them) are scaled so that every |coordinate| and |weight|
+ * is below 2 and the largest of them near 1, then filtered again: by the
+ * static filter, then by a dynamic bound (power_dynamic), which decides
+ * most nearly degenerate tuples that the static bound leaves.            */
+
+/* The determinant of dd_power_filter, in the same order, on the scaled
+ * points, with its permanent P along the same evaluation: absolute values,
+ * the lift column replaced by L = |d|^2 + |w - wi|.  Error: each product
+ * term carries at most 3u from its three rounded differences, 6u L from
+ * its lift ((dx^2 + dy^2) + dz^2) + dw (one rounding in each difference,
+ * square and sum), and 9 roundings of the evaluation (2 in the 2x2
+ * minors, 3 in the 3x3, 4 in the last sum): under 18u P to first order,
+ * under 24u P with the rounding of P.  Underflow: every entry is below 52,
+ * so an operation that underflows (error at most 2^-1075) moves the
+ * determinant by under 2^-1075 52^3, under 1e-300 for all of them.      */
+static int power_dynamic(const double x[5][3], const double ws[5])
+{
+    double d[4][3], a[4][3], l[4], L[4];
+    for (int i = 0; i < 4; i++) {
+        for (int c = 0; c < 3; c++) {
+            d[i][c] = x[i][c] - x[4][c];
+            a[i][c] = fabs(d[i][c]);
+        }
+        const double s = (d[i][0] * d[i][0] + d[i][1] * d[i][1]) + d[i][2] * d[i][2], dw = ws[4] - ws[i];
+        l[i] = s + dw;
+        L[i] = s + fabs(dw);
+    }
+    const double m01 = d[1][0] * d[0][1] - d[0][0] * d[1][1], p01 = a[1][0] * a[0][1] + a[0][0] * a[1][1];
+    const double m02 = d[2][0] * d[0][1] - d[0][0] * d[2][1], p02 = a[2][0] * a[0][1] + a[0][0] * a[2][1];
+    const double m03 = d[3][0] * d[0][1] - d[0][0] * d[3][1], p03 = a[3][0] * a[0][1] + a[0][0] * a[3][1];
+    const double m12 = d[2][0] * d[1][1] - d[1][0] * d[2][1], p12 = a[2][0] * a[1][1] + a[1][0] * a[2][1];
+    const double m13 = d[3][0] * d[1][1] - d[1][0] * d[3][1], p13 = a[3][0] * a[1][1] + a[1][0] * a[3][1];
+    const double m23 = d[3][0] * d[2][1] - d[2][0] * d[3][1], p23 = a[3][0] * a[2][1] + a[2][0] * a[3][1];
+    const double m012 = m12 * d[0][2] - m02 * d[1][2] + m01 * d[2][2];
+    const double m013 = m13 * d[0][2] - m03 * d[1][2] + m01 * d[3][2];
+    const double m023 = m23 * d[0][2] - m03 * d[2][2] + m02 * d[3][2];
+    const double m123 = m23 * d[1][2] - m13 * d[2][2] + m12 * d[3][2];
+    const double p012 = p12 * a[0][2] + p02 * a[1][2] + p01 * a[2][2];
+    const double p013 = p13 * a[0][2] + p03 * a[1][2] + p01 * a[3][2];
+    const double p023 = p23 * a[0][2] + p03 * a[2][2] + p02 * a[3][2];
+    const double p123 = p23 * a[1][2] + p13 * a[2][2] + p12 * a[3][2];
+    const double det = m123 * l[0] - m023 * l[1] + m013 * l[2] - m012 * l[3];
+    const double per = p123 * L[0] + p023 * L[1] + p013 * L[2] + p012 * L[3];
+    const double bound = 2.6645352591003757e-15 * per + 1e-300;
+    if (det > bound) return -1;
+    if (det < -bound) return 1;
+    return DD_FILTER_UNSURE;
+}
+
+static int power_rescaled(dd_pred *ctx, const double *const *pts, const double *w)
 {
     int cmax = INT32_MIN, cmin = INT32_MAX, wmax = INT32_MIN, wmin = INT32_MAX;
     for (int i = 0; i < 5; i++) {
@@ -237,7 +284,7 @@ static int power_rescaled_filter(dd_pred *ctx, const double *const *pts, const d
         }
     }
     if (cmax == INT32_MIN) return DD_FILTER_UNSURE;
-    int top = cmax;
+    int top = cmax;   /* |coordinates| < 2^(top+1), |weights| < 2^(2 top + 1) */
     if (wmax != INT32_MIN && (wmax + 1) / 2 > top) top = (wmax + 1) / 2;
     const int k = -top;
     if (cmin + k < -1022 || (wmin != INT32_MAX && wmin + 2 * k < -1022)) return DD_FILTER_UNSURE;
@@ -246,7 +293,8 @@ static int power_rescaled_filter(dd_pred *ctx, const double *const *pts, const d
         for (int c = 0; c < 3; c++) x[i][c] = ldexp(pts[i][c], k);
         ws[i] = ldexp(w[i], 2 * k);
     }
-    return dd_power_filter(ctx, x[0], x[1], x[2], x[3], x[4], ws);
+    const int f = dd_power_filter(ctx, x[0], x[1], x[2], x[3], x[4], ws);
+    return f != DD_FILTER_UNSURE ? f : power_dynamic((const double(*)[3])x, ws);
 }
 
 int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p3,
@@ -256,7 +304,7 @@ int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const doubl
     const double *pts[5] = {p0, p1, p2, p3, p};
     int64_t x[5][4];
     if (small_ints(pts, w, 5, x)) return power_small(x);
-    const int f = power_rescaled_filter(ctx, pts, w);
+    const int f = power_rescaled(ctx, pts, w);
     if (f != DD_FILTER_UNSURE) return f;
     mpz_ptr z[DD_PRED_SCRATCH];
     load_weighted(ctx, pts, w, 5, z);
