@@ -20,6 +20,7 @@
  * point set (the perturbed DT is unique), not on this order.
  */
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <float.h>
 #include <math.h>
@@ -143,9 +144,9 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         eh = half > 0 ? ilogb(half) : 0;
         scale = half > 0 ? 65535.0 / ldexp(half, -eh) : 0.0;
     }
-    keyed *a = malloc(2 * (size_t)n * sizeof *a);
-    uint32_t *count = calloc((size_t)NPASS * NDIGIT, sizeof *count);
-    if (!a || !count) { free(a); free(count); return DD_ERR_NOMEM; }
+    keyed *a = dd_malloc(2 * (size_t)n * sizeof *a);
+    uint32_t *count = dd_calloc((size_t)NPASS * NDIGIT, sizeof *count);
+    if (!a || !count) { dd_mfree(a); dd_mfree(count); return DD_ERR_NOMEM; }
     keyed *const buf = a;
     keyed *b = a + n;
     for (uint32_t k = 0; k < n; k++) {
@@ -170,8 +171,8 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         keyed *tmp = a; a = b; b = tmp;
     }
     for (uint32_t k = 0; k < n; k++) ids[k] = a[k].id;
-    free(buf);
-    free(count);
+    dd_mfree(buf);
+    dd_mfree(count);
     return DD_OK;
 }
 
@@ -192,7 +193,7 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
 {
     size_t cap = 16;
     while (cap < 2 * (size_t)n) cap <<= 1;
-    uint64_t *slot = malloc(cap * sizeof *slot);
+    uint64_t *slot = dd_malloc(cap * sizeof *slot);
     if (!slot) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
     memset(slot, 0xFF, cap * sizeof *slot); /* empty: id UINT32_MAX > any id */
     size_t mask = cap - 1;
@@ -223,7 +224,7 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
             }
         }
     }
-    free(slot);
+    dd_mfree(slot);
     *nkept = m;
     return DD_OK;
 }
@@ -287,7 +288,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
             if (isinf(x))
                 return report(t, dd_fail(t, DD_ERR_INFINITE, "point %u: coordinate %c is infinite", i, "xyz"[c]), msg, msglen);
         }
-    uint32_t *ids = malloc(2 * (size_t)(n ? n : 1) * sizeof *ids);
+    uint32_t *ids = dd_malloc(2 * (size_t)(n ? n : 1) * sizeof *ids);
     if (!ids) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     uint32_t *first = ids + n;
     /* Input order -> insertion order: drop duplicates, BRIO + Hilbert, the
@@ -297,7 +298,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
     if (s == DD_OK) s = brio_order(xyz, ids, m);
     if (s == DD_OK) s = dd_pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
-    if (s != DD_OK) { free(ids); return report(t, s, msg, msglen); }
+    if (s != DD_OK) { dd_mfree(ids); return report(t, s, msg, msglen); }
     t->np = n;
     t->nvid = m;
     t->ndup = n - m;
@@ -308,7 +309,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
         t->in2v[ids[k]] = k;
     }
     for (uint32_t i = 0; i < n; i++) t->in2v[i] = t->in2v[first[i]];
-    free(ids);
+    dd_mfree(ids);
     uint32_t first4[4] = {0, 1, 2, 3};
     dd_make_first_cells(t, first4);
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
@@ -347,10 +348,10 @@ static void swap_cells(dd_tri *t, dd_tri *s)
 dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n)
 {
     dd_tri *s;
-    uint32_t *kept = malloc(((size_t)t->nvid + 1) * sizeof *kept), *vcell = malloc((size_t)t->cap_v * sizeof *vcell);
+    uint32_t *kept = dd_malloc(((size_t)t->nvid + 1) * sizeof *kept), *vcell = dd_malloc((size_t)t->cap_v * sizeof *vcell);
     dd_status st = kept && vcell ? dd_tri_alloc_borrowed(&s) : DD_ERR_NOMEM;
     if (st != DD_OK) {
-        free(kept), free(vcell);
+        dd_mfree(kept), dd_mfree(vcell);
         return dd_fail(t, st, "out of memory");
     }
     s->xyz = t->xyz;
@@ -375,6 +376,6 @@ dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n)
         dd_fail(t, st, "%s", st == DD_ERR_NOMEM ? "out of memory" : s->err);
     }
     dd_tri_destroy(s);
-    free(kept), free(vcell);
+    dd_mfree(kept), dd_mfree(vcell);
     return st;
 }
