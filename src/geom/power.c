@@ -24,16 +24,6 @@
 
 /* ---- exact stage ----------------------------------------------------- */
 
-/* ctx->z made if it is not: the same scratch, made the same way, as
- * pred.c's GMP stages (nothing else touches it between calls).         */
-static void ready_scratch(dd_pred *ctx)
-{
-    if (!ctx->z_ready) {
-        for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
-        ctx->z_ready = 1;
-    }
-}
-
 /* The exponent of x's lowest set bit: x is an odd multiple of 2^e. */
 static int low_exponent(double x)
 {
@@ -61,11 +51,10 @@ static void set_scaled(mpz_t out, double x, int s)
 /* Loads the n weighted points (n <= 5) as integers: point i's coordinates
  * into z[4i .. 4i+2] and its weight into z[4i+3], coordinates divided by
  * 2^e and weights by 2^2e, e the largest exponent that keeps all of them
- * integers.  Returns the scratch as an array of pointers in zp.          */
-static void load_weighted(dd_pred *ctx, const double *const *pts, const double *w, int n, mpz_ptr *zp)
+ * integers: each coordinate below 2^2098 and each weight below 2^3172,
+ * inside the bounds of pred.h's DD_PRED_LIMBS.                           */
+static void load_weighted(mpz_ptr *z, const double *const *pts, const double *w, int n)
 {
-    ready_scratch(ctx);
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) zp[i] = ctx->z[i];
     int e = INT32_MAX;
     for (int i = 0; i < n; i++) {
         for (int c = 0; c < 3; c++)
@@ -81,9 +70,32 @@ static void load_weighted(dd_pred *ctx, const double *const *pts, const double *
     }
     if (e == INT32_MAX) e = 0;
     for (int i = 0; i < n; i++) {
-        for (int c = 0; c < 3; c++) set_scaled(zp[4 * i + c], pts[i][c], e);
-        set_scaled(zp[4 * i + 3], w[i], 2 * e);
+        for (int c = 0; c < 3; c++) set_scaled(z[4 * i + c], pts[i][c], e);
+        set_scaled(z[4 * i + 3], w[i], 2 * e);
     }
+}
+
+/* A GMP stage of this file: fn on the n weighted points loaded by
+ * load_weighted, in pred.h's scratch (dd_pred_exact: the context's own
+ * when reserved, else one on the stack; nothing allocates).             */
+typedef struct gmp_job {
+    const double *const *pts;
+    const double *w;
+    int n;
+    int (*fn)(mpz_ptr *z);
+} gmp_job;
+
+static int load_then(mpz_ptr *z, const void *arg)
+{
+    const gmp_job *j = arg;
+    load_weighted(z, j->pts, j->w, j->n);
+    return j->fn(z);
+}
+
+static int run_gmp(dd_pred *ctx, const double *const *pts, const double *w, int n, int (*fn)(mpz_ptr *z))
+{
+    const gmp_job j = {pts, w, n, fn};
+    return dd_pred_exact(ctx, NULL, 0, load_then, &j, NULL);
 }
 
 /* Turns the loaded points 0..n-2 into rows relative to point n-1 (the
@@ -297,6 +309,14 @@ static int power_rescaled(dd_pred *ctx, const double *const *pts, const double *
     return f != DD_FILTER_UNSURE ? f : power_dynamic((const double(*)[3])x, ws);
 }
 
+/* The power test of the five points loaded in z (a gmp_job's fn). */
+static int power_z(mpz_ptr *z)
+{
+    lift_rows(z, 5);
+    mpz_ptr *const rows[4] = {&z[0], &z[4], &z[8], &z[12]};
+    return -sign_det4(rows, &z[20]);
+}
+
 int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p3,
                    const double *p, const double w[5])
 {
@@ -306,11 +326,7 @@ int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const doubl
     if (small_ints(pts, w, 5, x)) return power_small(x);
     const int f = power_rescaled(ctx, pts, w);
     if (f != DD_FILTER_UNSURE) return f;
-    mpz_ptr z[DD_PRED_SCRATCH];
-    load_weighted(ctx, pts, w, 5, z);
-    lift_rows(z, 5);
-    mpz_ptr *const rows[4] = {&z[0], &z[4], &z[8], &z[12]};
-    return -sign_det4(rows, &z[20]);
+    return run_gmp(ctx, pts, w, 5, power_z);
 }
 
 /* CGAL's static filter of the 3+1 power test (which decides only in the
@@ -370,23 +386,17 @@ static int power_coplanar_small(int64_t x[4][4])
     return 0;
 }
 
-int dd_power_coplanar(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p,
-                      const double w[4])
+/* CGAL's 3+1 power test of the four points loaded in z (a gmp_job's fn):
+ * the lifted 3x3 determinant in the xy projection, else xz, else yz,
+ * times the 2D orientation of the first three in that projection.      */
+static int power_coplanar_z(mpz_ptr *z)
 {
     static const int proj[3][2] = {{0, 1}, {0, 2}, {1, 2}};   /* xy, xz, yz: CGAL's order */
-    const int f = power_coplanar_filter(p0, p1, p2, p, w);
-    if (f != DD_FILTER_UNSURE) return f;
-    const double *pts[4] = {p0, p1, p2, p};
-    int64_t x[4][4];
-    if (small_ints(pts, w, 4, x)) return power_coplanar_small(x);
-    mpz_ptr z[DD_PRED_SCRATCH];
-    load_weighted(ctx, pts, w, 4, z);
     lift_rows(z, 4);
-    int cmp = 0;
     for (int k = 0; k < 3; k++) {
         const int i = proj[k][0], j = proj[k][1];
         mpz_ptr a[3] = {z[i], z[j], z[3]}, b[3] = {z[4 + i], z[4 + j], z[7]}, c[3] = {z[8 + i], z[8 + j], z[11]};
-        cmp = sign_det3(a, b, c, &z[16]);
+        const int cmp = sign_det3(a, b, c, &z[16]);
         if (cmp == 0 && k < 2) continue;
         /* (p0_i - p2_i)(p1_j - p2_j) - (p1_i - p2_i)(p0_j - p2_j) */
         mpz_sub(z[20], z[i], z[8 + i]);
@@ -398,6 +408,17 @@ int dd_power_coplanar(dd_pred *ctx, const double *p0, const double *p1, const do
         return cmp * mpz_sgn(z[24]);
     }
     return 0;
+}
+
+int dd_power_coplanar(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p,
+                      const double w[4])
+{
+    const int f = power_coplanar_filter(p0, p1, p2, p, w);
+    if (f != DD_FILTER_UNSURE) return f;
+    const double *pts[4] = {p0, p1, p2, p};
+    int64_t x[4][4];
+    if (small_ints(pts, w, 4, x)) return power_coplanar_small(x);
+    return run_gmp(ctx, pts, w, 4, power_coplanar_z);
 }
 
 /* ---- perturbation ------------------------------------------------------ */
@@ -509,16 +530,10 @@ static int power_distance_filter(const double *p, const double *a, double wa, co
     return DD_FILTER_UNSURE;
 }
 
-int dd_power_compare_distance(dd_pred *ctx, const double *p, const double *a, double wa, const double *b,
-                              double wb)
+/* pow(p, a) - pow(p, b) of p, a, b loaded in z (a gmp_job's fn). */
+static int distance_z(mpz_ptr *z)
 {
-    const int f = power_distance_filter(p, a, wa, b, wb);
-    if (f != DD_FILTER_UNSURE) return f;
-    const double *pts[3] = {p, a, b};
-    const double w[3] = {0, wa, wb};
-    mpz_ptr z[DD_PRED_SCRATCH];
-    load_weighted(ctx, pts, w, 3, z);
-    mpz_sub(z[12], z[11], z[7]);                 /* Wb - Wa */
+    mpz_sub(z[12], z[11], z[7]);   /* Wb - Wa */
     for (int c = 0; c < 3; c++) {
         mpz_sub(z[13], z[c], z[4 + c]);
         mpz_addmul(z[12], z[13], z[13]);
@@ -526,4 +541,14 @@ int dd_power_compare_distance(dd_pred *ctx, const double *p, const double *a, do
         mpz_submul(z[12], z[13], z[13]);
     }
     return mpz_sgn(z[12]);
+}
+
+int dd_power_compare_distance(dd_pred *ctx, const double *p, const double *a, double wa, const double *b,
+                              double wb)
+{
+    const int f = power_distance_filter(p, a, wa, b, wb);
+    if (f != DD_FILTER_UNSURE) return f;
+    const double *pts[3] = {p, a, b};
+    const double w[3] = {0, wa, wb};
+    return run_gmp(ctx, pts, w, 3, distance_z);
 }
