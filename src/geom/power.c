@@ -2,14 +2,19 @@
  * power.c -- the power predicates of regular triangulations (DESIGN 12;
  * signs in power.h), as CGAL's Regular_triangulation_3 evaluates them.
  *
- * Each predicate runs a filter (power.h's dd_power_filter: CGAL's
- * semi-static one), then an exact evaluation in GMP integers: every
- * double is m 2^e with an integer m of at most 53 bits, so with s the
- * smallest power of two that every coordinate is a multiple of and every
- * weight a multiple of the square of, coordinates / s and weights / s^2
- * are integers, every lifted entry |x - y|^2 + w - w' is an integer, and
- * every determinant is exact.  The power test is homogeneous (coordinates
- * of degree 1, weights of degree 2), so the scaling keeps every sign.
+ * The power test runs a filter (power.h's dd_power_filter: CGAL's
+ * semi-static one), then exact stages in turn: small integers in 128-bit
+ * arithmetic (grids with small integer weights); the points scaled
+ * exactly into the filter's range, filtered again, then bounded by a
+ * dynamic filter (power_dynamic); GMP integers last.  The 3+1 test runs
+ * CGAL's filter, small integers and GMP; power distances a filter and
+ * GMP.  For GMP every double is m 2^e with an integer m of at most 53
+ * bits, so with s the smallest power of two that every coordinate is a
+ * multiple of and every weight a multiple of the square of, coordinates
+ * / s and weights / s^2 are integers, every lifted entry |x - y|^2 + w -
+ * w' is an integer, and every determinant is exact.  The power test is
+ * homogeneous (coordinates of degree 1, weights of degree 2), so the
+ * scalings keep every sign.
  *
  * The perturbation (Devillers & Teillaud 2011, as CGAL's
  * side_of_oriented_power_sphere and side_of_oriented_power_circle apply
