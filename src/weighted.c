@@ -31,8 +31,10 @@ dd_status dd_hidden(const dd_tri *t, uint32_t **idx, size_t *n) { return dd_hidd
 
 /* The new point takes the next vertex id and input index (indices are
  * never reused on a weighted t: deletion is not there yet, and a point
- * forgotten keeps its index).  A duplicate's index names the vertex it
- * equals (dd_alias), as dd_create's duplicates do.                     */
+ * forgotten keeps its index).  A vertex's exact weighted point takes
+ * none: *index names that vertex and nothing changes, as CGAL's insert
+ * returns it (an exact copy of a hidden point is hidden, under its own
+ * index, as in CGAL).                                                   */
 static dd_status insert_weighted(dd_tri *t, const double p[3], double w, uint32_t *index)
 {
     if (!t->wt)
@@ -54,14 +56,13 @@ static dd_status insert_weighted(dd_tri *t, const double p[3], double w, uint32_
     dd_fate fate;
     uint32_t dup = DD_NONE;
     if ((s = dd_insert_power(t, v, dd_start_near(t, p), 1, &fate, &dup)) != DD_OK) return s;
-    if (fate == DD_FATE_DUPLICATE) {
-        t->in2v[t->np] = dup;
-        t->ndup++;
-    } else {
-        t->in2v[t->np] = v;
-        t->nvid++;
-        if (fate == DD_FATE_VERTEX) dd_grid_note(t, v);
+    if (fate == DD_FATE_DUPLICATE) {          /* nothing changed: that vertex */
+        *index = t->v2in[dup];
+        return DD_OK;
     }
+    t->in2v[t->np] = v;
+    t->nvid++;
+    if (fate == DD_FATE_VERTEX) dd_grid_note(t, v);
     *index = t->np++;
     return DD_OK;
 }
