@@ -121,26 +121,47 @@ static void take_lists(dd_hidset *h, const uint32_t *cells, size_t n)
     }
 }
 
+/* Notes the finite vertices of cells[0..n) in seen (room reserved) and
+ * returns how many hidden points their lists hold: one pass, the cells'
+ * records in cache from the conflict search.                            */
+static size_t note_vertices(dd_tri *t, dd_hidset *h, const uint32_t *cells, size_t n)
+{
+    uint32_t *seen = h->seen.a + h->seen.n;
+    const uint32_t *head = h->head, *next = h->next, ncap = h->keep ? h->ncap : 0;
+    size_t m = 0, k = 0;
+    for (size_t i = 0; i < n; i++) {
+        const uint32_t c = cells[i], *w = dd_tv(t, c);
+        for (int j = 0; j < 4; j++) {
+            seen[m] = w[j];
+            m += w[j] != DD_INF;
+        }
+        if (c < ncap)
+            for (uint32_t v = head[c]; v != DD_NONE; v = next[v]) k++;
+    }
+    h->seen.n += m;
+    return k;
+}
+
 dd_status dd_hidden_take_region(dd_tri *t)
 {
     dd_hidset *h = t->hid;
     const size_t nc = t->conflict.n;
     dd_status s = dd_vec_room(&h->seen, 4 * nc);
-    if (s == DD_OK && h->keep) {
+    if (s != DD_OK) return s;
+    const size_t k = note_vertices(t, h, t->conflict.a, nc);
+    if (h->keep) {
         /* new cells get ids below ncell + boundary.n; swallowed vertices
          * join all (at most 4 a cell); the new point's id is below nvid + 1 */
         s = room_cells(h, (size_t)t->ncell + t->boundary.n);
         if (s == DD_OK) s = room_vertices(h, (size_t)t->nvid + 1);
         if (s == DD_OK) s = dd_vec_room(&h->all, 4 * nc);
-        if (s == DD_OK) s = dd_vec_room(&h->taken, count_in(h, t->conflict.a, nc));
+        if (s == DD_OK) s = dd_vec_room(&h->taken, k);
     }
-    if (s != DD_OK) return s;
-    if (h->keep) take_lists(h, t->conflict.a, nc);
-    for (size_t i = 0; i < nc; i++) {
-        const uint32_t *w = dd_tv(t, t->conflict.a[i]);
-        for (int k = 0; k < 4; k++)
-            if (w[k] != DD_INF) h->seen.a[h->seen.n++] = w[k];
+    if (s != DD_OK) {
+        h->seen.n = 0;
+        return s;
     }
+    if (k) take_lists(h, t->conflict.a, nc);
     return DD_OK;
 }
 

@@ -432,7 +432,8 @@ int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const dou
  * plane and inside its perturbed power circle).  t is weighted and has
  * no dummy vertex.  _on: on the predicates pr (a read-only call's own).  */
 int dd_cell_power_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p, double wp);
-static inline int dd_cell_power_conflict_fast(dd_tri *t, uint32_t c, const double *p, double wp)
+__attribute__((always_inline)) static inline int dd_cell_power_conflict_fast(dd_tri *t, uint32_t c, const double *p,
+                                                                           double wp)
 {
     const uint32_t *v = dd_tv(t, c);
     if ((v[0] != DD_INF) & (v[1] != DD_INF) & (v[2] != DD_INF) & (v[3] != DD_INF)) {
