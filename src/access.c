@@ -8,6 +8,7 @@
 #include "dtdel.h"
 #include "mesh/mesh.h"
 #include "mesh/hidden.h"
+#include "dtdel/alloc.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -82,13 +83,13 @@ size_t dd_memory_bytes(const dd_tri *t)
 
 dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)
 {
-    uint32_t *live = malloc((t->nlive ? t->nlive : 1) * sizeof *live);
+    uint32_t *live = dd_malloc((t->nlive ? t->nlive : 1) * sizeof *live);
     if (!live) return DD_ERR_NOMEM;
     size_t n = 0;
     for (uint32_t c = 0; c < t->ncell; c++)
         if (dd_tv(t, c)[0] != DD_DEAD) live[n++] = c;
     dd_status s = dd_canonical_of_cells(t, live, n, tets, ntets);
-    free(live);
+    dd_mfree(live);
     return s;
 }
 

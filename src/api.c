@@ -10,6 +10,7 @@
 #include "dtdel_stats.h"
 #include "delete/delete.h"
 #include "geom/expansion.h"
+#include "dtdel/alloc.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -157,6 +158,7 @@ long dd_test_control(dd_tri *t, dd_test_ctl ctl, long value)
         dd_exp_force_plain((int)value);
         return was;
     }
+    if (ctl == DD_TEST_ALLOC_FAIL || ctl == DD_TEST_ALLOC_COUNT) return dd_alloc_control(ctl == DD_TEST_ALLOC_FAIL, value);
     if (!t || ctl < 0 || ctl >= DD_TEST_NCTL) return 0;
     long was = t->testctl[ctl];
     t->testctl[ctl] = value;
@@ -193,11 +195,11 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
     if (dd_pick_simplex(t, t->xyz, few, m) == DD_OK) return DD_OK;
     dd_status s = DD_ERR_DIMENSION;
     if (m == 64) {                                   /* more are left: all of them */
-        uint32_t *left = malloc((size_t)(t->nvert - n) * sizeof *left);
+        uint32_t *left = dd_malloc((size_t)(t->nvert - n) * sizeof *left);
         if (!left) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
         m = vertices_left(t, ids, n, left, t->nvert - (uint32_t)n);
         if (dd_pick_simplex(t, t->xyz, left, m) == DD_OK) s = DD_OK;
-        free(left);
+        dd_mfree(left);
     }
     return s == DD_OK ? s : dd_fail(t, s, "deleting these %zu points would leave only coplanar points", n);
 }
@@ -252,7 +254,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
     if (n > t->nvert)
         return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u vertices", n,
                        t->nvert);
-    uint32_t *ids = malloc(n * sizeof *ids);
+    uint32_t *ids = dd_malloc(n * sizeof *ids);
     if (!ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
     for (size_t k = 0; k < n && s == DD_OK; k++) s = dd_del_resolve(t, vs[k], &ids[k]);
     if (s == DD_OK) {
@@ -270,7 +272,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
         if (s == DD_OK) dd_note_all(t);
         for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
         if (s == DD_OK) (void)dd_grid_ready(t);
-        free(ids);
+        dd_mfree(ids);
         return s;
     }
     size_t done = 0;
@@ -296,7 +298,7 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
     }
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     if (s == DD_OK) (void)dd_grid_ready(t);
-    free(ids);
+    dd_mfree(ids);
     return s;
 }
 

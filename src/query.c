@@ -9,6 +9,7 @@
  */
 #include "dtdel.h"
 #include "delete/delete.h"
+#include "dtdel/alloc.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -35,10 +36,10 @@ dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *nce
 {
     *verts = *nbrs = NULL;
     *ncells = 0;
-    uint32_t *number = malloc(((size_t)t->ncell + 1) * sizeof *number);
-    int32_t *v = malloc(4 * ((size_t)t->nlive + 1) * sizeof *v), *n = malloc(4 * ((size_t)t->nlive + 1) * sizeof *n);
+    uint32_t *number = dd_malloc(((size_t)t->ncell + 1) * sizeof *number);
+    int32_t *v = dd_malloc(4 * ((size_t)t->nlive + 1) * sizeof *v), *n = dd_malloc(4 * ((size_t)t->nlive + 1) * sizeof *n);
     if (!number || !v || !n) {
-        free(number), free(v), free(n);
+        dd_mfree(number), dd_mfree(v), dd_mfree(n);
         return DD_ERR_NOMEM;
     }
     size_t k = 0;
@@ -51,7 +52,7 @@ dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *nce
             n[4 * m + i] = (int32_t)number[dd_tn(t, c)[i] >> 2];
         }
     }
-    free(number);
+    dd_mfree(number);
     *verts = v;
     *nbrs = n;
     *ncells = k;

@@ -9,6 +9,7 @@
  */
 #include "dtdel.h"
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -95,17 +96,17 @@ dd_status dd_write(const dd_tri *t, const char *path)
 {
     const mesh_format fmt = format_of(path);
     if (fmt == FMT_NONE) return DD_ERR_UNKNOWN_FORMAT;
-    uint32_t *number = malloc(((size_t)t->np + 1) * sizeof *number);
+    uint32_t *number = dd_malloc(((size_t)t->np + 1) * sizeof *number);
     if (!number) return DD_ERR_NOMEM;
     FILE *f = fopen(path, "w");
     if (!f) {
-        free(number);
+        dd_mfree(number);
         return DD_ERR_IO;
     }
     const uint32_t npts = number_points(t, number);
     if (fmt == FMT_VTU) write_vtu(f, t, number, npts);
     else write_medit(f, t, number, npts);
-    free(number);
+    dd_mfree(number);
     const int bad = ferror(f);
     return fclose(f) != 0 || bad ? DD_ERR_IO : DD_OK;
 }

@@ -37,6 +37,7 @@ for t in "$REL"/tests/test_*; do
 done
 run "release layers" sh scripts/layers.sh "$REL/obj"
 run "release layers-test" sh tests/test_layers.sh "$REL/obj"
+run "release alloc" sh tests/test_alloc.sh
 run "release make" sh tests/test_make.sh
 run "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 run "release cli" sh tests/test_cli.sh "$REL/dtdel"

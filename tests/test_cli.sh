@@ -293,3 +293,38 @@ expect refine-bench-help 0 "" "$DTDEL" refine-bench --help
 expect refine-bench-small 0 "" "$DTDEL" refine-bench 400 --inserts 300
 grep -q " 0 mismatches" "$tmp/out" && echo "ok cli/refine-bench-agrees" || echo "FAIL cli/refine-bench-agrees: $(cat "$tmp/out")"
 expect refine-bench-bad 2 "usage" "$DTDEL" refine-bench 3
+
+# Out of memory: a test build's CLI refuses the library's k-th allocation
+# when DTDEL_TEST_ALLOC_FAIL=k (src/cli/cli.c); for every k the command
+# exits 0 with the right output or 1 with one message saying so, never
+# anything else (a crash, an ASan report).  A release build reads no such
+# variable: there the check only says so.
+"$DTDEL" gen uniform 30 >"$tmp/u30.xyz"
+nomem() {   # nomem NAME CMD...: every k until 8 runs in a row succeed
+    name=$1; shift
+    "$@" >"$tmp/nomem.ref" 2>/dev/null
+    k=1 fails=0 run=0 bad=""
+    while [ $run -lt 8 ] && [ $k -le 400 ]; do
+        DTDEL_TEST_ALLOC_FAIL=$k "$@" >"$tmp/nomem.out" 2>"$tmp/nomem.err"
+        rc=$?
+        if [ $rc -eq 0 ] && cmp -s "$tmp/nomem.out" "$tmp/nomem.ref"; then run=$((run + 1))
+        elif [ $rc -eq 1 ] && [ ! -s "$tmp/nomem.out" ] && [ "$(wc -l <"$tmp/nomem.err")" -eq 1 ] &&
+             grep -q "out of memory" "$tmp/nomem.err"; then run=0 fails=$((fails + 1))
+        else bad="allocation $k: exit $rc, stderr: $(head -c 300 "$tmp/nomem.err")"; break
+        fi
+        k=$((k + 1))
+    done
+    if [ -n "$bad" ]; then echo "FAIL cli/nomem-$name: $bad"
+    elif [ $fails -eq 0 ]; then echo "FAIL cli/nomem-$name: no allocation failed in a test build"
+    else echo "ok cli/nomem-$name"; fi
+}
+if DTDEL_TEST_ALLOC_FAIL=1 "$DTDEL" tets "$tmp/u30.xyz" >/dev/null 2>&1; then
+    echo "ok cli/nomem-release-reads-no-variable"
+else
+    nomem tets "$DTDEL" tets "$tmp/u30.xyz"
+    nomem delete "$DTDEL" delete "$tmp/u30.xyz" --vertex 3,7,12
+    nomem delete-set "$DTDEL" delete "$tmp/u30.xyz" --vertex 3,7,12 --set
+    nomem tets-out "$DTDEL" tets "$tmp/u30.xyz" --out "$tmp/nomem.vtu"
+    nomem locate "$DTDEL" locate "$tmp/u30.xyz" 0.5 0.25 0.5
+    nomem move "$DTDEL" move "$tmp/u30.xyz" --vertex 4 --to 0.5,0.25,0.5
+fi

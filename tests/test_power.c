@@ -59,6 +59,25 @@ static void note(run *R, int k, int ours, int ref, const double *const *v, const
 
 static int same_point(const double *a, const double *b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
+/* GMP's allocations while our predicates run (none allowed: pred.h's
+ * scratch is sized for every input), counted through GMP's memory hooks. */
+static int g_ours;
+static long g_our_allocs;
+static void *(*g_alloc)(size_t);
+static void *(*g_realloc)(void *, size_t, size_t);
+static void (*g_free)(void *, size_t);
+static void *count_alloc(size_t n)
+{
+    g_our_allocs += g_ours;
+    return g_alloc(n);
+}
+static void *count_realloc(void *p, size_t o, size_t n)
+{
+    g_our_allocs += g_ours;
+    return g_realloc(p, o, n);
+}
+static void count_free(void *p, size_t n) { g_free(p, n); }
+
 /* Every comparison on the finite cell (v0..v3) and query v4. */
 static void check5(run *R, const double in[5][3], const double win[5])
 {
@@ -78,33 +97,44 @@ static void check5(run *R, const double in[5][3], const double win[5])
     }
     const double *q[5] = {v[0], v[1], v[2], v[3], v[4]};
     R->tuples++;
-    const int ex = dd_power_exact(&R->pr, q[0], q[1], q[2], q[3], q[4], w);
+    int apart = 1;   /* pred.h's Delaunay predicates take five distinct points */
+    for (int k = 0; k < 4; k++) apart &= !same_point(q[k], q[4]);
+    const int zero = apart && w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0 && w[4] == 0;
+    dd_pred *pr = &R->pr;
+    g_ours = 1;   /* ours, first */
+    const int ex = dd_power_exact(pr, q[0], q[1], q[2], q[3], q[4], w);
+    const int f = dd_power_filter(pr, q[0], q[1], q[2], q[3], q[4], w);
+    const int pt = dd_power_perturbed(pr, q[0], q[1], q[2], q[3], q[4], w);
+    const int sym = ex == 0 ? dd_power_symbolic(pr, q[0], q[1], q[2], q[3], q[4], w) : pt;
+    const int dist = dd_power_compare_distance(pr, q[4], q[0], w[0], q[1], w[1]);
+    int dins = 0, dinsp = 0, ddist = 0, dist0 = 0;
+    if (zero) {
+        dins = dd_insphere(pr, q[0], q[1], q[2], q[3], q[4]);
+        dinsp = dd_insphere_perturbed(pr, q[0], q[1], q[2], q[3], q[4]);
+        ddist = dd_compare_distance(pr, q[4], q[0], q[1]);
+        dist0 = dd_power_compare_distance(pr, q[4], q[0], 0, q[1], 0);
+    }
+    g_ours = 0;
     note(R, T_EXACT, ex, dd_cgal_power_test(q[0], q[1], q[2], q[3], q[4], w), q, w, 5);
-    const int f = dd_power_filter(&R->pr, q[0], q[1], q[2], q[3], q[4], w);
     if (f != DD_FILTER_UNSURE) {
         R->filter_sure++;
         note(R, T_FILTER, f, ex, q, w, 5);
     }
-    const int pt = dd_power_perturbed(&R->pr, q[0], q[1], q[2], q[3], q[4], w);
     note(R, T_PERT, pt, dd_cgal_power_sphere(q[0], q[1], q[2], q[3], q[4], w, 1), q, w, 5);
     if (ex == 0) {
         R->zeros++;
-        note(R, T_PERT, dd_power_symbolic(&R->pr, q[0], q[1], q[2], q[3], q[4], w), pt, q, w, 5);
+        note(R, T_PERT, sym, pt, q, w, 5);
     }
     if (R->tuples % R->sample == 0) {
         int res;
         if (dd_cgal_power_cell(q[0], q[1], q[2], q[3], q[4], w, &res) == 0) note(R, T_CELL, pt, res, q, w, 5);
         else R->cell_skipped++;
     }
-    note(R, T_DIST, dd_power_compare_distance(&R->pr, q[4], q[0], w[0], q[1], w[1]),
-         dd_cgal_power_compare_distance(q[4], q[0], w[0], q[1], w[1]), q, w, 5);
-    int apart = 1;   /* pred.h's Delaunay predicates take five distinct points */
-    for (int k = 0; k < 4; k++) apart &= !same_point(q[k], q[4]);
-    if (apart && w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0 && w[4] == 0) {
-        note(R, T_ZERO, ex, dd_insphere(&R->pr, q[0], q[1], q[2], q[3], q[4]), q, w, 5);
-        note(R, T_ZERO, pt, dd_insphere_perturbed(&R->pr, q[0], q[1], q[2], q[3], q[4]), q, w, 5);
-        note(R, T_ZERO, dd_power_compare_distance(&R->pr, q[4], q[0], 0, q[1], 0),
-             dd_compare_distance(&R->pr, q[4], q[0], q[1]), q, w, 5);
+    note(R, T_DIST, dist, dd_cgal_power_compare_distance(q[4], q[0], w[0], q[1], w[1]), q, w, 5);
+    if (zero) {
+        note(R, T_ZERO, ex, dins, q, w, 5);
+        note(R, T_ZERO, pt, dinsp, q, w, 5);
+        note(R, T_ZERO, dist0, ddist, q, w, 5);
     }
 }
 
@@ -116,32 +146,37 @@ static void check_facet(run *R, const double in[4][3], const double win[4])
     const double *q[4] = {in[0], in[1], in[2], in[3]};
     const double *w = win;
     R->tuples++;
+    int apart = 1;
+    for (int k = 0; k < 3; k++) apart &= !same_point(q[k], q[3]);
+    const int zero = apart && w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0;
+    const double wr1[4] = {w[1], w[2], w[0], w[3]}, wr2[4] = {w[2], w[0], w[1], w[3]};
+    const double ws[4] = {w[0], w[2], w[1], w[3]};
+    const double *cell[4] = {q[0], q[1], q[2], NULL};
+    dd_pred *pr = &R->pr;
+    g_ours = 1;   /* ours, first */
+    const int ours = dd_power_infinite(pr, q[0], q[1], q[2], q[3], w);
+    const int rot1 = dd_power_infinite(pr, q[1], q[2], q[0], q[3], wr1);
+    const int rot2 = dd_power_infinite(pr, q[2], q[0], q[1], q[3], wr2);
+    const int cop = dd_power_coplanar(pr, q[0], q[1], q[2], q[3], w);
+    const int circ = dd_power_circle_perturbed(pr, q[0], q[2], q[1], q[3], ws);
+    const int dinf = zero ? dd_inf_conflict(pr, cell, 3, q[3]) : 0;
+    g_ours = 0;
     const int o = dd_cgal_orientation(q[0], q[1], q[2], q[3]);
     const int ref = o != 0 ? o : dd_cgal_power_circle(q[0], q[1], q[2], q[3], w, 1);
-    const int ours = dd_power_infinite(&R->pr, q[0], q[1], q[2], q[3], w);
     note(R, T_INF, ours, ref, q, w, 4);
-    const double wr1[4] = {w[1], w[2], w[0], w[3]}, wr2[4] = {w[2], w[0], w[1], w[3]};
-    note(R, T_INFROT, dd_power_infinite(&R->pr, q[1], q[2], q[0], q[3], wr1), ref, q, w, 4);
-    note(R, T_INFROT, dd_power_infinite(&R->pr, q[2], q[0], q[1], q[3], wr2), ref, q, w, 4);
+    note(R, T_INFROT, rot1, ref, q, w, 4);
+    note(R, T_INFROT, rot2, ref, q, w, 4);
     if (o == 0) {
-        const int ex = dd_power_coplanar(&R->pr, q[0], q[1], q[2], q[3], w);
-        note(R, T_COP4, ex, dd_cgal_power_test4(q[0], q[1], q[2], q[3], w), q, w, 4);
-        if (ex == 0) R->zeros++;
-        const double ws[4] = {w[0], w[2], w[1], w[3]};
-        note(R, T_CIRCLE, dd_power_circle_perturbed(&R->pr, q[0], q[2], q[1], q[3], ws),
-             dd_cgal_power_circle(q[0], q[2], q[1], q[3], ws, 1), q, w, 4);
+        note(R, T_COP4, cop, dd_cgal_power_test4(q[0], q[1], q[2], q[3], w), q, w, 4);
+        if (cop == 0) R->zeros++;
+        note(R, T_CIRCLE, circ, dd_cgal_power_circle(q[0], q[2], q[1], q[3], ws, 1), q, w, 4);
     }
     if (R->tuples % R->sample == 0 || o == 0) {
         int res;
         if (dd_cgal_power_infinite(q[0], q[1], q[2], q[3], w, &res) == 0) note(R, T_INFCELL, ours, res, q, w, 4);
         else R->infcell_skipped++;
     }
-    int apart = 1;
-    for (int k = 0; k < 3; k++) apart &= !same_point(q[k], q[3]);
-    if (apart && w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0) {
-        const double *cell[4] = {q[0], q[1], q[2], NULL};
-        note(R, T_ZERO, ours, dd_inf_conflict(&R->pr, cell, 3, q[3]), q, w, 4);
-    }
+    if (zero) note(R, T_ZERO, ours, dinf, q, w, 4);
 }
 
 /* ---- exact scalings --------------------------------------------------- */
@@ -253,6 +288,32 @@ static void lifted_plane_set(run *R, int count, int jitter)
     }
 }
 
+/* Random doubles whose lifted points lie on a random plane up to the
+ * rounding of their weights, the query's moved off it by 2^-j: nearly
+ * degenerate, on both sides of the filter's bound.
+ * Each tuple at several magnitudes (coordinates 2^k, weights 2^2k).    */
+static void near_plane_set(run *R, int count)
+{
+    static const int mags[] = {0, -150, 150, -480, 480};
+    for (int i = 0; i < count; i++) {
+        double v[5][3], w[5], a[3];
+        for (int c = 0; c < 3; c++) a[c] = 2 * tl_unif(&R->r) - 1;
+        const double b = tl_unif(&R->r);
+        for (int k = 0; k < 5; k++) {
+            for (int c = 0; c < 3; c++) v[k][c] = 2 * tl_unif(&R->r) - 1;
+            w[k] = v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2] - (a[0] * v[k][0] + a[1] * v[k][1] +
+                                                                                 a[2] * v[k][2] + b);
+        }
+        /* moved off the plane by 2^-j, j up to 60: across the filter's bound */
+        w[4] += (tl_int(&R->r, 0, 1) ? 1 : -1) * ldexp(1, -(int)tl_int(&R->r, 0, 60));
+        for (size_t m = 0; m < sizeof mags / sizeof *mags; m++) {
+            double x[5][3], wx[5];
+            scale_pts(&x[0][0], &v[0][0], 5, mags[m], 0, wx, w);
+            check5(R, (const double(*)[3])x, wx);
+        }
+    }
+}
+
 /* Integer points of one sphere, every weight wc (zero, or all equal). */
 static void sphere_set(run *R, int count, int64_t r2, double wc)
 {
@@ -358,9 +419,17 @@ int main(int argc, char **argv)
     dd_pred_init(&R.pr);
     R.r.s = 4343;
     R.sample = 8;
+    mp_get_memory_functions(&g_alloc, &g_realloc, &g_free);
+    mp_set_memory_functions(count_alloc, count_realloc, count_free);
 
     R.where = "uniform";
     for (int kind = 0; kind < 4; kind++) uniform_set(&R, 20000 / q, kind);
+    /* the rest with a reserved scratch (an edit's context), the above
+     * with the stack one (a read-only call's)                            */
+    if (dd_pred_reserve(&R.pr) != DD_OK) {
+        fprintf(stderr, "dd_pred_reserve failed\n");
+        return 1;
+    }
     R.where = "grid";
     grid_set(&R, 8000 / q, 3, 2, 0);
     grid_set(&R, 4000 / q, 2, 1, 0);
@@ -370,6 +439,8 @@ int main(int argc, char **argv)
     grid_set(&R, 1000 / q, 3, 3, 2);
     R.where = "lifted-plane";
     for (int j = 0; j < 4; j++) lifted_plane_set(&R, 3000 / q, j);
+    R.where = "near-plane";
+    near_plane_set(&R, 8000 / q);
     R.where = "cosphere";
     static const int64_t radii2[] = {3, 9, 25, 50, 81, 169};
     for (size_t i = 0; i < sizeof radii2 / sizeof *radii2; i++) {
@@ -393,7 +464,10 @@ int main(int argc, char **argv)
     fprintf(stderr, "  %ld tuples (%ld exactly degenerate), %ld comparisons; filter sure on %ld; "
             "RT cells skipped %ld finite, %ld infinite\n",
             R.tuples, R.zeros, total, R.filter_sure, R.cell_skipped, R.infcell_skipped);
+    tl_check(&st, g_our_allocs == 0, "power/no-gmp-allocation", "%ld GMP allocations in our predicates",
+             g_our_allocs);
     tl_check(&st, R.zeros > 1000 / q, "power/degenerate-count", "only %ld exactly degenerate tuples", R.zeros);
     dd_pred_clear(&R.pr);
+    mp_set_memory_functions(g_alloc, g_realloc, g_free);
     return tl_finish(&st);
 }

@@ -17,6 +17,7 @@
  */
 #include "delete/grr.h"
 #include "delete/bdst.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -38,10 +39,10 @@ static void brio_buf_free(void *p)
 {
     brio_buf *b = p;
     if (!b) return;
-    free(b->loc); free(b->mark); free(b->rmark);
-    free(b->ids); free(b->tri); free(b->parent); free(b->order); free(b->seq); free(b->guide); free(b->cur);
+    dd_mfree(b->loc); dd_mfree(b->mark); dd_mfree(b->rmark);
+    dd_mfree(b->ids); dd_mfree(b->tri); dd_mfree(b->parent); dd_mfree(b->order); dd_mfree(b->seq); dd_mfree(b->guide); dd_mfree(b->cur);
     dd_bdst_ws_free(b->ws);
-    free(b);
+    dd_mfree(b);
 }
 
 static const dd_scratch_kind brio_kind = {"grr-brio", brio_buf_free};
@@ -52,8 +53,8 @@ static dd_status get_buf(dd_del *d, size_t deg, brio_buf **out)
 {
     brio_buf *b = dd_del_scratch(d, &brio_kind);
     if (!b) {
-        b = calloc(1, sizeof *b);
-        if (!b || !(b->ws = dd_bdst_ws_new())) { free(b); return DD_ERR_NOMEM; }
+        b = dd_calloc(1, sizeof *b);
+        if (!b || !(b->ws = dd_bdst_ws_new())) { dd_mfree(b); return DD_ERR_NOMEM; }
         dd_status s = dd_del_keep_scratch(d, &brio_kind, b);
         if (s != DD_OK) return s;
     }
@@ -122,8 +123,9 @@ static dd_status brio_fill(dd_del *d)
             }
             nt++;
         }
-        if (dd_bdst(b->ws, b->tri, nt, nv, b->loc[d->base[0]], b->parent, b->order) != 0) {
-            s = DD_ERR_INTERNAL;
+        int bs = dd_bdst(b->ws, b->tri, nt, nv, b->loc[d->base[0]], b->parent, b->order);
+        if (bs != DD_BDST_OK) {
+            s = bs == DD_BDST_ENOMEM ? DD_ERR_NOMEM : DD_ERR_INTERNAL;
             break;
         }
         /* 3. The round's points in BFS order, each with its tree parent. */

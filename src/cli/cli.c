@@ -10,6 +10,7 @@
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
 #include "cli/cli.h"
+#include "dtdel/alloc.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -99,7 +100,7 @@ static int cmd_gen(int argc, char **argv)
     if (rc) return rc;
     for (uint32_t i = 0; i < np; i++)
         printf("%.17g %.17g %.17g\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-    free(xyz);
+    dd_mfree(xyz);
     return 0;
 }
 
@@ -144,7 +145,7 @@ int build_file(const char *cmd, const char *path, dd_tri **t)
     if (rc) return rc;
     char msg[512];
     dd_status s = dd_create(t, xyz, np, msg, sizeof msg);
-    free(xyz);
+    dd_mfree(xyz);
     if (s != DD_OK) {
         fprintf(stderr, "dtdel %s: %s: %s\n", cmd, path, msg);
         return EXIT_INPUT;
@@ -196,7 +197,7 @@ static int cmd_tets(int argc, char **argv)
         return EXIT_INPUT;
     }
     write_tets(tets, n);
-    free(tets);
+    dd_mfree(tets);
     dd_free(t);
     return 0;
 }
@@ -210,7 +211,7 @@ static int cmd_cgal_tets(int argc, char **argv)
     int rc = load_file("cgal-tets", argv[1], &xyz, &np);
     if (rc) return rc;
     dd_cgal *c = dd_cgal_build(xyz, np);
-    free(xyz);
+    dd_mfree(xyz);
     if (!c) {
         fprintf(stderr, "dtdel cgal-tets: %s: CGAL cannot build a 3D triangulation of these points\n", argv[1]);
         return EXIT_INPUT;
@@ -222,7 +223,7 @@ static int cmd_cgal_tets(int argc, char **argv)
         return EXIT_INPUT;
     }
     write_tets(tets, n);
-    free(tets);
+    dd_mfree(tets);
     dd_cgal_free(c);
     return 0;
 }
@@ -306,7 +307,7 @@ static int cmd_build_bench(int argc, char **argv)
         double t1 = now_seconds();
         if (s != DD_OK) {
             fprintf(stderr, "dtdel build-bench: %s\n", msg);
-            free(xyz);
+            dd_mfree(xyz);
             return EXIT_INPUT;
         }
         c = dd_cgal_build(xyz, np);
@@ -319,8 +320,8 @@ static int cmd_build_bench(int argc, char **argv)
     size_t na = 0, nb = 0;
     if (c && dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(c, &b, &nb))
         same = same_canonical(a, na, b, nb);
-    free(a);
-    free(b);
+    dd_mfree(a);
+    dd_mfree(b);
     double to = median_of(ours, reps), tc = median_of(theirs, reps);   /* sorted now */
     printf("dataset %s, n = %u, %zu cells (%zu finite)\n", dataset, np, dd_num_tets(t), dd_num_finite_tets(t));
     printf("runs: %u each, alternated; medians (fastest-slowest)\n", (unsigned)reps);
@@ -333,7 +334,7 @@ static int cmd_build_bench(int argc, char **argv)
     printf("identical to CGAL: %s\n", same ? "yes" : "NO");
     dd_cgal_free(c);
     dd_free(t);
-    free(xyz);
+    dd_mfree(xyz);
     return same ? 0 : EXIT_INPUT;
 }
 
@@ -471,6 +472,13 @@ static void main_usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+#ifdef DD_TEST_BUILD
+    /* Test builds: DTDEL_TEST_ALLOC_FAIL=k refuses the library's k-th
+     * allocation (tests/test_cli.sh: out of memory exits 1 with one
+     * message).  Release builds read no such variable.                  */
+    const char *fail_at = getenv("DTDEL_TEST_ALLOC_FAIL");
+    if (fail_at) dd_test_control(NULL, DD_TEST_ALLOC_FAIL, atol(fail_at));
+#endif
     if (argc < 2) { main_usage(stderr); return EXIT_USAGE; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         main_usage(stdout);

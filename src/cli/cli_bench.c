@@ -40,6 +40,7 @@
  */
 #include "cli/cli.h"
 #include "cli/buckets.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -93,8 +94,8 @@ static phase_row *load_phases(const char *dir, const char *dataset, size_t *n)
     FILE *f = fopen(path, "r");
     if (!f) return NULL;
     size_t cap = 256;
-    phase_row *a = malloc(cap * sizeof *a);
-    if (!fgets(line, sizeof line, f)) { fclose(f); free(a); return NULL; }   /* header */
+    phase_row *a = dd_malloc(cap * sizeof *a);
+    if (!fgets(line, sizeof line, f)) { fclose(f); dd_mfree(a); return NULL; }   /* header */
     while (a && fgets(line, sizeof line, f)) {
         phase_row r;
         char ds[64];
@@ -104,7 +105,7 @@ static phase_row *load_phases(const char *dir, const char *dataset, size_t *n)
             continue;
         r.tets = tets;
         if (*n == cap) {
-            phase_row *b = realloc(a, 2 * cap * sizeof *a);
+            phase_row *b = dd_realloc(a, 2 * cap * sizeof *a);
             if (!b) break;
             a = b;
             cap *= 2;
@@ -133,7 +134,7 @@ static int local_hash(const row *r, dd_tri *t, dd_cgal *g, const uint32_t *nb, u
     int bad = r->kind == ROW_ENGINE ? dd_local_canonical(t, nb, k, &a, &n) != DD_OK
                                     : dd_cgal_local_canonical(g, nb, k, &a, &n);
     if (!bad) *h = dd_canonical_hash(a, n);
-    free(a);
+    dd_mfree(a);
     return bad;
 }
 
@@ -157,14 +158,14 @@ static int bench_sample(dd_tri *t, uint32_t np, uint32_t k, uint32_t bmin, uint6
     enum { NB = 64 };                                /* buckets of 64-bit degrees */
     uint32_t have[NB] = {0}, *pool = NULL;
     uint8_t *bk = NULL;                              /* bucket of each candidate, else NB */
-    uint32_t *v = malloc((size_t)np * sizeof *v);
+    uint32_t *v = dd_malloc((size_t)np * sizeof *v);
     if (!v) return -1;
     uint32_t n = 0;
     for (; n < k; n++) v[n] = draw_vertex(t, x, np, used);
     if (bmin > 0) {
-        bk = malloc((size_t)np * sizeof *bk);
-        pool = malloc((size_t)np * sizeof *pool);
-        if (!bk || !pool) { free(v); free(bk); free(pool); return -1; }
+        bk = dd_malloc((size_t)np * sizeof *bk);
+        pool = dd_malloc((size_t)np * sizeof *pool);
+        if (!bk || !pool) { dd_mfree(v); dd_mfree(bk); dd_mfree(pool); return -1; }
         for (uint32_t i = 0; i < n; i++) have[dd_degree_bucket(dd_degree(t, v[i]))]++;
         for (uint32_t i = 0; i < np; i++)                /* each degree once */
             bk[i] = dd_is_vertex(t, i) && !used[i] ? (uint8_t)dd_degree_bucket(dd_degree(t, i)) : NB;
@@ -181,8 +182,8 @@ static int bench_sample(dd_tri *t, uint32_t np, uint32_t k, uint32_t bmin, uint6
             }
         }
     }
-    free(bk);
-    free(pool);
+    dd_mfree(bk);
+    dd_mfree(pool);
     *out = v;
     *nout = n;
     return 0;
@@ -302,8 +303,8 @@ static int full_equal(const row *r, dd_tri *t, dd_cgal *g, dd_cgal *ref)
     int32_t *a = NULL, *b = NULL;
     size_t na = 0, nb = 0;
     int ok = !row_canonical(r, t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) && same_canonical(a, na, b, nb);
-    free(a);
-    free(b);
+    dd_mfree(a);
+    dd_mfree(b);
     return ok;
 }
 
@@ -371,7 +372,7 @@ static int open_dataset(bench_run *b, const char *dataset)
 {
     if (b->open_ds && !strcmp(b->open_ds, dataset)) return 0;
     if (b->csv) fclose(b->csv);
-    free(b->ph);
+    dd_mfree(b->ph);
     b->ph = NULL;
     char path[512];
     snprintf(path, sizeof path, "%s/%s.csv", b->o.outdir, dataset);
@@ -407,8 +408,8 @@ static int setup_case(const bench_run *b, const bcase *c, bench_case *bc)
     if (k > dd_num_vertices(bc->t)) k = dd_num_vertices(bc->t);
     bc->k = k;
     uint64_t x = (o->seed + c->n) * 0x9E3779B97F4A7C15ull | 1;
-    bc->used = calloc(bc->np, 1);
-    bc->nb = malloc((bc->np + 1) * sizeof *bc->nb);
+    bc->used = dd_calloc(bc->np, 1);
+    bc->nb = dd_malloc((bc->np + 1) * sizeof *bc->nb);
     uint32_t bmin = o->bucket_min >= 0 ? (uint32_t)o->bucket_min : (uint32_t)((double)c->bucket_min * o->scale + 0.5);
     if (!bc->used || !bc->nb || bench_sample(bc->t, bc->np, k, bmin, &x, bc->used, &bc->sample, &bc->ns)) {
         fprintf(stderr, "dtdel bench: out of memory\n");
@@ -419,10 +420,10 @@ static int setup_case(const bench_run *b, const bcase *c, bench_case *bc)
 
 static void free_case(bench_case *bc)
 {
-    free(bc->used);
-    free(bc->nb);
-    free(bc->sample);
-    free(bc->pts);
+    dd_mfree(bc->used);
+    dd_mfree(bc->nb);
+    dd_mfree(bc->sample);
+    dd_mfree(bc->pts);
     dd_free(bc->t);
     dd_cgal_free(bc->g);
     dd_cgal_free(bc->ref);
@@ -578,7 +579,7 @@ int cmd_bench(int argc, char **argv)
         if (!rc) rc = run_case(&b, c);
     }
     if (b.csv) fclose(b.csv);
-    free(b.ph);
+    dd_mfree(b.ph);
     if (rc) return rc;
     fprintf(stderr, "  bench: %ld mismatches%s\n", b.mismatches, b.mismatches ? " -- A BUG" : "");
     return b.mismatches ? EXIT_INPUT : 0;
@@ -696,14 +697,14 @@ int cmd_seq_bench(int argc, char **argv)
     dd_tri *t = NULL;
     if (dd_create(&t, xyz, np, msg, sizeof msg) != DD_OK) {
         fprintf(stderr, "dtdel seq-bench: %s\n", msg);
-        free(xyz);
+        dd_mfree(xyz);
         return EXIT_INPUT;
     }
-    uint32_t *rnd = malloc((size_t)np * sizeof *rnd), *spa = malloc((size_t)np * sizeof *spa);
-    keyed *kv = malloc((size_t)np * sizeof *kv);
+    uint32_t *rnd = dd_malloc((size_t)np * sizeof *rnd), *spa = dd_malloc((size_t)np * sizeof *spa);
+    keyed *kv = dd_malloc((size_t)np * sizeof *kv);
     if (!rnd || !spa || !kv) {
         fprintf(stderr, "dtdel seq-bench: out of memory\n");
-        free(rnd); free(spa); free(kv); free(xyz); dd_free(t);
+        dd_mfree(rnd); dd_mfree(spa); dd_mfree(kv); dd_mfree(xyz); dd_free(t);
         return EXIT_INPUT;
     }
     /* The vertices (duplicates merged away are not), shuffled by a seeded
@@ -730,7 +731,7 @@ int cmd_seq_bench(int argc, char **argv)
     for (uint32_t i = 0; i < k; i++) kv[i] = (keyed){morton_key(xyz + 3 * (size_t)rnd[i], lo, hi), rnd[i]};
     qsort(kv, k, sizeof *kv, cmp_keyed);
     for (uint32_t i = 0; i < k; i++) spa[i] = kv[i].v;
-    free(kv);
+    dd_mfree(kv);
     /* the runs: ours and CGAL's in random order, in Morton order, ours as a set */
     const struct { const char *name; const uint32_t *order; int engine, set; } runs[] = {
         {"random order", rnd, 1, 0}, {"random order", rnd, 0, 0}, {"Morton order", spa, 1, 0},
@@ -762,9 +763,9 @@ int cmd_seq_bench(int argc, char **argv)
         printf("identical to CGAL: %s\n", same ? "yes" : "NO");
         if (!same) rc = EXIT_INPUT;
     }
-    for (int i = 0; i < NRUN; i++) free(canon[i]);
-    free(rnd);
-    free(spa);
-    free(xyz);
+    for (int i = 0; i < NRUN; i++) dd_mfree(canon[i]);
+    dd_mfree(rnd);
+    dd_mfree(spa);
+    dd_mfree(xyz);
     return rc;
 }

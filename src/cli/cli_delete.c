@@ -11,6 +11,7 @@
  * the reference, is compared with CGAL's canonical form.
  */
 #include "cli/cli.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -63,24 +64,25 @@ static int reinsert_timed(dd_tri *t, uint32_t v, double *secs)
     return st == DD_OK ? 0 : -2;
 }
 
-/* Parses "I,J,K" into a malloc'd list. */
+/* Parses "I,J,K" into a malloc'd list: 0, -1 when malformed, -2 when
+ * out of memory.                                                        */
 static int parse_list(const char *s, uint32_t **out, size_t *n)
 {
     size_t cap = 8, k = 0;
-    uint32_t *a = malloc(cap * sizeof *a);
-    if (!a) return -1;
+    uint32_t *a = dd_malloc(cap * sizeof *a);
+    if (!a) return -2;
     const char *p = s;
     for (;;) {
         char buf[32];
         size_t len = strcspn(p, ",");
         uint64_t x;
-        if (len == 0 || len >= sizeof buf) { free(a); return -1; }
+        if (len == 0 || len >= sizeof buf) { dd_mfree(a); return -1; }
         memcpy(buf, p, len);
         buf[len] = 0;
-        if (parse_u64(buf, &x) || x >= UINT32_MAX) { free(a); return -1; }
+        if (parse_u64(buf, &x) || x >= UINT32_MAX) { dd_mfree(a); return -1; }
         if (k == cap) {
-            uint32_t *b = realloc(a, 2 * cap * sizeof *a);
-            if (!b) { free(a); return -1; }
+            uint32_t *b = dd_realloc(a, 2 * cap * sizeof *a);
+            if (!b) { dd_mfree(a); return -2; }
             a = b;
             cap *= 2;
         }
@@ -102,14 +104,14 @@ static int load_both(const char *cmd, const char *path, int want_cgal, dd_tri **
     char msg[512];
     if (dd_create(t, *pts, *np, msg, sizeof msg) != DD_OK) {
         fprintf(stderr, "dtdel %s: %s: %s\n", cmd, path, msg);
-        free(*pts);
+        dd_mfree(*pts);
         return EXIT_INPUT;
     }
     *g = NULL;
     if (want_cgal && !(*g = dd_cgal_build(*pts, *np))) {
         fprintf(stderr, "dtdel %s: %s: CGAL cannot triangulate these points\n", cmd, path);
         dd_free(*t);
-        free(*pts);
+        dd_mfree(*pts);
         return EXIT_INPUT;
     }
     return 0;
@@ -144,12 +146,14 @@ int cmd_delete(int argc, char **argv)
     if (!file || !vlist) return usage_error("delete", "missing FILE or --vertex%s", "");
     uint32_t *vs;
     size_t nv;
-    if (parse_list(vlist, &vs, &nv))
+    int bad = parse_list(vlist, &vs, &nv);
+    if (bad == -2) { fprintf(stderr, "dtdel delete: out of memory\n"); return EXIT_INPUT; }
+    if (bad)
         return usage_error("delete", "--vertex wants non-negative integers separated by commas, got '%s'", vlist);
     row r = {dd_variant_name(0), ROW_ENGINE};
     if (var && !find_row(var, &r)) {
         fprintf(stderr, "dtdel delete: unknown variant '%s' (see dtdel variants)\n", var);
-        free(vs);
+        dd_mfree(vs);
         return EXIT_INPUT;
     }
     dd_tri *t;
@@ -157,11 +161,11 @@ int cmd_delete(int argc, char **argv)
     double *pts;
     uint32_t np;
     if (set && (r.kind != ROW_ENGINE || stats)) {
-        free(vs);
+        dd_mfree(vs);
         return usage_error("delete", "--set is for an engine strategy, without --stats%s", "");
     }
     int rc = load_both("delete", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
-    if (rc) { free(vs); return rc; }
+    if (rc) { dd_mfree(vs); return rc; }
     if (set && dd_delete_set_with(t, vs, nv, r.name) != DD_OK) {
         fprintf(stderr, "dtdel delete: cannot delete the set: %s\n", dd_errmsg(t));
         rc = EXIT_INPUT;
@@ -199,11 +203,11 @@ int cmd_delete(int argc, char **argv)
     if (!rc) {
         int32_t *a;
         size_t n;
-        if (row_canonical(&r, t, g, &a, &n)) rc = EXIT_INPUT;
-        else { write_tets(a, n); free(a); }
+        if (row_canonical(&r, t, g, &a, &n)) rc = EXIT_INPUT, fprintf(stderr, "dtdel delete: out of memory\n");
+        else { write_tets(a, n); dd_mfree(a); }
     }
-    free(vs);
-    free(pts);
+    dd_mfree(vs);
+    dd_mfree(pts);
     dd_free(t);
     dd_cgal_free(g);
     return rc;
@@ -244,7 +248,7 @@ int cmd_time(int argc, char **argv)
     uint32_t np;
     int rc = load_both("time", file, r.kind != ROW_ENGINE, &t, &g, &pts, &np);
     if (rc) return rc;
-    double *us = malloc(repeat * sizeof *us);
+    double *us = dd_malloc(repeat * sizeof *us);
     if (!us) {
         fprintf(stderr, "dtdel time: out of memory\n");
         rc = EXIT_INPUT;
@@ -276,8 +280,8 @@ int cmd_time(int argc, char **argv)
         }
     }
     if (!rc) printf("%.3f\n", median_of(us, repeat));
-    free(us);
-    free(pts);
+    dd_mfree(us);
+    dd_mfree(pts);
     dd_free(t);
     dd_cgal_free(g);
     return rc;
@@ -329,21 +333,21 @@ int cmd_check(int argc, char **argv)
     int rc = load_file("check", file, &pts, &np);
     if (rc) return rc;
     /* The sample: K distinct vertices drawn with a seeded generator. */
-    uint32_t *sample = malloc((k ? k : 1) * sizeof *sample);
+    uint32_t *sample = dd_malloc((k ? k : 1) * sizeof *sample);
     uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
     dd_tri *probe;
     char msg[512];
     if (!sample || dd_create(&probe, pts, np, msg, sizeof msg) != DD_OK) {
         fprintf(stderr, "dtdel check: %s: %s\n", file, sample ? msg : "out of memory");
-        free(sample);
-        free(pts);
+        dd_mfree(sample);
+        dd_mfree(pts);
         return EXIT_INPUT;
     }
     uint32_t nvert = dd_num_vertices(probe);
     if (k > nvert) k = nvert;
-    unsigned char *chosen = calloc(np ? np : 1, 1);
+    unsigned char *chosen = dd_calloc(np ? np : 1, 1);
     for (uint64_t i = 0; i < k && chosen; i++) sample[i] = draw_vertex(probe, &x, np, chosen);
-    free(chosen);
+    dd_mfree(chosen);
     dd_free(probe);
     int any_bad = 0;
     for (size_t ri = 0; ri < nr; ri++) {
@@ -369,8 +373,8 @@ int cmd_check(int argc, char **argv)
             if (!row_canonical(&rows[ri], t, g, &a, &na) && !dd_cgal_canonical(ref, &b, &nb) &&
                 same_canonical(a, na, b, nb))
                 matched++;
-            free(a);
-            free(b);
+            dd_mfree(a);
+            dd_mfree(b);
             if (!sequence) {
                 row_reinsert(&rows[ri], t, g, v);
                 dd_cgal_reinsert(ref, v);
@@ -383,7 +387,7 @@ int cmd_check(int argc, char **argv)
         dd_cgal_free(g);
         dd_cgal_free(ref);
     }
-    free(sample);
-    free(pts);
+    dd_mfree(sample);
+    dd_mfree(pts);
     return any_bad ? EXIT_INPUT : 0;
 }

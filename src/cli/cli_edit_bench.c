@@ -10,6 +10,7 @@
  */
 #include "cli/cli.h"
 #include "cgal/cgal_query.h"
+#include "dtdel/alloc.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -55,8 +56,8 @@ static int smoothing(const eb_opts *o)
     if (gen_points("edit-bench", "uniform", o->n, o->seed, &p, &np)) return 1;
     qsort(p, np, 3 * sizeof *p, by_morton);
     const uint64_t k = o->passes * np;
-    uint32_t *who = malloc(k * sizeof *who);
-    double *to = malloc(3 * k * sizeof *to), *cur = malloc(3 * (size_t)np * sizeof *cur);
+    uint32_t *who = dd_malloc(k * sizeof *who);
+    double *to = dd_malloc(3 * k * sizeof *to), *cur = dd_malloc(3 * (size_t)np * sizeof *cur);
     dd_tri *t = NULL;
     char msg[256];
     dd_cgalq *g = dd_cgalq_build(p, np, 0);
@@ -93,7 +94,7 @@ static int smoothing(const eb_opts *o)
     }
     dd_free(t);
     dd_cgalq_free(g);
-    free(p), free(who), free(to), free(cur);
+    dd_mfree(p), dd_mfree(who), dd_mfree(to), dd_mfree(cur);
     return rc || bad;
 }
 
@@ -103,7 +104,7 @@ static int set_deletion(const eb_opts *o, double fraction)
     double *p = NULL;
     uint32_t np;
     if (gen_points("edit-bench", "uniform", o->m, o->seed + 3, &p, &np)) return 1;
-    uint32_t *vs = malloc((size_t)np * sizeof *vs), k = 0;
+    uint32_t *vs = dd_malloc((size_t)np * sizeof *vs), k = 0;
     dd_tri *t = NULL;
     char msg[256];
     dd_cgalq *g = dd_cgalq_build(p, np, 0);
@@ -130,7 +131,7 @@ static int set_deletion(const eb_opts *o, double fraction)
     }
     dd_free(t);
     dd_cgalq_free(g);
-    free(p), free(vs);
+    dd_mfree(p), dd_mfree(vs);
     return rc;
 }
 

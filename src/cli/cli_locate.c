@@ -4,6 +4,7 @@
  * `dtdel move FILE --vertex I --to X,Y,Z` (dd_move).
  */
 #include "cli/cli.h"
+#include "dtdel/alloc.h"
 
 #include <errno.h>
 #include <math.h>
@@ -42,7 +43,7 @@ int cmd_locate(int argc, char **argv)
     }
     uint32_t v = 0;
     if ((s = dd_nearest_vertex(t, p, &v)) != DD_OK) {
-        fprintf(stderr, "dtdel locate: %s\n", dd_errmsg(t));
+        fprintf(stderr, "dtdel locate: no nearest vertex: %s\n", dd_status_name(s));   /* a read: no dd_errmsg */
         dd_free(t);
         return EXIT_INPUT;
     }
@@ -90,7 +91,7 @@ int cmd_move(int argc, char **argv)
     } else {
         write_tets(tets, n);
     }
-    free(tets);
+    dd_mfree(tets);
     dd_free(t);
     return rc;
 }

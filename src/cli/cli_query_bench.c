@@ -12,6 +12,7 @@
  */
 #include "cli/cli.h"
 #include "cgal/cgal_query.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -59,8 +60,8 @@ int same_as_cgalq(dd_tri *t, const dd_cgalq *g)
     size_t na = 0, nb = 0;
     int same = dd_canonical(t, &a, &na) == DD_OK && !dd_cgalq_canonical(g, &b, &nb) && na == nb &&
                !memcmp(a, b, 4 * na * sizeof *a);
-    free(a);
-    free(b);
+    dd_mfree(a);
+    dd_mfree(b);
     return same;
 }
 
@@ -89,7 +90,7 @@ static qb_row bench_locate(dd_tri *t, dd_cgalq *g, dd_cgalq *gf, const double *q
 {
     qb_row r = {0, 0, 0, 0};
     int32_t c[4], d[4];
-    int32_t *ours = malloc(4 * k * sizeof *ours);
+    int32_t *ours = dd_malloc(4 * k * sizeof *ours);
     if (!ours) { r.bad = 1; return r; }
     double t0 = now_seconds();
     for (uint64_t i = 0; i < k; i++) r.bad += dd_locate(t, q + 3 * i, ours + 4 * i) != DD_OK;
@@ -115,16 +116,16 @@ static qb_row bench_locate(dd_tri *t, dd_cgalq *g, dd_cgalq *gf, const double *q
         differ += !same && outside != 2;
     }
     r.bad += differ > 0;
-    free(ours);
+    dd_mfree(ours);
     return r;
 }
 
 static qb_row bench_nearest(dd_tri *t, dd_cgalq *g, dd_cgalq *gf, const double *q, uint64_t k)
 {
     qb_row r = {0, 0, 0, 0};
-    uint32_t *ours = malloc(k * sizeof *ours);
-    int64_t *theirs = malloc(k * sizeof *theirs);
-    if (!ours || !theirs) { free(ours); free(theirs); r.bad = 1; return r; }
+    uint32_t *ours = dd_malloc(k * sizeof *ours);
+    int64_t *theirs = dd_malloc(k * sizeof *theirs);
+    if (!ours || !theirs) { dd_mfree(ours); dd_mfree(theirs); r.bad = 1; return r; }
     double t0 = now_seconds();
     for (uint64_t i = 0; i < k; i++)
         if (dd_nearest_vertex(t, q + 3 * i, &ours[i]) != DD_OK) ours[i] = UINT32_MAX;
@@ -148,8 +149,8 @@ static qb_row bench_nearest(dd_tri *t, dd_cgalq *g, dd_cgalq *gf, const double *
         }
         r.bad += da != db;
     }
-    free(ours);
-    free(theirs);
+    dd_mfree(ours);
+    dd_mfree(theirs);
     return r;
 }
 
@@ -166,12 +167,12 @@ static int churn(const qb_opts *o)
     char msg[256];
     if (dd_create(&t, p, np, msg, sizeof msg) != DD_OK) {
         fprintf(stderr, "dtdel query-bench: %s\n", msg);
-        free(p);
+        dd_mfree(p);
         return 1;
     }
-    free(p);
+    dd_mfree(p);
     uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
-    uint32_t *live = malloc((size_t)np * sizeof *live), nlive = np, half = np / 2;
+    uint32_t *live = dd_malloc((size_t)np * sizeof *live), nlive = np, half = np / 2;
     size_t rss2 = 0, mem2 = 0, rss = 0, mem = 0;
     int rc = !live;
     for (uint32_t i = 0; live && i < np; i++) live[i] = i;
@@ -201,7 +202,7 @@ static int churn(const qb_opts *o)
            (unsigned long long)o->rounds, rss2 ? (double)rss / (double)rss2 : 0, (double)mem2 / 1048576.0,
            (double)mem / 1048576.0,
            mem2 ? (double)mem / (double)mem2 : 0, rc ? "NO" : "yes");
-    free(live);
+    dd_mfree(live);
     dd_free(t);
     return rc || (o->rounds >= 2 && (double)rss > 1.3 * (double)rss2);
 }
@@ -217,7 +218,7 @@ int cmd_query_bench(int argc, char **argv)
     if (gen_points("query-bench", "uniform", o.n, o.seed, &p, &np) ||
         gen_points("query-bench", "uniform", o.inserts, o.seed + 1, &ins, &nins) ||
         gen_points("query-bench", "uniform", o.queries, o.seed + 2, &q, &nq)) {
-        free(p), free(ins), free(q);
+        dd_mfree(p), dd_mfree(ins), dd_mfree(q);
         return EXIT_INPUT;
     }
     dd_tri *t = NULL;
@@ -242,7 +243,7 @@ int cmd_query_bench(int argc, char **argv)
     dd_cgalq_free(g);
     dd_cgalq_free(gf);
     dd_free(t);
-    free(p), free(ins), free(q);
+    dd_mfree(p), dd_mfree(ins), dd_mfree(q);
     fflush(stdout);
     if (!rc && o.rounds) rc |= churn(&o);
     return rc ? EXIT_INPUT : 0;

@@ -13,6 +13,7 @@
 #include "cli/cli.h"
 #include "cli/refine_rule.h"
 #include "cgal/cgal_refine.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -51,7 +52,7 @@ static int grow(void *pp, size_t *cap, size_t need, size_t size)
     while (c < need) c *= 2;
     void *p;
     memcpy(&p, pp, sizeof p);
-    p = realloc(p, c * size);
+    p = dd_realloc(p, c * size);
     if (!p) return -1;
     memcpy(pp, &p, sizeof p);
     *cap = c;
@@ -160,7 +161,7 @@ int cmd_refine_bench(int argc, char **argv)
     if (!g || dd_create(&r.t, xyz, np, msg, sizeof msg) != DD_OK ||
         grow(&r.pts, &r.cappts, 3 * (size_t)np, sizeof *r.pts)) {
         fprintf(stderr, "dtdel refine-bench: cannot build the triangulations\n");
-        dd_cgalr_free(g), dd_free(r.t), free(xyz);
+        dd_cgalr_free(g), dd_free(r.t), dd_mfree(xyz);
         return EXIT_INPUT;
     }
     memcpy(r.pts, xyz, 3 * (size_t)np * sizeof *xyz);
@@ -181,9 +182,9 @@ int cmd_refine_bench(int argc, char **argv)
            np, ours_done, cgal_done, 1e6 * (t1 - t0) / (ours_done ? ours_done : 1),
            1e6 * (t2 - t1) / (cgal_done ? cgal_done : 1), (t2 - t1) / (t1 - t0),
            (unsigned long long)dd_canonical_hash(a, na), (unsigned long long)dd_canonical_hash(b, nb), mismatches);
-    free(a), free(b);
+    dd_mfree(a), dd_mfree(b);
     dd_cgalr_free(g);
     dd_free(r.t);
-    free(r.heap), free(r.stamp), free(r.pts), free(xyz);
+    dd_mfree(r.heap), dd_mfree(r.stamp), dd_mfree(r.pts), dd_mfree(xyz);
     return rc ? EXIT_INPUT : mismatches ? EXIT_INPUT : 0;
 }

@@ -71,6 +71,7 @@
  */
 #include "delete/bdst.h"
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -122,14 +123,14 @@ static inline uint32_t rot_prev(const dd_bdst_ws *ws, uint32_t h) { return he_ne
 
 dd_bdst_ws *dd_bdst_ws_new(void)
 {
-    return calloc(1, sizeof(dd_bdst_ws));
+    return dd_calloc(1, sizeof(dd_bdst_ws));
 }
 
 void dd_bdst_ws_free(dd_bdst_ws *ws)
 {
     if (!ws) return;
-    free(ws->block);
-    free(ws);
+    dd_mfree(ws->block);
+    dd_mfree(ws);
 }
 
 /* Makes room for nv vertices (and 6*nv half-edges).  Contents are scratch,
@@ -144,9 +145,9 @@ static int grow_ws(dd_bdst_ws *ws, uint32_t nv)
     /* 4 half-edge arrays; 16 vertex arrays (ostart one longer) and child
      * (two per vertex); then the 2 byte arrays: about 170 bytes a vertex  */
     size_t n32 = 4 * nh + 18 * cap + 1;
-    void *b = malloc(n32 * sizeof(uint32_t) + 2 * cap);
+    void *b = dd_malloc(n32 * sizeof(uint32_t) + 2 * cap);
     if (!b) return DD_BDST_ENOMEM;
-    free(ws->block);
+    dd_mfree(ws->block);
     ws->block = b;
     ws->cap_v = (uint32_t)cap;
     uint32_t *p = b;

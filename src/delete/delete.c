@@ -12,6 +12,7 @@
  * perturbed DT; d->qdt holds whatever the last strategy left (garbage).
  */
 #include "delete/delete.h"
+#include "dtdel/alloc.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -26,11 +27,11 @@ void dd_del_free(dd_del *d)
     dd_vec_free(&d->star); dd_vec_free(&d->nbr); dd_vec_free(&d->fill);
     dd_vec_free(&d->order); dd_vec_free(&d->sew_out); dd_vec_free(&d->cellmap);
     dd_trihash_free(&d->lhash);
-    free(d->vmark);
-    free(d->qdt_vcell);
+    dd_mfree(d->vmark);
+    dd_mfree(d->qdt_vcell);
     dd_tri_destroy(d->qdt);
     for (int i = 0; i < DD_SCRATCH_SLOTS && d->scratch[i].kind; i++) d->scratch[i].kind->free(d->scratch[i].p);
-    free(d);
+    dd_mfree(d);
 }
 
 /* Makes t->del exist and fit the current vertex arrays. */
@@ -38,10 +39,10 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
 {
     dd_del *d = t->del;
     if (!d) {
-        d = calloc(1, sizeof *d);
+        d = dd_calloc(1, sizeof *d);
         if (!d) return DD_ERR_NOMEM;
         d->t = t;            /* d->rng: seeded by each deletion */
-        if (dd_tri_alloc_borrowed(&d->qdt) != DD_OK) { free(d); return DD_ERR_NOMEM; }
+        if (dd_tri_alloc_borrowed(&d->qdt) != DD_OK) { dd_mfree(d); return DD_ERR_NOMEM; }
         t->del = d;
     }
     if (d->vmark_cap < t->cap_v) {

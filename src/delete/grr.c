@@ -9,6 +9,7 @@
  * context and reused.
  */
 #include "delete/grr.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -32,12 +33,12 @@ static void grr_free(void *p)
     dd_grr *g = p;
     if (!g) return;
     dd_link_free(&g->link);
-    free(g->candpos); free(g->rempos);
+    dd_mfree(g->candpos); dd_mfree(g->rempos);
     dd_trihash_free(&g->dh);
     for (int k = 0; k <= DD_LOWDEG; k++) dd_vec_free(&g->cand[k]);
     dd_vec_free(&g->rem); dd_vec_free(&g->seq);
     dd_vec_free(&g->gv); dd_vec_free(&g->gt); dd_vec_free(&g->walk);
-    free(g);
+    dd_mfree(g);
 }
 
 /* ---- sampling sets -------------------------------------------------------- */
@@ -302,7 +303,7 @@ static dd_status get_grr(dd_del *d, dd_grr **out)
 {
     dd_grr *g = dd_del_scratch(d, &grr_kind);
     if (!g) {
-        g = calloc(1, sizeof *g);
+        g = dd_calloc(1, sizeof *g);
         if (!g) return DD_ERR_NOMEM;
         g->d = d;
         dd_status s = dd_del_keep_scratch(d, &grr_kind, g);

@@ -19,15 +19,16 @@
  */
 #include "delete/link.h"
 #include "delete/delete.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 void dd_link_free(dd_link *l)
 {
-    free(l->lv); free(l->ln); free(l->ltri); free(l->deg);
-    free(l->ring); free(l->ring_tri); free(l->ring_out); free(l->newtri);
-    free(l->rpos); free(l->rmark);
+    dd_mfree(l->lv); dd_mfree(l->ln); dd_mfree(l->ltri); dd_mfree(l->deg);
+    dd_mfree(l->ring); dd_mfree(l->ring_tri); dd_mfree(l->ring_out); dd_mfree(l->newtri);
+    dd_mfree(l->rpos); dd_mfree(l->rmark);
     dd_tri_destroy(l->scratch);
     memset(l, 0, sizeof *l);
 }

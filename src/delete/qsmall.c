@@ -13,6 +13,7 @@
  * vertices and 16-bit neighbour references.
  */
 #include "delete/qsmall.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -48,8 +49,8 @@ struct dd_qs {
 void dd_qs_free(struct dd_qs *s)
 {
     if (!s) return;
-    free(s->c); free(s->stamp); free(s->stack); free(s->conflict); free(s->boundary); free(s->map);
-    free(s);
+    dd_mfree(s->c); dd_mfree(s->stamp); dd_mfree(s->stack); dd_mfree(s->conflict); dd_mfree(s->boundary); dd_mfree(s->map);
+    dd_mfree(s);
 }
 
 static void qs_free_scratch(void *s) { dd_qs_free(s); }
@@ -59,7 +60,7 @@ static dd_status qs_get(dd_del *d, struct dd_qs **out)
 {
     struct dd_qs *s = dd_del_scratch(d, &qs_kind);
     if (!s) {
-        s = calloc(1, sizeof *s);
+        s = dd_calloc(1, sizeof *s);
         if (!s) return DD_ERR_NOMEM;
         dd_status st = dd_del_keep_scratch(d, &qs_kind, s);
         if (st != DD_OK) return st;
@@ -77,20 +78,20 @@ static dd_status qs_reserve(struct dd_qs *s, uint32_t k)
     uint32_t cap = s->cap ? s->cap : 256;
     while (cap < need) cap *= 2;
     if (cap > QS_MAXC) cap = QS_MAXC;
-    qs_cell *c = realloc(s->c, (cap + 1) * sizeof *c);   /* + the spare */
+    qs_cell *c = dd_realloc(s->c, (cap + 1) * sizeof *c);   /* + the spare */
     if (!c) return DD_ERR_NOMEM;
     s->c = c;
-    uint32_t *st = realloc(s->stamp, cap * sizeof *st);
+    uint32_t *st = dd_realloc(s->stamp, cap * sizeof *st);
     if (!st) return DD_ERR_NOMEM;
     s->stamp = st;
-    uint16_t *a = realloc(s->stack, cap * sizeof *a), *b, *e;
+    uint16_t *a = dd_realloc(s->stack, cap * sizeof *a), *b, *e;
     if (!a) return DD_ERR_NOMEM;
     s->stack = a;
-    if (!(b = realloc(s->conflict, cap * sizeof *b))) return DD_ERR_NOMEM;
+    if (!(b = dd_realloc(s->conflict, cap * sizeof *b))) return DD_ERR_NOMEM;
     s->conflict = b;
-    if (!(e = realloc(s->boundary, 4 * cap * sizeof *e))) return DD_ERR_NOMEM;
+    if (!(e = dd_realloc(s->boundary, 4 * cap * sizeof *e))) return DD_ERR_NOMEM;
     s->boundary = e;
-    uint32_t *mp = realloc(s->map, cap * sizeof *mp);
+    uint32_t *mp = dd_realloc(s->map, cap * sizeof *mp);
     if (!mp) return DD_ERR_NOMEM;
     s->map = mp;
     memset(s->stamp + s->cap, 0, (cap - s->cap) * sizeof *st);

@@ -39,6 +39,13 @@ typedef enum dd_test_ctl {
                              rebuild of the points left (0: the cheaper) */
     DD_TEST_EXP_PLAIN,    /* 1: the exact stages take their plain
                              TWO-PRODUCT, not FMA (process-wide)          */
+    DD_TEST_ALLOC_FAIL,   /* k: the k-th allocation from now on fails, once
+                             (dtdel/alloc.h; 0: none; process-wide).
+                             Reads back how many are left before it (0
+                             once it has failed)                         */
+    DD_TEST_ALLOC_COUNT,  /* the allocations made so far (process-wide):
+                             setting it returns the count and restarts it
+                             from the value set                           */
     DD_TEST_NCTL
 } dd_test_ctl;
 

@@ -12,8 +12,9 @@
  *
  * Invariant: for every input of finite doubles (coordinates and weights
  * anywhere in the double range, subnormals included) every function
- * returns CGAL's sign.  Nothing here allocates after the dd_pred context
- * is ready: the exact stages use its GMP scratch ctx->z[].
+ * returns CGAL's sign.  Nothing here allocates, GMP included: the GMP
+ * stages run in pred.h's scratch (dd_pred_exact), whose bounds cover the
+ * weighted lifts.
  *
  * Signs ("conflict": inserting p would destroy the cell):
  *   power test of the positively oriented cell (p0,p1,p2,p3) and p:

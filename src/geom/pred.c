@@ -23,12 +23,15 @@
 #include "geom/expansion.h"
 #include "geom/lift.h"
 
+#include "dtdel/alloc.h"
+
 #include <math.h>
 #include <stdlib.h>
 
 void dd_pred_init(dd_pred *ctx)
 {
     ctx->z_ready = 0;
+    ctx->limbs = NULL;
     ctx->orient_exact = ctx->insphere_exact = 0;
 #ifdef DD_COUNTERS
     ctx->orient_calls = ctx->insphere_calls = 0;
@@ -36,10 +39,38 @@ void dd_pred_init(dd_pred *ctx)
 #endif
 }
 
+/* Makes z[0..DD_PRED_SCRATCH) zeros over limbs, DD_PRED_LIMBS each.
+ * The fields are GMP's documented representation (its manual, "Integer
+ * Internals"); GMP reallocates a number only when a result needs more
+ * than its _mp_alloc limbs, which DD_PRED_LIMBS rules out (pred.h), and
+ * these are never given to mpz_clear.                                  */
+static void bind_scratch(mpz_t z[DD_PRED_SCRATCH], mp_limb_t *limbs)
+{
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) {
+        z[i]->_mp_alloc = DD_PRED_LIMBS;
+        z[i]->_mp_size = 0;
+        z[i]->_mp_d = limbs + (size_t)i * DD_PRED_LIMBS;
+    }
+}
+
+dd_status dd_pred_reserve(dd_pred *ctx)
+{
+    if (ctx->limbs) return DD_OK;
+    mp_limb_t *limbs = dd_malloc((size_t)DD_PRED_SCRATCH * DD_PRED_LIMBS * sizeof *limbs);
+    if (!limbs) return DD_ERR_NOMEM;
+    dd_pred_clear(ctx);
+    ctx->limbs = limbs;
+    bind_scratch(ctx->z, limbs);
+    ctx->z_ready = 1;
+    return DD_OK;
+}
+
 void dd_pred_clear(dd_pred *ctx)
 {
-    if (ctx->z_ready)
+    if (ctx->limbs) dd_mfree(ctx->limbs);
+    else if (ctx->z_ready)   /* made by mpz_init (a caller's lazy scratch) */
         for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_clear(ctx->z[i]);
+    ctx->limbs = NULL;
     ctx->z_ready = 0;
 }
 
@@ -77,17 +108,36 @@ static void set_scaled(mpz_t out, double x, int emin)
     else if (sh < 0) mpz_tdiv_q_2exp(out, out, (mp_bitcnt_t)(-sh)); /* exact */
 }
 
-/* Loads the npts points as scaled integers into z[0 .. 3*npts-1], the
- * scratch made first if it is not (every GMP stage starts here).       */
-static void load_points(dd_pred *ctx, const double *const *pts, int npts)
+/* f on z, the points loaded first (dd_pred_exact). */
+static int exact_on(mpz_t zs[DD_PRED_SCRATCH], const double *const *pts, int npts, dd_exact_fn f,
+                    const void *arg, int *emin_out)
 {
-    if (!ctx->z_ready) {
-        for (int i = 0; i < DD_PRED_SCRATCH; i++) mpz_init2(ctx->z[i], 256);
-        ctx->z_ready = 1;
-    }
+    mpz_ptr z[DD_PRED_SCRATCH];
+    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = zs[i];
     int emin = min_exponent(pts, npts);
     for (int i = 0; i < npts; i++)
-        for (int c = 0; c < 3; c++) set_scaled(ctx->z[3 * i + c], pts[i][c], emin);
+        for (int c = 0; c < 3; c++) set_scaled(z[3 * i + c], pts[i][c], emin);
+    if (emin_out) *emin_out = emin;
+    return f(z, arg);
+}
+
+/* The same on a scratch of this frame's: a context with none of its
+ * own (a read-only call's) allocates nothing either.  Not inlined, so
+ * that its frame exists only while a GMP stage runs.                     */
+static __attribute__((noinline)) int exact_on_stack(const double *const *pts, int npts, dd_exact_fn f,
+                                                    const void *arg, int *emin_out)
+{
+    mp_limb_t limbs[DD_PRED_SCRATCH * DD_PRED_LIMBS];
+    mpz_t zs[DD_PRED_SCRATCH];
+    bind_scratch(zs, limbs);
+    return exact_on(zs, pts, npts, f, arg, emin_out);
+}
+
+int dd_pred_exact(dd_pred *ctx, const double *const *pts, int npts, dd_exact_fn f, const void *arg,
+                  int *emin_out)
+{
+    if (ctx->limbs) return exact_on(ctx->z, pts, npts, f, arg, emin_out);
+    return exact_on_stack(pts, npts, f, arg, emin_out);
 }
 
 /* r = a*d - b*c */
@@ -111,18 +161,22 @@ static int sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s)
     return mpz_sgn(s[1]);
 }
 
-static int orient3d_exact(dd_pred *ctx, const double *p, const double *q,
-                          const double *r, const double *s)
+/* orient3d of the points in z[0..12) (dd_exact_fn). */
+static int orient3d_z(mpz_ptr *z, const void *arg)
 {
-    const double *pts[4] = {p, q, r, s};
-    load_points(ctx, pts, 4);
-    mpz_ptr z[48];
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    (void)arg;
     /* rows q-p, r-p, s-p into z[12..20] */
     for (int row = 0; row < 3; row++)
         for (int c = 0; c < 3; c++)
             mpz_sub(z[12 + 3 * row + c], z[3 * (row + 1) + c], z[c]);
     return sign_det3(&z[12], &z[15], &z[18], &z[21]);
+}
+
+static int orient3d_exact(dd_pred *ctx, const double *p, const double *q,
+                          const double *r, const double *s)
+{
+    const double *pts[4] = {p, q, r, s};
+    return dd_pred_exact(ctx, pts, 4, orient3d_z, NULL, NULL);
 }
 
 /* Sign of the 4x4 determinant whose rows are r[i][0..3]; scratch s[0..9]. */
@@ -146,14 +200,11 @@ static int sign_det4(mpz_ptr r[4][4], mpz_ptr *s)
     return mpz_sgn(s[9]);
 }
 
-/* CGAL: sign det(rows p-t, r-t, q-t, s-t, each lifted with its squared norm). */
-static int insphere_exact(dd_pred *ctx, const double *p, const double *q,
-                          const double *r, const double *s, const double *t)
+/* CGAL: sign det(rows p-t, r-t, q-t, s-t, each lifted with its squared
+ * norm), the points p, r, q, s, t in z[0..15) (dd_exact_fn).             */
+static int insphere_z(mpz_ptr *z, const void *arg)
 {
-    const double *pts[5] = {p, r, q, s, t};   /* note r, q swapped */
-    load_points(ctx, pts, 5);
-    mpz_ptr z[48];
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    (void)arg;
     mpz_ptr rows[4][4];
     for (int i = 0; i < 4; i++) {
         for (int c = 0; c < 3; c++) {
@@ -166,6 +217,13 @@ static int insphere_exact(dd_pred *ctx, const double *p, const double *q,
         mpz_addmul(rows[i][3], rows[i][2], rows[i][2]);
     }
     return sign_det4(rows, &z[31]);
+}
+
+static int insphere_exact(dd_pred *ctx, const double *p, const double *q,
+                          const double *r, const double *s, const double *t)
+{
+    const double *pts[5] = {p, r, q, s, t};   /* note r, q swapped */
+    return dd_pred_exact(ctx, pts, 5, insphere_z, NULL, NULL);
 }
 
 /* 2D orientation of (a,b,c) projected on coordinates i, j (exact ints). */
@@ -181,13 +239,10 @@ static int orient2d_exact_z(mpz_ptr *z, int i, int j, mpz_ptr *s)
     return mpz_sgn(s[4]);
 }
 
-static int orient_coplanar_exact(dd_pred *ctx, const double *p,
-                                 const double *q, const double *r)
+/* The first nonzero 2D orientation of z[0..9) (dd_exact_fn). */
+static int orient_coplanar_z(mpz_ptr *z, const void *arg)
 {
-    const double *pts[3] = {p, q, r};
-    load_points(ctx, pts, 3);
-    mpz_ptr z[48];
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    (void)arg;
     int o = orient2d_exact_z(z, 0, 1, &z[9]);
     if (o != 0) return o;
     o = orient2d_exact_z(z, 1, 2, &z[9]);
@@ -195,16 +250,19 @@ static int orient_coplanar_exact(dd_pred *ctx, const double *p,
     return orient2d_exact_z(z, 0, 2, &z[9]);
 }
 
-/* CGAL: side_of_bounded_sphere(p, q, r, t+v, t) with v = pq x pr, i.e. the
- * sign of det(rows p-t, r-t, q-t, v), each lifted.                        */
-static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
-                                   const double *q, const double *r,
-                                   const double *t)
+static int orient_coplanar_exact(dd_pred *ctx, const double *p,
+                                 const double *q, const double *r)
 {
-    const double *pts[4] = {p, r, q, t};   /* rows in CGAL's order */
-    load_points(ctx, pts, 4);
-    mpz_ptr z[48];
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    const double *pts[3] = {p, q, r};
+    return dd_pred_exact(ctx, pts, 3, orient_coplanar_z, NULL, NULL);
+}
+
+/* CGAL: side_of_bounded_sphere(p, q, r, t+v, t) with v = pq x pr, i.e. the
+ * sign of det(rows p-t, r-t, q-t, v), each lifted; the points p, r, q, t
+ * in z[0..12) (dd_exact_fn).                                              */
+static int incircle_coplanar_z(mpz_ptr *z, const void *arg)
+{
+    (void)arg;
     mpz_ptr rows[4][4];
     for (int i = 0; i < 3; i++) {
         for (int c = 0; c < 3; c++) {
@@ -231,6 +289,14 @@ static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
     mpz_addmul(v[3], v[2], v[2]);
     for (int c = 0; c < 4; c++) rows[3][c] = v[c];
     return sign_det4(rows, &z[35]);
+}
+
+static int incircle_coplanar_exact(dd_pred *ctx, const double *p,
+                                   const double *q, const double *r,
+                                   const double *t)
+{
+    const double *pts[4] = {p, r, q, t};   /* rows in CGAL's order */
+    return dd_pred_exact(ctx, pts, 4, incircle_coplanar_z, NULL, NULL);
 }
 
 /* ---- exact rescaling ------------------------------------------------------
@@ -510,6 +576,8 @@ static int distance_filter(const double *p, const double *a, const double *b)
     return DD_FILTER_UNSURE;
 }
 
+static int compare_distance_z(mpz_ptr *z, const void *arg);
+
 /* The filter, then (the sign is homogeneous of degree 2 in the three
  * points) the filter on the points scaled exactly into [2^-400, 2^400]
  * when it failed for their magnitude, then GMP.                         */
@@ -520,9 +588,13 @@ int dd_compare_distance(dd_pred *ctx, const double *p, const double *a, const do
     const double *pts[3] = {p, a, b};
     double x[3][3];
     if (rescale_into(pts, 3, 400, x) && (f = distance_filter(x[0], x[1], x[2])) != DD_FILTER_UNSURE) return f;
-    load_points(ctx, pts, 3);
-    mpz_ptr z[DD_PRED_SCRATCH];
-    for (int i = 0; i < DD_PRED_SCRATCH; i++) z[i] = ctx->z[i];
+    return dd_pred_exact(ctx, pts, 3, compare_distance_z, NULL, NULL);
+}
+
+/* sign(|p - a|^2 - |p - b|^2) of p, a, b in z[0..9) (dd_exact_fn). */
+static int compare_distance_z(mpz_ptr *z, const void *arg)
+{
+    (void)arg;
     mpz_set_ui(z[9], 0);                       /* A - B, summed exactly */
     for (int c = 0; c < 3; c++) {
         mpz_sub(z[10], z[c], z[3 + c]);

@@ -7,8 +7,11 @@
  * symbolic perturbation that CGAL applies when the exact sign is zero.
  *
  * Invariant: for every input of doubles, every function here returns the
- * sign CGAL's predicate returns.  Nothing here allocates after
- * dd_pred_init; the GMP scratch lives in the dd_pred context.
+ * sign CGAL's predicate returns.  Nothing here allocates, GMP included
+ * (it aborts the process when it cannot): the GMP stages work in a
+ * scratch sized once for the largest numbers the double range allows
+ * (DD_PRED_LIMBS), the context's own when dd_pred_reserve made it, else
+ * one on the stack of the exact stage (dd_pred_exact).
  *
  * Signs:
  *   orient3d(p,q,r,s)   = sign det[q-p; r-p; s-p]; +1 for the unit
@@ -30,14 +33,37 @@
 #include <stdint.h>
 #include <gmp.h>
 
+#include "dtdel/types.h"
+
 #define DD_PRED_SCRATCH 48
 
+/* The GMP stages' integers are bounded by the double range.  The points
+ * of one call are shifted by their smallest binary exponent (>= -1074),
+ * so each coordinate is an integer below 2^(1024+1074) = 2^2098, a
+ * difference below 2^2099, a squared norm (or a weighted point's lift
+ * |p|^2 - w, w any finite double, on the same scale) below 2^4200, and
+ * a product of degree k in the differences below 2^(2099k + 7) with its
+ * sum of at most 5! monomials.  The largest degree formed is 7 (the
+ * coplanar in-circle test: |pq x pr|^2, degree 4, times a 3x3 minor);
+ * DD_PRED_BITS allows 8.  GMP writes a product into a destination of
+ * the limbs of both factors plus one (mpz_addmul), without reallocating
+ * it when it has that many, and keeps its temporaries of this size on
+ * the stack (TMP_ALLOC): so with DD_PRED_LIMBS limbs a number, no GMP
+ * call here allocates.  tests/test_fault.c counts GMP's allocations to
+ * check it.                                                             */
+#define DD_PRED_BITS (8 * 2100)
+#define DD_PRED_LIMBS ((DD_PRED_BITS + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS + 4)
+
 typedef struct dd_pred {
-    mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused            */
-    int z_ready;                /* z initialised: at the first GMP stage,
-                                   so a context of one call (a read-only
-                                   query's, mesh.h dd_reader) costs O(1)
-                                   when no GMP stage runs                 */
+    mpz_t z[DD_PRED_SCRATCH];   /* exact-stage scratch, reused: usable
+                                   when z_ready                          */
+    mp_limb_t *limbs;           /* z's limbs, DD_PRED_LIMBS each, when
+                                   dd_pred_reserve made them (GMP never
+                                   reallocates them); NULL before       */
+    int z_ready;                /* z usable (reserved); a context of one
+                                   call (a read-only query's, mesh.h
+                                   dd_reader) is not: it costs O(1), and
+                                   its GMP stages take a stack scratch  */
     /* tests past the filters (the exact stages), in every build: the gift
      * wrap's budget counts them (wrap_int.h, w_spent)                        */
     uint64_t orient_exact, insphere_exact;
@@ -169,11 +195,27 @@ static inline int dd_insphere_filter(dd_pred *ctx, const double *p, const double
     return DD_FILTER_UNSURE;
 }
 
-/* Readies ctx in O(1): counters zeroed, the GMP scratch made when first
- * needed.  dd_pred_clear frees it.  A context is used by one thread at a
- * time: each read-only call of the public API takes one of its own.    */
+/* Readies ctx in O(1): counters zeroed, no GMP scratch (its GMP stages
+ * take one on the stack, about DD_PRED_SCRATCH * DD_PRED_LIMBS * 8 =
+ * 100 KB, in a frame of their own).  dd_pred_clear frees what it took.
+ * A context is used by one thread at a time: each read-only call of the
+ * public API takes one of its own.                                      */
 void dd_pred_init(dd_pred *ctx);
+/* Gives ctx a GMP scratch of its own, sized for every input (z_ready):
+ * the contexts of the edits, made with their triangulation.  O(1) when
+ * it has one; DD_ERR_NOMEM (ctx as it was).                             */
+dd_status dd_pred_reserve(dd_pred *ctx);
 void dd_pred_clear(dd_pred *ctx);
+
+/* A GMP stage: f(z, arg) with z[0..DD_PRED_SCRATCH) integers of
+ * DD_PRED_LIMBS limbs (ctx's reserved scratch, else one on the stack),
+ * the npts (<= 5) points loaded into z[0 .. 3 npts) as x / 2^emin,
+ * emin the smallest binary exponent of their nonzero coordinates (so
+ * integers; *emin_out gets it when not NULL).  Returns f's result.  For
+ * every exact stage on GMP integers, so that none allocates.            */
+typedef int (*dd_exact_fn)(mpz_ptr *z, const void *arg);
+int dd_pred_exact(dd_pred *ctx, const double *const *pts, int npts, dd_exact_fn f, const void *arg,
+                  int *emin_out);
 
 int dd_orient3d(dd_pred *ctx, const double *p, const double *q,
                 const double *r, const double *s);

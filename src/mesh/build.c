@@ -168,9 +168,9 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         eh = half > 0 ? ilogb(half) : 0;
         scale = half > 0 ? 65535.0 / ldexp(half, -eh) : 0.0;
     }
-    keyed *a = malloc(2 * (size_t)n * sizeof *a);
-    uint32_t *count = calloc((size_t)NPASS * NDIGIT, sizeof *count);
-    if (!a || !count) { free(a); free(count); return DD_ERR_NOMEM; }
+    keyed *a = dd_malloc(2 * (size_t)n * sizeof *a);
+    uint32_t *count = dd_calloc((size_t)NPASS * NDIGIT, sizeof *count);
+    if (!a || !count) { dd_mfree(a); dd_mfree(count); return DD_ERR_NOMEM; }
     keyed *const buf = a;
     keyed *b = a + n;
     for (uint32_t k = 0; k < n; k++) {
@@ -195,8 +195,8 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         keyed *tmp = a; a = b; b = tmp;
     }
     for (uint32_t k = 0; k < n; k++) ids[k] = a[k].id;
-    free(buf);
-    free(count);
+    dd_mfree(buf);
+    dd_mfree(count);
     return DD_OK;
 }
 
@@ -217,7 +217,7 @@ static dd_status dedup(dd_tri *t, const double *pts, const double *w, uint32_t n
 {
     size_t cap = 16;
     while (cap < 2 * (size_t)n) cap <<= 1;
-    uint64_t *slot = malloc(cap * sizeof *slot);
+    uint64_t *slot = dd_malloc(cap * sizeof *slot);
     if (!slot) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
     memset(slot, 0xFF, cap * sizeof *slot); /* empty: id UINT32_MAX > any id */
     size_t mask = cap - 1;
@@ -248,7 +248,7 @@ static dd_status dedup(dd_tri *t, const double *pts, const double *w, uint32_t n
             }
         }
     }
-    free(slot);
+    dd_mfree(slot);
     *nkept = m;
     return DD_OK;
 }
@@ -413,10 +413,10 @@ static void swap_cells(dd_tri *t, dd_tri *s)
 dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n)
 {
     dd_tri *s;
-    uint32_t *kept = malloc(((size_t)t->nvid + 1) * sizeof *kept), *vcell = malloc((size_t)t->cap_v * sizeof *vcell);
+    uint32_t *kept = dd_malloc(((size_t)t->nvid + 1) * sizeof *kept), *vcell = dd_malloc((size_t)t->cap_v * sizeof *vcell);
     dd_status st = kept && vcell ? dd_tri_alloc_borrowed(&s) : DD_ERR_NOMEM;
     if (st != DD_OK) {
-        free(kept), free(vcell);
+        dd_mfree(kept), dd_mfree(vcell);
         return dd_fail(t, st, "out of memory");
     }
     s->xyz = t->xyz;
@@ -441,6 +441,6 @@ dd_status dd_rebuild_without(dd_tri *t, const uint32_t *ids, size_t n)
         dd_fail(t, st, "%s", st == DD_ERR_NOMEM ? "out of memory" : s->err);
     }
     dd_tri_destroy(s);
-    free(kept), free(vcell);
+    dd_mfree(kept), dd_mfree(vcell);
     return st;
 }

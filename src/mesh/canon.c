@@ -9,6 +9,7 @@
  * comparing with CGAL.
  */
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -33,7 +34,7 @@ static int cmp_tet(const void *a, const void *b)
 
 dd_status dd_canonical_of_cells(const dd_tri *t, const uint32_t *cells, size_t n, int32_t **tets, size_t *ntets)
 {
-    int32_t *a = malloc((n ? n : 1) * 4 * sizeof *a);
+    int32_t *a = dd_malloc((n ? n : 1) * 4 * sizeof *a);
     if (!a) return DD_ERR_NOMEM;
     for (size_t k = 0; k < n; k++) {
         const uint32_t *v = dd_tv(t, cells[k]);

@@ -20,6 +20,7 @@
  * call can walk without writing to t.
  */
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,7 +29,7 @@
 
 void dd_made_free(dd_made *m)
 {
-    free(m->list);
+    dd_mfree(m->list);
     memset(m, 0, sizeof *m);
 }
 
@@ -40,7 +41,7 @@ static dd_status list_room(dd_made *m, size_t more)
     if (m->n + more <= m->cap) return DD_OK;
     size_t cap = m->cap ? 2 * m->cap : 64;
     while (cap < m->n + more) cap *= 2;
-    int64_t *l = realloc(m->list, cap * sizeof *l);
+    int64_t *l = dd_realloc(m->list, cap * sizeof *l);
     if (!l) return DD_ERR_NOMEM;
     m->list = l;
     m->cap = cap;
@@ -57,7 +58,7 @@ void dd_note_made(dd_tri *t, const uint32_t *cells, size_t n)
         m->n = 0;
         m->lost = 0;
         if (m->cap > LIST_KEEP && m->cap > 8 * n) {
-            int64_t *l = realloc(m->list, LIST_KEEP * sizeof *l);
+            int64_t *l = dd_realloc(m->list, LIST_KEEP * sizeof *l);
             if (l) m->list = l, m->cap = LIST_KEEP;
         }
     }
@@ -83,7 +84,7 @@ dd_status dd_publish_all_cells(dd_tri *t)
     m->n = 0;
     m->lost = 0;
     if (m->cap < t->nlive || m->cap > 2 * (size_t)t->nlive + LIST_KEEP) {
-        int64_t *l = realloc(m->list, ((size_t)t->nlive + 1) * sizeof *l);
+        int64_t *l = dd_realloc(m->list, ((size_t)t->nlive + 1) * sizeof *l);
         if (!l) {
             m->lost = 1;
             return DD_ERR_NOMEM;

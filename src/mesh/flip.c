@@ -106,6 +106,9 @@ static dd_status replace(flip_state *f, const uint32_t loc[5], const uint32_t *o
     dd_tri *t = f->t;
     uint32_t outside[32], pending[32], has_out = 0, has_pend = 0, bit[4];
     dd_status s = dd_vec_room(f->stack, 4 * (size_t)m);
+    /* room first: a cell made and not listed in made could not be undone */
+    if (s == DD_OK) s = dd_vec_room(f->made, (size_t)m);
+    if (s == DD_OK) s = dd_vec_room(f->gone, (size_t)k);
     for (int a = 0; a < k && s == DD_OK; a++) {
         const uint32_t all = cell_mask(loc, dd_tv(t, old[a]), bit);
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {

@@ -27,6 +27,7 @@
  * t->nvid (possibly not a vertex any more).
  */
 #include "mesh/mesh.h"
+#include "dtdel/alloc.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -38,7 +39,7 @@
 
 void dd_grid_free(dd_grid *g)
 {
-    free(g->box);
+    dd_mfree(g->box);
     *g = (dd_grid){0};
 }
 
@@ -96,7 +97,7 @@ static dd_status grid_make(dd_tri *t)
         total *= g->dim[c];
     }
     if (total > g->cap) {
-        uint32_t *b = realloc(g->box, total * sizeof *b);
+        uint32_t *b = dd_realloc(g->box, total * sizeof *b);
         if (!b) {                     /* dims no longer fit the boxes: none */
             dd_grid_free(g);
             return DD_ERR_NOMEM;
@@ -192,7 +193,7 @@ void dd_reader_init(dd_reader *r)
 void dd_reader_done(dd_reader *r)
 {
     dd_pred_clear(&r->pred);
-    if (r->set != r->inl) free(r->set);
+    if (r->set != r->inl) dd_mfree(r->set);
     r->set = r->inl;
     dd_vec_free(&r->star);
 }
@@ -207,9 +208,9 @@ static inline uint32_t set_slot(uint32_t x, uint32_t mask)
 static dd_status set_make(dd_reader *r, uint32_t size)
 {
     if (size > r->set_cap) {
-        uint32_t *s = malloc((size_t)size * sizeof *s);
+        uint32_t *s = dd_malloc((size_t)size * sizeof *s);
         if (!s) return DD_ERR_NOMEM;
-        if (r->set != r->inl) free(r->set);
+        if (r->set != r->inl) dd_mfree(r->set);
         r->set = s;
         r->set_cap = size;
     }
@@ -234,7 +235,7 @@ static __attribute__((noinline)) int set_grow_add(dd_reader *r, uint32_t x)
     const uint32_t n = r->set_n, size = r->set_mask + 1;
     if (size >= (1u << 31)) return -1;
     uint32_t small[DD_READER_INLINE / 2];         /* the ids, while it grows */
-    uint32_t *keep = n <= DD_READER_INLINE / 2 ? small : malloc((size_t)n * sizeof *keep);
+    uint32_t *keep = n <= DD_READER_INLINE / 2 ? small : dd_malloc((size_t)n * sizeof *keep);
     if (!keep) return -1;
     uint32_t m = 0;
     for (uint32_t k = 0; k < size; k++)
@@ -242,7 +243,7 @@ static __attribute__((noinline)) int set_grow_add(dd_reader *r, uint32_t x)
     dd_status s = set_make(r, 2 * size);
     if (s == DD_OK)
         for (uint32_t k = 0; k < m; k++) (void)set_add(r, keep[k]);
-    if (keep != small) free(keep);
+    if (keep != small) dd_mfree(keep);
     if (s != DD_OK) return -1;      /* the set is empty now: a failed call */
     return set_add(r, x);
 }

@@ -25,7 +25,7 @@ dd_status dd_grow(void *pp, size_t n, size_t size)
     memcpy(&p, pp, sizeof p);           /* pp is a T **, not a void ** */
     if (n == 0) n = 1;
     if (n > SIZE_MAX / size) return DD_ERR_NOMEM;
-    p = realloc(p, n * size);
+    p = dd_realloc(p, n * size);
     if (!p) return DD_ERR_NOMEM;
     memcpy(pp, &p, sizeof p);
     return DD_OK;
@@ -41,7 +41,7 @@ dd_status dd_vec_reserve(dd_vec *v, size_t cap)
 
 void dd_vec_free(dd_vec *v)
 {
-    free(v->a);
+    dd_mfree(v->a);
     v->a = NULL;
     v->n = v->cap = 0;
 }
@@ -75,15 +75,16 @@ dd_status dd_end_call(dd_tri *t, dd_status s)
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
 {
     *out = NULL;
-    dd_tri *t = calloc(1, sizeof *t);
+    dd_tri *t = dd_calloc(1, sizeof *t);
     if (!t) return DD_ERR_NOMEM;
     uint32_t cap = np < 16 ? 16 : np;
-    t->xyz = malloc(3 * (size_t)cap * sizeof *t->xyz);
-    t->vcell = malloc((size_t)cap * sizeof *t->vcell);
-    t->v2in = malloc((size_t)cap * sizeof *t->v2in);
-    t->in2v = malloc((size_t)cap * sizeof *t->in2v);
-    if (!t->xyz || !t->vcell || !t->v2in || !t->in2v) {
-        free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); free(t);
+    t->xyz = dd_malloc(3 * (size_t)cap * sizeof *t->xyz);
+    t->vcell = dd_malloc((size_t)cap * sizeof *t->vcell);
+    t->v2in = dd_malloc((size_t)cap * sizeof *t->v2in);
+    t->in2v = dd_malloc((size_t)cap * sizeof *t->in2v);
+    dd_pred_init(&t->pred);
+    if (!t->xyz || !t->vcell || !t->v2in || !t->in2v || dd_pred_reserve(&t->pred) != DD_OK) {
+        dd_mfree(t->xyz); dd_mfree(t->vcell); dd_mfree(t->v2in); dd_mfree(t->in2v); dd_mfree(t);
         return DD_ERR_NOMEM;
     }
     t->cap_v = t->cap_in = cap;
@@ -91,19 +92,19 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     t->inf_cell = DD_NONE;
     t->hint = DD_NONE;
     t->rng = 0x9E3779B97F4A7C15ull;
-    dd_pred_init(&t->pred);
     *out = t;
     return DD_OK;
 }
 
 dd_status dd_tri_alloc_borrowed(dd_tri **out)
 {
-    dd_tri *t = calloc(1, sizeof *t);
+    dd_tri *t = dd_calloc(1, sizeof *t);
     if (!t) return DD_ERR_NOMEM;
     t->borrowed = 1;
     t->free_head = t->inf_cell = t->hint = DD_NONE;
     t->rng = 0x2545F4914F6CDD1Dull;
     dd_pred_init(&t->pred);
+    if (dd_pred_reserve(&t->pred) != DD_OK) { dd_mfree(t); return DD_ERR_NOMEM; }
     *out = t;
     return DD_OK;
 }
@@ -111,18 +112,18 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out)
 void dd_tri_destroy(dd_tri *t)
 {
     if (!t) return;
-    if (!t->borrowed) { free(t->xyz); free(t->vcell); free(t->v2in); free(t->in2v); dd_mfree(t->wt); }
+    if (!t->borrowed) { dd_mfree(t->xyz); dd_mfree(t->vcell); dd_mfree(t->v2in); dd_mfree(t->in2v); dd_mfree(t->wt); }
     dd_hidden_free(t);
-    free(t->cell_block); free(t->stamp);
+    dd_mfree(t->cell_block); dd_mfree(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
-    free(t->ehash);
-    free(t->etab);
+    dd_mfree(t->ehash);
+    dd_mfree(t->etab);
     dd_grid_free(&t->grid);
     dd_vec_free(&t->vfree);
     dd_made_free(&t->made);
     for (int k = 0; k < 5; k++) dd_vec_free(&t->flip[k]);
     dd_pred_clear(&t->pred);
-    free(t);
+    dd_mfree(t);
 }
 
 /* ---- the vertex-triple hash --------------------------------------------- */
@@ -143,9 +144,9 @@ dd_status dd_gen_table_reset(void **tab, uint32_t *alloc, uint32_t *gen, uint32_
     size_t size = 64;
     while (size < min) size *= 2;
     if (size > *alloc) {
-        void *s = calloc(size, elsize);
+        void *s = dd_calloc(size, elsize);
         if (!s) return DD_ERR_NOMEM;
-        free(*tab);
+        dd_mfree(*tab);
         *tab = s;
         *alloc = (uint32_t)size;
         *gen = 0;
@@ -171,11 +172,11 @@ dd_status dd_trihash_reset(dd_trihash *h, size_t expect)
 static dd_status trihash_grow(dd_trihash *h)
 {
     uint32_t size = 2 * (h->mask + 1);
-    dd_tri_slot *s = calloc(size, sizeof *s);
+    dd_tri_slot *s = dd_calloc(size, sizeof *s);
     if (!s) return DD_ERR_NOMEM;
     for (uint32_t i = 0; i <= h->mask; i++)
         if (h->s[i].gen == h->gen) trihash_insert(s, size - 1, 1, &h->s[i]);
-    free(h->s);
+    dd_mfree(h->s);
     h->s = s;
     h->alloc = size;
     h->mask = size - 1;
@@ -205,7 +206,7 @@ uint32_t dd_trihash_get(const dd_trihash *h, uint32_t a, uint32_t b, uint32_t c)
 
 void dd_trihash_free(dd_trihash *h)
 {
-    free(h->s);
+    dd_mfree(h->s);
     memset(h, 0, sizeof *h);
 }
 
@@ -240,7 +241,7 @@ static dd_status resize_cells(dd_tri *t, uint32_t cap)
     int grow = cap > t->cap_c;
     size_t rec = DD_CELL_WORDS * sizeof(uint32_t), keep = (size_t)(cap < t->cap_c ? cap : t->cap_c);
     size_t old_off = t->cell_block ? (size_t)((char *)t->cell - (char *)t->cell_block) : 0;
-    char *b = realloc(t->cell_block, (size_t)cap * rec + CELL_ALIGN);
+    char *b = dd_realloc(t->cell_block, (size_t)cap * rec + CELL_ALIGN);
     if (b) {
         size_t off = (size_t)(-(uintptr_t)b & (CELL_ALIGN - 1));
         if (off != old_off) memmove(b + off, b + old_off, keep * rec);
@@ -250,7 +251,7 @@ static dd_status resize_cells(dd_tri *t, uint32_t cap)
     } else if (grow) {
         return DD_ERR_NOMEM;
     }
-    dd_mark *st = realloc(t->stamp, (size_t)cap * sizeof *st);
+    dd_mark *st = dd_realloc(t->stamp, (size_t)cap * sizeof *st);
     if (st) t->stamp = st; else if (grow) return DD_ERR_NOMEM;
     if (grow) memset(t->stamp + t->cap_c, 0, (size_t)(cap - t->cap_c) * sizeof *t->stamp);
     t->cap_c = cap;
@@ -788,7 +789,7 @@ void dd_fill_star(dd_tri *t, uint32_t v)
 
 dd_status dd_reserve_star(dd_tri *t)
 {
-    if (!t->etab && !(t->etab = malloc(DD_STAR_MAXV * DD_STAR_MAXV * sizeof *t->etab)))
+    if (!t->etab && !(t->etab = dd_malloc(DD_STAR_MAXV * DD_STAR_MAXV * sizeof *t->etab)))
         return DD_ERR_NOMEM;
     dd_status s = dd_reserve_cells(t, (uint32_t)t->boundary.n);
     if (s == DD_OK) s = dd_reserve_edge_hash(t, t->boundary.n);

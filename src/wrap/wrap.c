@@ -13,18 +13,19 @@
  * (declined, or an error): every other course ends in w_drop_fill.
  */
 #include "wrap/wrap_int.h"
+#include "dtdel/alloc.h"
 
 /* Frees the wrap's scratch (NULL: nothing).                             */
 void dd_wrap_free(struct dd_wrap *w)
 {
     if (!w) return;
-    free(w->pt);
-    for (int i = 0; i < 4; i++) free(w->lift[i]), free(w->flift[i]);
-    free(w->o); free(w->tmp); free(w->lexr); free(w->loc);
-    free(w->fs);
-    free(w->tri); free(w->own); free(w->out); free(w->closed); free(w->stack); free(w->lcell); free(w->keep);
-    free(w->adj); free(w->nadj); free(w->seen); free(w->cand); free(w->code);
-    free(w);
+    dd_mfree(w->pt);
+    for (int i = 0; i < 4; i++) dd_mfree(w->lift[i]), dd_mfree(w->flift[i]);
+    dd_mfree(w->o); dd_mfree(w->tmp); dd_mfree(w->lexr); dd_mfree(w->loc);
+    dd_mfree(w->fs);
+    dd_mfree(w->tri); dd_mfree(w->own); dd_mfree(w->out); dd_mfree(w->closed); dd_mfree(w->stack); dd_mfree(w->lcell); dd_mfree(w->keep);
+    dd_mfree(w->adj); dd_mfree(w->nadj); dd_mfree(w->seen); dd_mfree(w->cand); dd_mfree(w->code);
+    dd_mfree(w);
 }
 
 /* Room for n neighbours in the per-neighbour arrays (doubling, by
@@ -80,7 +81,7 @@ static const dd_scratch_kind w_kind = {"gift wrapping", w_free_scratch};
  * features, and gives it to d to keep.                                   */
 static dd_status w_new_scratch(dd_del *d, struct dd_wrap **out)
 {
-    struct dd_wrap *w = *out = calloc(1, sizeof *w);
+    struct dd_wrap *w = *out = dd_calloc(1, sizeof *w);
     if (!w) return DD_ERR_NOMEM;
 #ifdef W_AVX2
     w->has_avx2 = __builtin_cpu_supports("avx2");
