@@ -307,8 +307,14 @@ static void insert_case(tl_state *st, const char *name, const wset *s, uint32_t 
             }
             const int dup = dd_num_input(t) == np;      /* no index taken */
             if ((cr == 2) != dup || (cr != 0 && cr != 2) || (dup && !dd_is_vertex(t, idx))) {
-                ok = 0, snprintf(why, sizeof why, "insert %u: a duplicate %s here, CGAL says %d", i,
-                                 dup ? "" : "not", cr);
+                /* CGAL's Weighted_point_3 == compares bare points only: a
+                 * shim that tests a vertex with it, not the weights too,
+                 * calls a point at a vertex's position with another weight
+                 * a duplicate.                                          */
+                ok = 0, snprintf(why, sizeof why, "insert %u: a duplicate %s here, the shim says %d%s", i,
+                                 dup ? "" : "not", cr,
+                                 cr == 2 ? " (a vertex's position with another weight: the shim must compare "
+                                           "weights too, Weighted_point_3's == does not)" : "");
                 break;
             }
             dups += cr == 2;
