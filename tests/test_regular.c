@@ -522,7 +522,24 @@ static void equal_positions_case(tl_state *st)
     if (ok && !(dd_insert_weighted(t, q, 0.5, &i3) == DD_OK && i3 == s.n + 1 && dd_is_vertex(t, i3) &&
                 !dd_is_vertex(t, v) && dd_is_hidden(t, v) && dd_is_hidden(t, i2)))
         ok = 0, snprintf(why, sizeof why, "the heavier point did not swallow the vertex");
+    /* the same on the hull: corner node 0 (an extreme point) */
+    const double *q0 = s.p;
+    uint32_t j1 = 0, j2 = 0;
+    if (ok && !(dd_insert_weighted(t, q0, 0.1, &j1) == DD_OK && dd_is_hidden(t, j1) && dd_is_vertex(t, 0) &&
+                dd_on_hull(t, 0)))
+        ok = 0, snprintf(why, sizeof why, "a lighter point at a hull vertex is not hidden");
+    if (ok && !(dd_insert_weighted(t, q0, 1.0, &j2) == DD_OK && dd_is_vertex(t, j2) && dd_on_hull(t, j2) &&
+                dd_is_hidden(t, 0) && dd_is_hidden(t, j1)))
+        ok = 0, snprintf(why, sizeof why, "a heavier point at a hull vertex did not take its place");
     if (ok) ok = checked(t, why, sizeof why);
+    if (ok) {       /* keep mode is order-free: CGAL's build of every point given */
+        const double extra[4][4] = {{q[0], q[1], q[2], 0.1}, {q[0], q[1], q[2], 0.5}, {q0[0], q0[1], q0[2], 0.1},
+                                    {q0[0], q0[1], q0[2], 1.0}};
+        for (int k = 0; k < 4; k++) ws_add(&s, extra[k][0], extra[k][1], extra[k][2], extra[k][3]);
+        dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
+        ok = c && same_as_cgal(t, c, why, sizeof why);
+        dd_cgal_rt_free(c);
+    }
     tl_check(st, ok, "insert/equal-positions", "%s", why);
     free(before.cells), free(before.hid);
     dd_free(t);
