@@ -546,6 +546,71 @@ static void equal_positions_case(tl_state *st)
     ws_free(&s);
 }
 
+/* ---- allocation failures (issue 46) ------------------------------------------ */
+
+#ifdef DD_TEST_BUILD
+/* The allocations op makes (process-wide count). */
+static long count_allocs(void) { return dd_test_control(NULL, DD_TEST_ALLOC_COUNT, 0); }
+
+/* Each allocation of dd_create_ex (both modes) and of dd_insert_weighted
+ * (a point hidden on arrival, one that swallows vertices and re-homes
+ * hidden points, one outside the hull) refused in turn: DD_ERR_NOMEM,
+ * nothing changed, dd_check passes; ASan sees no leak.  Then the same
+ * call succeeds.                                                        */
+static void fault_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 80 : 200, 3, 77);
+    char msg[256], why[256] = "";
+    long survived = 0;
+    int ok = 1;
+    for (int keep = 1; keep >= 0 && ok; keep--) {
+        dd_tri *t = NULL;
+        count_allocs();
+        ok = dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+        const long n = count_allocs();
+        dd_free(t);
+        for (long k = 1; k <= n && ok; k++) {
+            t = NULL;
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+            const dd_status r = dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg);
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+            if (r == DD_ERR_NOMEM && !t) survived++;
+            else if (r == DD_OK) ok = checked(t, why, sizeof why);     /* a way without it */
+            else ok = 0, snprintf(why, sizeof why, "create, allocation %ld refused: %s", k, dd_status_name(r));
+            dd_free(t);
+        }
+    }
+    const double pts[3][4] = {{0.5, 0.5, 0.5, 0.0}, {0.4, 0.6, 0.5, 0.2}, {1.5, 0.5, 0.5, 0.0}};
+    for (int q = 0; q < 3 && ok; q++) {
+        dd_tri *t = NULL;
+        uint32_t idx;
+        dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+        count_allocs();
+        ok = dd_insert_weighted(t, pts[q], pts[q][3], &idx) == DD_OK;
+        const long n = count_allocs();
+        dd_free(t);
+        for (long k = 1; k <= n && ok; k++) {
+            dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+            shot before = take_shot(t);
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+            const dd_status r = dd_insert_weighted(t, pts[q], pts[q][3], &idx);
+            const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+            if (left > 0) ok = 0, snprintf(why, sizeof why, "insert %d: allocation %ld never came", q, k);
+            else if (r == DD_ERR_NOMEM && unchanged(t, &before) && checked(t, why, sizeof why)) survived++;
+            else if (r != DD_OK) ok = 0, snprintf(why, sizeof why, "insert %d, allocation %ld: %s", q, k, dd_errmsg(t));
+            if (ok && dd_insert_weighted(t, pts[q], pts[q][3], &idx) != DD_OK)
+                ok = 0, snprintf(why, sizeof why, "insert %d fails after allocation %ld was refused", q, k);
+            if (ok) ok = checked(t, why, sizeof why);
+            free(before.cells), free(before.hid);
+            dd_free(t);
+        }
+    }
+    tl_check(st, ok && survived > 0, "fault/weighted", "%s (%ld survived)", why, survived);
+    fprintf(stderr, "  fault/weighted: %ld injected failures survived\n", survived);
+    ws_free(&s);
+}
+#endif
+
 int main(int argc, char **argv)
 {
     small = argc > 1 && !strcmp(argv[1], "small");
@@ -591,5 +656,8 @@ int main(int argc, char **argv)
     ws_free(&s);
     bad_create_case(&st);
     refusals_case(&st);
+#ifdef DD_TEST_BUILD
+    fault_case(&st);
+#endif
     return tl_finish(&st);
 }
