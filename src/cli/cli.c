@@ -439,6 +439,15 @@ static const command commands[] = {
      "the cube), our queue fed by dd_created_cells, CGAL's by find_conflicts\n"
      "and insert_in_hole; the same rule on both sides, so both must end in the\n"
      "same triangulation (exit 1 on a mismatch).", cmd_refine_bench},
+    {"regular-bench", "regular-bench [N] [--base N0] [--inserts M] [--reps R] [--seed S]",
+     "Regular triangulations against CGAL's Regular_triangulation_3, hidden\n"
+     "points kept: construction of N weighted points of wuniform (default\n"
+     "10^6; dd_create_ex against CGAL's range insert, R times each, default 3,\n"
+     "medians), then M new weighted points (default 50000) inserted into N0\n"
+     "(default 200000), dd_insert_weighted against CGAL's hinted insert.  The\n"
+     "cells and hidden sets are compared (after each construction and at five\n"
+     "checkpoints of the insertions); mismatches are printed, exit 1 on any.\n"
+     "While the engine refuses weights, its figures read n/a.", cmd_regular_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
