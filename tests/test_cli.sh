@@ -361,4 +361,14 @@ else
     expect hidden-facts 0 "" "$DTDEL" hidden "$tmp/w.xyzw"
     [ "$(tr '\n' ' ' <"$tmp/out")" = "4 " ] && echo "ok cli/hidden-facts-list" ||
         echo "FAIL cli/hidden-facts-list: $(tr '\n' ' ' <"$tmp/out")"
+    # exact duplicates (of a vertex, of a hidden point): the first stays,
+    # the copies are neither vertices nor hidden, in both engines
+    { cat "$tmp/w.xyzw"; printf '1 1 1 -5\n0 0 0 0\n'; } >"$tmp/dup.xyzw"
+    for pair in "tets cgal-tets" "hidden cgal-hidden"; do
+        set -- $pair
+        "$DTDEL" $1 "$tmp/dup.xyzw" >"$tmp/a" 2>/dev/null
+        "$DTDEL" $2 "$tmp/dup.xyzw" >"$tmp/b" 2>/dev/null
+        [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" && ! grep -qwE "7|8" "$tmp/a" && echo "ok cli/$1-exact-duplicates" ||
+            echo "FAIL cli/$1-exact-duplicates: $(tr '\n' ' ' <"$tmp/a" | head -c 200)"
+    done
 fi
