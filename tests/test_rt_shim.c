@@ -32,9 +32,10 @@ static void lift(mpq_t out, const double *p, double w)
     mpq_clear(x);
 }
 
-/* sign(lift(q) - h(q)) where h is the affine function through the lifted
- * vertices of the finite cell (a, b, c, d); 2 if the cell is flat.       */
-static int above_plane(const double *pts[4], const double w[4], const double *q, double wq)
+/* The affine function h(x) = c0 x + c1 y + c2 z + c3 through the lifted
+ * vertices of the finite cell pts[0..3] (weights w), in c; 0 if the cell
+ * is flat.                                                               */
+static int lifted_plane(const double *pts[4], const double w[4], mpq_t c[4])
 {
     mpq_t m[4][5], f, t;
     for (int i = 0; i < 4; i++)
@@ -61,24 +62,28 @@ static int above_plane(const double *pts[4], const double w[4], const double *q,
             }
         }
     }
-    int s = 2;
-    if (!flat) { /* coefficient k = m[k][4] / m[k][k] */
-        mpq_t h;
-        mpq_init(h);
-        for (int k = 0; k < 4; k++) {
-            mpq_div(f, m[k][4], m[k][k]);
-            if (k < 3) mpq_set_d(t, q[k]); else mpq_set_ui(t, 1, 1);
-            mpq_mul(t, t, f);
-            mpq_add(h, h, t);
-        }
-        lift(t, q, wq);
-        mpq_sub(t, t, h);
-        s = mpq_sgn(t);
-        mpq_clear(h);
-    }
+    for (int k = 0; k < 4 && !flat; k++) mpq_div(c[k], m[k][4], m[k][k]);
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 5; j++) mpq_clear(m[i][j]);
     mpq_clears(f, t, NULL);
+    return !flat;
+}
+
+/* sign(lift(q) - h(q)) for the plane c of lifted_plane. */
+static int above_plane(mpq_t c[4], const double *q, double wq)
+{
+    mpq_t h, t;
+    mpq_inits(h, t, NULL);
+    mpq_set(h, c[3]);
+    for (int k = 0; k < 3; k++) {
+        mpq_set_d(t, q[k]);
+        mpq_mul(t, t, c[k]);
+        mpq_add(h, h, t);
+    }
+    lift(t, q, wq);
+    mpq_sub(t, t, h);
+    int s = mpq_sgn(t);
+    mpq_clears(h, t, NULL);
     return s;
 }
 
@@ -177,12 +182,15 @@ static void check_lower_hull(const char *name, const double *xyz, const double *
         const double *x[4];
         double cw[4];
         for (int j = 0; j < 4; j++) { x[j] = xyz + 3 * cl[j]; cw[j] = w[cl[j]]; }
-        for (uint32_t q = 0; q < n; q++) {
-            int s = above_plane(x, cw, xyz + 3 * q, w[q]);
-            if (s == 2) { flat = 1; break; }
+        mpq_t pl[4];
+        for (int j = 0; j < 4; j++) mpq_init(pl[j]);
+        if (!lifted_plane(x, cw, pl)) flat = 1;
+        for (uint32_t q = 0; q < n && !flat; q++) {
+            int s = above_plane(pl, xyz + 3 * q, w[q]);
             if (s < 0) bad++;
             if (is_h[q] && s > 0 && cell_holds(x, xyz + 3 * q)) held[q] = 1;
         }
+        for (int j = 0; j < 4; j++) mpq_clear(pl[j]);
     }
     snprintf(tn, sizeof tn, "%s/lower-hull", name);
     tl_check(&st, !bad && !flat, tn, "%d points below a cell's lifted plane, flat cell %d", bad, flat);
@@ -261,7 +269,8 @@ static void test_equal_positions(void)
  * duplicate of a vertex takes no index, one of a hidden point is hidden. */
 static void test_insert(int discard)
 {
-    const uint32_t n0 = 60, n1 = 100;
+    const uint32_t n0 = 60;
+    uint32_t n1 = 100;
     double xyz[3 * 102], w[102];
     random_weighted(n1, 0.1, 11, xyz, w);
     dd_cgal_rt *c = dd_cgal_rt_build(xyz, w, n0, discard);
@@ -292,14 +301,32 @@ static void test_insert(int discard)
     }
     snprintf(name, sizeof name, "insert/%s/duplicate-vertex", discard ? "discard" : "keep");
     tl_check(&st, !bad, name, "not refused with 2");
+    /* the same position, heavier: a new vertex, the old one hidden (or
+     * forgotten); its weight hides some neighbours too                 */
+    if (!bad && nv > 0) {
+        uint32_t v = ver[nv / 3], *h2 = NULL, *v2 = NULL;
+        size_t nh2 = 0, nv2 = 0;
+        int ok = dd_cgal_rt_insert(c, xyz + 3 * v, w[v] + 1, n1) == 0 && dd_cgal_rt_num_input(c) == n1 + 1 &&
+                 !dd_cgal_rt_vertices(c, &v2, &nv2) && !dd_cgal_rt_hidden(c, &h2, &nh2);
+        int has_new = 0, has_old = 0, old_hidden = 0;
+        for (size_t k = 0; ok && k < nv2; k++) has_new |= v2[k] == n1, has_old |= v2[k] == v;
+        for (size_t k = 0; ok && k < nh2; k++) old_hidden |= h2[k] == v;
+        snprintf(name, sizeof name, "insert/%s/heavier-at-vertex", discard ? "discard" : "keep");
+        tl_check(&st, ok && has_new && !has_old && old_hidden == !discard, name,
+                 "new vertex %d, old vertex %d, old hidden %d", has_new, has_old, old_hidden);
+        free(h2), free(v2);
+        n1++;
+    }
     if (!discard) {
         uint32_t *h2 = NULL;
         size_t nh2 = 0;
         int ok = !bad && nh > 0;
         if (ok) {
             uint32_t q = hid[0];
-            ok = dd_cgal_rt_insert(c, xyz + 3 * q, w[q], n1) == 0 && !dd_cgal_rt_hidden(c, &h2, &nh2) &&
-                 nh2 == nh + 1 && h2[nh2 - 1] == n1;
+            free(hid);
+            hid = NULL;
+            ok = !dd_cgal_rt_hidden(c, &hid, &nh) && dd_cgal_rt_insert(c, xyz + 3 * q, w[q], n1) == 0 &&
+                 !dd_cgal_rt_hidden(c, &h2, &nh2) && nh2 == nh + 1 && h2[nh2 - 1] == n1;
         }
         tl_check(&st, ok, "insert/keep/duplicate-hidden", "%zu -> %zu hidden", nh, nh2);
         free(h2);

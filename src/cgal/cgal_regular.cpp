@@ -135,7 +135,10 @@ struct Rt_of : public Any_rt {
         typename T::Locate_type lt;
         int li, lj;
         const typename T::Cell_handle c = rt.locate(p, lt, li, lj, hint->cell());
-        if (lt == T::VERTEX && c->vertex(li)->point() == p)
+        /* Weighted_point_3's == compares the bare points only; CGAL's
+         * insert returns the vertex when the weights are equal too.    */
+        if (lt == T::VERTEX && c->vertex(li)->point().point() == p.point() &&
+            c->vertex(li)->point().weight() == p.weight())
             return 2;
         const typename T::Vertex_handle v = rt.insert(p, lt, c, li, lj);
         if (v != typename T::Vertex_handle()) {
