@@ -21,6 +21,7 @@
 
 #include "datasets.h"
 #include "readers.h"
+#include "rng.h"
 #include "tokens.h"
 
 #include <ctype.h>
@@ -51,55 +52,6 @@ static void set_msg(char *msg, size_t msglen, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, msglen, fmt, ap);
     va_end(ap);
-}
-
-/* ---- PRNG: xoshiro256** seeded by splitmix64 (Blackman & Vigna) --------- */
-
-typedef struct rng { uint64_t s[4]; } rng;
-
-static uint64_t splitmix64(uint64_t *x)
-{
-    uint64_t z = (*x += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-static void seed_rng(rng *g, uint64_t seed)
-{
-    for (int i = 0; i < 4; i++) g->s[i] = splitmix64(&seed);
-}
-
-static uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
-static uint64_t next_u64(rng *g)
-{
-    uint64_t *s = g->s;
-    uint64_t result = rotl(s[1] * 5, 7) * 9;
-    uint64_t t = s[1] << 17;
-    s[2] ^= s[0];
-    s[3] ^= s[1];
-    s[1] ^= s[2];
-    s[0] ^= s[3];
-    s[2] ^= t;
-    s[3] = rotl(s[3], 45);
-    return result;
-}
-
-/* Uniform double in [0, 1) with 53 random bits. */
-static double next_unit(rng *g)
-{
-    return (double)(next_u64(g) >> 11) * 0x1.0p-53;
-}
-
-/* Uniform integer in [0, k), k > 0, without modulo bias (rejection). */
-static uint64_t next_below(rng *g, uint64_t k)
-{
-    uint64_t threshold = (0 - k) % k;   /* 2^64 mod k */
-    for (;;) {
-        uint64_t x = next_u64(g);
-        if (x >= threshold) return x % k;
-    }
 }
 
 /* ---- synthetic generators ------------------------------------------------ */
@@ -404,8 +356,14 @@ typedef struct reader {
 
 typedef struct points {
     double *xyz;
+    double *w;               /* weights, when wmode != W_NONE */
     size_t n, cap;           /* in points */
+    int wmode;
 } points;
+
+/* The fourth column of a text line: none (.xyz, .off), a weight (.xyzw)
+ * or a radius whose square is the weight (.xyzr).                       */
+enum { W_NONE, W_WEIGHT, W_RADIUS };
 
 /* 1 if nothing but blanks or a comment remains at p. */
 static int at_end(const char *p)
@@ -501,8 +459,9 @@ static dd_status parse_point(const reader *rd, int strict_tail,
     return DD_OK;
 }
 
-/* Appends a point, growing the array geometrically. */
-static dd_status push_point(points *pts, const double v[3], const reader *rd,
+/* Appends a point (and its weight v[3] when pts has weights), growing
+ * the arrays geometrically.                                              */
+static dd_status push_point(points *pts, const double v[4], const reader *rd,
                             char *msg, size_t msglen)
 {
     if (pts->n >= MAX_POINTS) {
@@ -513,14 +472,66 @@ static dd_status push_point(points *pts, const double v[3], const reader *rd,
     if (pts->n == pts->cap) {
         size_t ncap = pts->cap ? 2 * pts->cap : 1024;
         double *nx = realloc(pts->xyz, 3 * ncap * sizeof *nx);
-        if (nx == NULL) {
+        if (nx != NULL) pts->xyz = nx;
+        double *nw = nx == NULL || pts->wmode == W_NONE ? NULL : realloc(pts->w, ncap * sizeof *nw);
+        if (nw != NULL) pts->w = nw;
+        if (nx == NULL || (pts->wmode != W_NONE && nw == NULL)) {
             set_msg(msg, msglen, "out of memory reading '%s'", rd->name);
             return DD_ERR_NOMEM;
         }
-        pts->xyz = nx;
         pts->cap = ncap;
     }
-    memcpy(pts->xyz + 3 * pts->n++, v, 3 * sizeof *v);
+    memcpy(pts->xyz + 3 * pts->n, v, 3 * sizeof *v);
+    if (pts->wmode != W_NONE) pts->w[pts->n] = v[3];
+    pts->n++;
+    return DD_OK;
+}
+
+/* The fourth number of the current line (after "x y z") as a weight:
+ * missing or not a number, NaN, infinite, a negative radius or one whose
+ * square overflows are errors naming file and line.                     */
+static dd_status parse_weight(const reader *rd, int wmode, double *w,
+                              char *msg, size_t msglen)
+{
+    const char *what = wmode == W_RADIUS ? "radius" : "weight";
+    const char *p = rd->line;
+    double x[3], v;
+    parse_number(&p, &x[0]);
+    parse_number(&p, &x[1]);
+    parse_number(&p, &x[2]);
+    if (!parse_number(&p, &v)) {
+        char q[64];
+        quote_line(rd, q, sizeof q);
+        set_msg(msg, msglen, "%s:%lu: missing %s: expected 'x y z %s', got "
+                "'%s'", rd->name, rd->lineno, what,
+                wmode == W_RADIUS ? "r" : "w", q);
+        return DD_ERR_PARSE;
+    }
+    if (isnan(v)) {
+        set_msg(msg, msglen, "%s:%lu: %s is NaN", rd->name, rd->lineno, what);
+        return DD_ERR_NAN;
+    }
+    if (isinf(v) || (wmode == W_RADIUS && isinf(v * v))) {
+        set_msg(msg, msglen, "%s:%lu: %s is infinite%s", rd->name, rd->lineno,
+                what, isinf(v) ? "" : " (its square overflows)");
+        return DD_ERR_INFINITE;
+    }
+    if (wmode == W_RADIUS && v < 0) {
+        set_msg(msg, msglen, "%s:%lu: negative radius %.17g", rd->name,
+                rd->lineno, v);
+        return DD_ERR_PARSE;
+    }
+    double extra;
+    while (!at_end(p))
+        if (!parse_number(&p, &extra)) {
+            char q[64];
+            quote_line(rd, q, sizeof q);
+            set_msg(msg, msglen, "%s:%lu: expected numbers after 'x y z %s', "
+                    "got '%s'", rd->name, rd->lineno,
+                    wmode == W_RADIUS ? "r" : "w", q);
+            return DD_ERR_PARSE;
+        }
+    *w = wmode == W_RADIUS ? v * v : v;
     return DD_OK;
 }
 
@@ -532,8 +543,11 @@ static dd_status parse_xyz(reader *rd, points *pts, char *msg, size_t msglen)
         int got;
         dd_status st = next_line(rd, &got, msg, msglen);
         if (st != DD_OK || !got) return st;
-        double v[3];
-        st = parse_point(rd, 1, "three numbers 'x y z'", v, msg, msglen);
+        double v[4] = {0, 0, 0, 0};
+        st = parse_point(rd, pts->wmode == W_NONE, "three numbers 'x y z'", v,
+                         msg, msglen);
+        if (st == DD_OK && pts->wmode != W_NONE)
+            st = parse_weight(rd, pts->wmode, &v[3], msg, msglen);
         if (st == DD_OK) st = push_point(pts, v, rd, msg, msglen);
         if (st != DD_OK) return st;
     }
@@ -611,7 +625,7 @@ static dd_status parse_off(reader *rd, points *pts, char *msg, size_t msglen)
                     (unsigned long long)nv);
             return DD_ERR_PARSE;
         }
-        double v[3];
+        double v[4] = {0, 0, 0, 0};
         st = parse_point(rd, 0, "vertex 'x y z'", v, msg, msglen);
         if (st == DD_OK) st = push_point(pts, v, rd, msg, msglen);
         if (st != DD_OK) return st;
@@ -619,29 +633,33 @@ static dd_status parse_off(reader *rd, points *pts, char *msg, size_t msglen)
     return DD_OK;
 }
 
-/* Parses f as OFF (is_off) or xyz; on success hands the array to *xyz
- * (never NULL) and the count to *np.                                      */
-static dd_status parse_file(FILE *f, const char *name, int is_off,
-                            double **xyz, uint32_t *np,
+/* Parses f as OFF (is_off) or xyz (with a fourth column by wmode); on
+ * success hands the array to *xyz (never NULL), the weights to *w (when
+ * wmode is not W_NONE; never NULL then) and the count to *np.            */
+static dd_status parse_file(FILE *f, const char *name, int is_off, int wmode,
+                            double **xyz, double **w, uint32_t *np,
                             char *msg, size_t msglen)
 {
     reader rd = {f, name, NULL, 0, 0, 0};
-    points pts = {NULL, 0, 0};
+    points pts = {NULL, NULL, 0, 0, is_off ? W_NONE : wmode};
     dd_status st = is_off ? parse_off(&rd, &pts, msg, msglen)
                           : parse_xyz(&rd, &pts, msg, msglen);
     free(rd.line);
-    if (st == DD_OK && pts.xyz == NULL) {
-        pts.xyz = malloc(3 * sizeof *pts.xyz);
-        if (pts.xyz == NULL) {
-            set_msg(msg, msglen, "out of memory reading '%s'", name);
-            st = DD_ERR_NOMEM;
-        }
+    if (st == DD_OK && pts.xyz == NULL) pts.xyz = malloc(3 * sizeof *pts.xyz);
+    if (st == DD_OK && pts.wmode != W_NONE && pts.w == NULL)
+        pts.w = malloc(sizeof *pts.w);
+    if (st == DD_OK && (pts.xyz == NULL || (pts.wmode != W_NONE && pts.w == NULL))) {
+        set_msg(msg, msglen, "out of memory reading '%s'", name);
+        st = DD_ERR_NOMEM;
     }
     if (st != DD_OK) {
         free(pts.xyz);
+        free(pts.w);
         return st;
     }
     *xyz = pts.xyz;
+    if (w != NULL) *w = pts.w;
+    else free(pts.w);
     *np = (uint32_t)pts.n;
     return DD_OK;
 }
@@ -680,8 +698,43 @@ dd_status dd_read_points_stream(FILE *f, const char *name, double **xyz,
     case DD_FORMAT_PLY: return dd_read_ply(f, name, xyz, np, msg, msglen);
     case DD_FORMAT_OBJ: return dd_read_obj(f, name, xyz, np, msg, msglen);
     default:
-        return parse_file(f, name, has_off_extension(name), xyz, np, msg,
-                          msglen);
+        return parse_file(f, name, has_off_extension(name), W_NONE, xyz, NULL,
+                          np, msg, msglen);
+    }
+}
+
+dd_status dd_read_weighted(const char *path, double **xyz, double **w,
+                           uint32_t *np, char *msg, size_t msglen)
+{
+    *xyz = NULL;
+    *w = NULL;
+    *np = 0;
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        set_msg(msg, msglen, "cannot open '%s': %s", path, strerror(errno));
+        return DD_ERR_IO;
+    }
+    dd_status st = dd_read_weighted_stream(f, path, xyz, w, np, msg, msglen);
+    fclose(f);
+    return st;
+}
+
+dd_status dd_read_weighted_stream(FILE *f, const char *name, double **xyz,
+                                  double **w, uint32_t *np, char *msg,
+                                  size_t msglen)
+{
+    *xyz = NULL;
+    *w = NULL;
+    *np = 0;
+    switch (dd_format_of(name)) {
+    case DD_FORMAT_PLY:
+        return dd_read_ply_weighted(f, name, xyz, w, np, msg, msglen);
+    case DD_FORMAT_XYZW:
+        return parse_file(f, name, 0, W_WEIGHT, xyz, w, np, msg, msglen);
+    case DD_FORMAT_XYZR:
+        return parse_file(f, name, 0, W_RADIUS, xyz, w, np, msg, msglen);
+    default:
+        return dd_read_points_stream(f, name, xyz, np, msg, msglen);
     }
 }
 
@@ -725,7 +778,7 @@ static dd_status load_model(const char *file, uint32_t n, double **xyz,
                 strerror(errno));
         return DD_ERR_IO;
     }
-    dd_status st = parse_file(f, name, 1, xyz, np, msg, msglen);
+    dd_status st = parse_file(f, name, 1, W_NONE, xyz, NULL, np, msg, msglen);
     char drain[1 << 14];               /* let tar finish: no SIGPIPE */
     while (fread(drain, 1, sizeof drain, f) > 0) {}
     int ws = pclose(f);
@@ -774,7 +827,7 @@ static const dataset datasets[] = {
 
 const char *dd_dataset_name(size_t i)
 {
-    return i < NUM_DATASETS ? datasets[i].name : NULL;
+    return i < NUM_DATASETS ? datasets[i].name : dd_weighted_dataset_name(i - NUM_DATASETS);
 }
 
 dd_status dd_gen(const char *name, uint32_t n, uint64_t seed,
@@ -785,13 +838,19 @@ dd_status dd_gen(const char *name, uint32_t n, uint64_t seed,
     const dataset *d = NULL;
     for (size_t i = 0; name != NULL && i < NUM_DATASETS; i++)
         if (strcmp(name, datasets[i].name) == 0) d = &datasets[i];
+    if (d == NULL && dd_dataset_is_weighted(name)) {  /* weights dropped */
+        double *w;
+        dd_status st = dd_gen_weighted(name, n, seed, xyz, &w, np, msg, msglen);
+        free(w);
+        return st;
+    }
     if (d == NULL) {
-        char known[512];
+        char known[768];
         size_t k = 0;
         known[0] = '\0';
-        for (size_t i = 0; i < NUM_DATASETS && k < sizeof known; i++) {
+        for (size_t i = 0; dd_dataset_name(i) && k < sizeof known; i++) {
             int w = snprintf(known + k, sizeof known - k, "%s%s",
-                             i ? ", " : "", datasets[i].name);
+                             i ? ", " : "", dd_dataset_name(i));
             if (w < 0) break;
             k += (size_t)w;
         }

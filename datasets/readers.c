@@ -15,6 +15,10 @@
  *    of a text part or the byte offset ("f: byte 1234:") of a binary one.
  *  - Coordinates are checked for NaN and infinity; other properties are
  *    skipped unread except for the counts of lists, which give their size.
+ *  - The weighted reader also reads the vertex property `weight` or
+ *    `radius` (weight = radius^2): NaN, infinite, a negative radius or
+ *    one whose square overflows are errors naming the vertex.  The
+ *    unweighted reader leaves such a property unread, as any other.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -55,6 +59,8 @@ dd_format dd_format_of(const char *path)
     if (!strcasecmp(dot, ".off")) return DD_FORMAT_OFF;
     if (!strcasecmp(dot, ".ply")) return DD_FORMAT_PLY;
     if (!strcasecmp(dot, ".obj")) return DD_FORMAT_OBJ;
+    if (!strcasecmp(dot, ".xyzw")) return DD_FORMAT_XYZW;
+    if (!strcasecmp(dot, ".xyzr")) return DD_FORMAT_XYZR;
     return DD_FORMAT_XYZ;
 }
 
@@ -185,7 +191,9 @@ static dd_status line_error(const src *s, int rc, char *msg, size_t msglen)
 
 typedef struct points {
     double *xyz;
+    double *w;                 /* weights, when `weighted` */
     uint64_t n, cap;
+    int weighted;
 } points;
 
 /* Bytes of physical memory, or UINT64_MAX when the system cannot tell. */
@@ -209,26 +217,71 @@ static dd_status reserve_points(points *p, uint64_t cap, const char *where, char
         return DD_ERR_NOMEM;
     }
     double *x = cap > SIZE_MAX / 24 ? NULL : realloc(p->xyz, 3 * (size_t)cap * sizeof *x);
-    if (x == NULL) {
+    if (x != NULL) p->xyz = x;
+    double *w = x == NULL || !p->weighted ? NULL : realloc(p->w, (size_t)cap * sizeof *w);
+    if (w != NULL) p->w = w;
+    if (x == NULL || (p->weighted && w == NULL)) {
         set_msg(msg, msglen, "%s: out of memory for %llu points", where, (unsigned long long)cap);
         return DD_ERR_NOMEM;
     }
-    p->xyz = x;
     p->cap = cap;
     return DD_OK;
 }
 
-/* Hands the points over (never NULL) or frees them on failure. */
-static dd_status finish_points(points *p, dd_status st, const char *name, double **xyz, uint32_t *np,
-                               char *msg, size_t msglen)
+/* Hands the points over (never NULL; the weights when read, else
+ * NULL) or frees them on failure.                                        */
+static dd_status finish_points(points *p, dd_status st, const char *name, double **xyz, double **w,
+                               uint32_t *np, char *msg, size_t msglen)
 {
-    if (st == DD_OK && p->xyz == NULL) st = reserve_points(p, 1, name, msg, msglen);
+    if (st == DD_OK && (p->xyz == NULL || (p->weighted && p->w == NULL)))
+        st = reserve_points(p, p->cap ? p->cap : 1, name, msg, msglen);
     if (st != DD_OK) {
         free(p->xyz);
+        free(p->w);
         return st;
     }
     *xyz = p->xyz;
+    if (w != NULL) *w = p->w;
+    else free(p->w);
     *np = (uint32_t)p->n;
+    return DD_OK;
+}
+
+/* A vertex's weight value v (the `radius` property when is_radius) made
+ * a weight in *w: NaN, infinity, a negative radius and a radius whose
+ * square overflows are refused.                                          */
+static dd_status check_weight(double v, int is_radius, const char *where, uint64_t vertex, double *w, char *msg,
+                              size_t msglen)
+{
+    const char *what = is_radius ? "radius" : "weight";
+    if (isnan(v)) {
+        set_msg(msg, msglen, "%s: vertex %llu: %s is NaN", where, (unsigned long long)vertex, what);
+        return DD_ERR_NAN;
+    }
+    if (isinf(v) || (is_radius && isinf(v * v))) {
+        set_msg(msg, msglen, "%s: vertex %llu: %s is infinite%s", where, (unsigned long long)vertex, what,
+                isinf(v) ? "" : " (its square overflows)");
+        return DD_ERR_INFINITE;
+    }
+    if (is_radius && v < 0) {
+        set_msg(msg, msglen, "%s: vertex %llu: negative radius %.17g", where, (unsigned long long)vertex, v);
+        return DD_ERR_PARSE;
+    }
+    *w = is_radius ? v * v : v;
+    return DD_OK;
+}
+
+/* Appends the point v (v[3] its weight when p is weighted, already
+ * checked), growing the arrays geometrically.                            */
+static dd_status push_vertex(points *p, const double v[4], const char *where, char *msg, size_t msglen)
+{
+    if (p->n == p->cap) {
+        dd_status st = reserve_points(p, p->cap ? 2 * p->cap : 1024, where, msg, msglen);
+        if (st != DD_OK) return st;
+    }
+    memcpy(p->xyz + 3 * p->n, v, 3 * sizeof *v);
+    if (p->weighted) p->w[p->n] = v[3];
+    p->n++;
     return DD_OK;
 }
 
@@ -304,7 +357,10 @@ typedef struct ply {
     ply_elem *elems;           /* MAX_ELEMENTS of them */
     size_t nelems;
     long vertex;               /* index of the vertex element, or -1 */
-    int coord[3];              /* its properties x, y, z */
+    int coord[4];              /* its properties x, y, z, and weight or
+                                  radius (-1: none, or not read)       */
+    int want_weight;           /* read `weight` or `radius`            */
+    int radius;                /* coord[3] is `radius`                 */
 } ply;
 
 /* Parses the header up to and including end_header. */
@@ -459,6 +515,22 @@ static dd_status ply_header(ply *p, char *msg, size_t msglen)
             return DD_ERR_PARSE;
         }
     }
+    p->coord[3] = -1;
+    for (size_t i = 0; p->want_weight && i < v->nprops; i++) {
+        const int r = !strcmp(v->props[i].name, "radius");
+        if (!r && strcmp(v->props[i].name, "weight")) continue;
+        if (p->coord[3] >= 0) {
+            set_msg(msg, msglen, "%s:%lu: element 'vertex' has both 'weight' and 'radius'", name, v->line);
+            return DD_ERR_PARSE;
+        }
+        if (v->props[i].count_type != T_NONE) {
+            set_msg(msg, msglen, "%s:%lu: property '%s' of 'vertex' must be a scalar, not a list", name, v->line,
+                    v->props[i].name);
+            return DD_ERR_PARSE;
+        }
+        p->coord[3] = (int)i;
+        p->radius = r;
+    }
     if (v->count > MAX_POINTS) {
         set_msg(msg, msglen, "%s:%lu: %llu vertices: more than %llu", name, v->line,
                 (unsigned long long)v->count, (unsigned long long)MAX_POINTS);
@@ -528,8 +600,8 @@ static dd_status ply_binary_elem(ply *p, const ply_elem *e, int is_vertex, point
     unsigned char b[8];
     if (e->nprops == 0) return DD_OK;
     for (uint64_t i = 0; i < e->count; i++) {
-        double v[3] = {0, 0, 0};
-        uint64_t at[3] = {0, 0, 0};
+        double v[4] = {0, 0, 0, 0};
+        uint64_t at[4] = {0, 0, 0, 0};
         for (size_t k = 0; k < e->nprops; k++) {
             const ply_prop *pr = &e->props[k];
             if (pr->count_type != T_NONE) {
@@ -549,7 +621,7 @@ static dd_status ply_binary_elem(ply *p, const ply_elem *e, int is_vertex, point
             }
             int c = -1;
             if (is_vertex)
-                for (int j = 0; j < 3; j++)
+                for (int j = 0; j < 4; j++)
                     if (p->coord[j] == (int)k) c = j;
             uint64_t start = s->off;
             if (read_bytes(s, c >= 0 ? b : NULL, type_size[pr->type]) != type_size[pr->type])
@@ -560,19 +632,17 @@ static dd_status ply_binary_elem(ply *p, const ply_elem *e, int is_vertex, point
             }
         }
         if (!is_vertex) continue;
-        for (int c = 0; c < 3; c++) {
-            char where[600];
+        char where[600];
+        for (int c = 0; c < 4; c++) {
+            if (c == 3 && p->coord[3] < 0) break;
             snprintf(where, sizeof where, "%s: byte %llu", s->name, (unsigned long long)at[c]);
-            dd_status st = check_finite(v[c], c, where, i, msg, msglen);
+            dd_status st = c < 3 ? check_finite(v[c], c, where, i, msg, msglen)
+                                 : check_weight(v[3], p->radius, where, i, &v[3], msg, msglen);
             if (st != DD_OK) return st;
         }
-        if (pts->n == pts->cap) {
-            char where[600];
-            snprintf(where, sizeof where, "%s: byte %llu", s->name, (unsigned long long)s->off);
-            dd_status st = reserve_points(pts, pts->cap ? 2 * pts->cap : 1024, where, msg, msglen);
-            if (st != DD_OK) return st;
-        }
-        memcpy(pts->xyz + 3 * pts->n++, v, sizeof v);
+        snprintf(where, sizeof where, "%s: byte %llu", s->name, (unsigned long long)s->off);
+        dd_status st = push_vertex(pts, v, where, msg, msglen);
+        if (st != DD_OK) return st;
     }
     return DD_OK;
 }
@@ -603,7 +673,7 @@ static dd_status ply_ascii_elem(ply *p, const ply_elem *e, int is_vertex, points
         dd_status st = ascii_next(s, e, i, msg, msglen);
         if (st != DD_OK) return st;
         const char *l = s->line;
-        double v[3] = {0, 0, 0};
+        double v[4] = {0, 0, 0, 0};
         for (size_t k = 0; k < e->nprops; k++) {
             const ply_prop *pr = &e->props[k];
             double x;
@@ -631,7 +701,7 @@ static dd_status ply_ascii_elem(ply *p, const ply_elem *e, int is_vertex, points
                 return DD_ERR_PARSE;
             }
             if (is_vertex)
-                for (int c = 0; c < 3; c++)
+                for (int c = 0; c < 4; c++)
                     if (p->coord[c] == (int)k) v[c] = x;
         }
         if (*skip_blank(l)) {
@@ -646,11 +716,9 @@ static dd_status ply_ascii_elem(ply *p, const ply_elem *e, int is_vertex, points
             st = check_finite(v[c], c, where, i, msg, msglen);
             if (st != DD_OK) return st;
         }
-        if (pts->n == pts->cap) {
-            st = reserve_points(pts, pts->cap ? 2 * pts->cap : 1024, where, msg, msglen);
-            if (st != DD_OK) return st;
-        }
-        memcpy(pts->xyz + 3 * pts->n++, v, sizeof v);
+        if (p->coord[3] >= 0) st = check_weight(v[3], p->radius, where, i, &v[3], msg, msglen);
+        if (st == DD_OK) st = push_vertex(pts, v, where, msg, msglen);
+        if (st != DD_OK) return st;
     }
     return DD_OK;
 }
@@ -659,14 +727,22 @@ static dd_status ply_ascii_elem(ply *p, const ply_elem *e, int is_vertex, points
 
 dd_status dd_read_ply(FILE *f, const char *name, double **xyz, uint32_t *np, char *msg, size_t msglen)
 {
+    return dd_read_ply_weighted(f, name, xyz, NULL, np, msg, msglen);
+}
+
+dd_status dd_read_ply_weighted(FILE *f, const char *name, double **xyz, double **w, uint32_t *np, char *msg,
+                               size_t msglen)
+{
     *xyz = NULL;
+    if (w != NULL) *w = NULL;
     *np = 0;
     int64_t size = bytes_left(f);
     src *s = src_open(f, name);
     ply p;
     memset(&p, 0, sizeof p);
     p.elems = malloc(MAX_ELEMENTS * sizeof *p.elems);
-    points pts = {NULL, 0, 0};
+    p.want_weight = w != NULL;
+    points pts = {NULL, NULL, 0, 0, 0};
     dd_status st = DD_OK;
     if (s == NULL || p.elems == NULL) {
         set_msg(msg, msglen, "out of memory reading '%s'", name);
@@ -676,6 +752,7 @@ dd_status dd_read_ply(FILE *f, const char *name, double **xyz, uint32_t *np, cha
     p.s = s;
     st = ply_header(&p, msg, msglen);
     if (st != DD_OK) goto done;
+    pts.weighted = p.coord[3] >= 0;
 
     /* the counts against the bytes left, before allocating for them */
     const ply_elem *ve = &p.elems[p.vertex];
@@ -730,7 +807,7 @@ dd_status dd_read_ply(FILE *f, const char *name, double **xyz, uint32_t *np, cha
 done:
     free(p.elems);
     src_close(s);
-    return finish_points(&pts, st, name, xyz, np, msg, msglen);
+    return finish_points(&pts, st, name, xyz, w, np, msg, msglen);
 }
 
 /* ---- OBJ ---------------------------------------------------------------------- */
@@ -740,7 +817,7 @@ dd_status dd_read_obj(FILE *f, const char *name, double **xyz, uint32_t *np, cha
     *xyz = NULL;
     *np = 0;
     src *s = src_open(f, name);
-    points pts = {NULL, 0, 0};
+    points pts = {NULL, NULL, 0, 0, 0};
     dd_status st = DD_OK;
     if (s == NULL) {
         set_msg(msg, msglen, "out of memory reading '%s'", name);
@@ -786,5 +863,5 @@ dd_status dd_read_obj(FILE *f, const char *name, double **xyz, uint32_t *np, cha
         memcpy(pts.xyz + 3 * pts.n++, v, sizeof v);
     }
     src_close(s);
-    return finish_points(&pts, st, name, xyz, np, msg, msglen);
+    return finish_points(&pts, st, name, xyz, NULL, np, msg, msglen);
 }

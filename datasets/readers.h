@@ -16,10 +16,14 @@
 #include <stdio.h>
 #include "../src/dtdel.h"
 
-typedef enum dd_format { DD_FORMAT_XYZ, DD_FORMAT_OFF, DD_FORMAT_PLY, DD_FORMAT_OBJ } dd_format;
+typedef enum dd_format {
+    DD_FORMAT_XYZ, DD_FORMAT_OFF, DD_FORMAT_PLY, DD_FORMAT_OBJ,
+    DD_FORMAT_XYZW,            /* x y z w per line (datasets.c)        */
+    DD_FORMAT_XYZR             /* x y z radius per line, w = radius^2  */
+} dd_format;
 
 /* The format named by the path's extension (case-insensitive): .off,
- * .ply, .obj; anything else is .xyz.                                     */
+ * .ply, .obj, .xyzw, .xyzr; anything else is .xyz.                       */
 dd_format dd_format_of(const char *path);
 
 /* .ply: ascii, binary_little_endian or binary_big_endian 1.0.  The points
@@ -34,6 +38,13 @@ dd_format dd_format_of(const char *path);
  * the stream has one) before anything is allocated for it.              */
 dd_status dd_read_ply(FILE *f, const char *name, double **xyz, uint32_t *np,
                       char *msg, size_t msglen);
+/* The same, and the vertex property `weight` (or `radius`, the weight
+ * being radius^2; both in one file is an error) into *w: n doubles, or
+ * NULL when the vertex element has neither.  A NaN or infinite weight
+ * or radius, a negative radius, or one whose square overflows is an
+ * error naming the vertex (DD_ERR_NAN, DD_ERR_INFINITE, DD_ERR_PARSE).  */
+dd_status dd_read_ply_weighted(FILE *f, const char *name, double **xyz, double **w, uint32_t *np,
+                               char *msg, size_t msglen);
 
 /* .obj: the points are the `v x y z [w]` lines (w ignored; further
  * numbers, as vertex colours, ignored); every other line (vn, vt, f, g,

@@ -14,7 +14,8 @@
 #                                  OUT/readme-table.md: full run only
 #   (2b. $DTDEL bench --reps 1 on uniform, sphere, bunny -> OUT/cold/)
 #   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt,
-#        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt)
+#        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt,
+#        regular-bench -> OUT/regular.txt)
 # DTDEL, DTDEL_COUNT and SUMMARIZE name the binaries (default build/dtdel,
 # build/count/dtdel and build/summarize).  BENCH_SIZES=tiny runs the
 # deletion bench on uniform points only and shrinks the whole-workload
@@ -95,6 +96,14 @@ nr=100000 kr=100000
 [ "${BENCH_SIZES:-}" = tiny ] && nr=1000 kr=1000
 "$DTDEL" refine-bench "$nr" --inserts "$kr" >$out/refine.txt || rc=$?
 cat $out/refine.txt
+# regular triangulations (weighted points, hidden points kept): the
+# construction and the insertion of new weighted points against CGAL's
+# Regular_triangulation_3; cells and hidden sets must agree
+nw=1000000 nw0=200000 mw=50000
+[ "$mode" = quick ] && nw=200000 nw0=50000 mw=10000
+[ "${BENCH_SIZES:-}" = tiny ] && nw=2000 nw0=1000 mw=500
+"$DTDEL" regular-bench "$nw" --base "$nw0" --inserts "$mw" >$out/regular.txt || rc=$?
+cat $out/regular.txt
 csvs=$(ls $out/*.csv)
 "$SUMMARIZE" "$out" $csvs
 sh scripts/plots.sh "$out"

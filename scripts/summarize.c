@@ -79,7 +79,9 @@
  *                           / variant median over the same rows; then the
  *                           mismatch count of all rows, the run from
  *                           meta.txt and the construction ratios from
- *                           OUTDIR/build.txt (dtdel build-bench), if there.
+ *                           OUTDIR/build.txt (dtdel build-bench), if there;
+ *                           then the rows of queries.txt, edits.txt,
+ *                           refine.txt and regular.txt, if there.
  *
  * Mismatches (match == 0) are counted per variant and bucket, printed
  * loudly in summary.md and on stderr; they do not change the exit status
@@ -1201,9 +1203,37 @@ static void readme_construction(const ctx *c, FILE *out)
     fclose(f);
 }
 
-/* One README row of a line of queries.txt, edits.txt or refine.txt
- * (dtdel query-bench, edit-bench, refine-bench), or none; *header says whether the table's
- * head was written.                                                     */
+/* The README row of a line of regular.txt (dtdel regular-bench), or
+ * none: the engine's figure per point, or n/a while it refuses weights. */
+static void readme_regular_row(const char *line, FILE *out)
+{
+    char b[40], b2[40];
+    long long n, n0, h, reps, mism;
+    double ours, cgal, rc;
+    if (sscanf(line, "regular-build: %lld wuniform weighted points, %lld hidden (CGAL), %lld runs each: dtdel %lf s, "
+                     "CGAL %lf s (%lfx); %lld mismatches", &n, &h, &reps, &ours, &cgal, &rc, &mism) == 7)
+        fprintf(out, "| regular triangulation, build %s weighted points%s | %.2f | %.2f | %.1f× | | |\n",
+                fmt_int(n, b), mism ? " (**differs from CGAL**)" : "", 1e6 * ours / (double)n,
+                1e6 * cgal / (double)n, rc);
+    else if (sscanf(line, "regular-build: %lld wuniform weighted points, %lld hidden (CGAL), %lld runs each: "
+                          "dtdel n/a (%*[^)]), CGAL %lf s", &n, &h, &reps, &cgal) == 4)
+        fprintf(out, "| regular triangulation, build %s weighted points | n/a | %.2f | n/a | | |\n", fmt_int(n, b),
+                1e6 * cgal / (double)n);
+    else if (sscanf(line, "regular-insert: %lld wuniform weighted points into %lld, %lld hidden at the end (CGAL): "
+                          "dtdel %lf us an insertion, CGAL hinted insert %lf us (%lfx); %lld mismatches",
+                    &n, &n0, &h, &ours, &cgal, &rc, &mism) == 7)
+        fprintf(out, "| regular triangulation, insert %s weighted points into %s%s | %.2f | %.2f | %.1f× | | |\n",
+                fmt_int(n, b), fmt_int(n0, b2), mism ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+    else if (sscanf(line, "regular-insert: %lld wuniform weighted points into %lld, %lld hidden at the end (CGAL): "
+                          "dtdel n/a (%*[^)]), CGAL hinted insert %lf us", &n, &n0, &h, &cgal) == 4)
+        fprintf(out, "| regular triangulation, insert %s weighted points into %s | n/a | %.2f | n/a | | |\n",
+                fmt_int(n, b), fmt_int(n0, b2), cgal);
+}
+
+/* One README row of a line of queries.txt, edits.txt, refine.txt or
+ * regular.txt (dtdel query-bench, edit-bench, refine-bench,
+ * regular-bench), or none; *header says whether the table's head was
+ * written.                                                              */
 static void readme_extra_row(const char *line, long long nq, FILE *out, int *header)
 {
     char what[64], ok[8], b[40];
@@ -1235,19 +1265,22 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
         char b2[40];
         fprintf(out, "| refine (%s circumcentres of the largest cell into %s points)%s | %.2f | %.2f | %.1f× | | |\n",
                 fmt_int(k, b), fmt_int(n, b2), mism ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+    } else if (!strncmp(line, "regular-", 8)) {
+        readme_regular_row(line, out);
     }
 }
 
-/* The rows of OUTDIR/queries.txt, edits.txt and refine.txt as a second
- * table: insertion of new points, locate and nearest vertex against CGAL
- * with and without Fast_location, moves, set deletion and refinement,
- * then the churn line; nothing without the files.                       */
+/* The rows of OUTDIR/queries.txt, edits.txt, refine.txt and regular.txt
+ * as a second table: insertion of new points, locate and nearest vertex
+ * against CGAL with and without Fast_location, moves, set deletion,
+ * refinement and the regular triangulation's construction and insertion
+ * (weighted points), then the churn line; nothing without the files.   */
 static void readme_queries(const ctx *c, FILE *out)
 {
-    static const char *const files[3] = {"queries.txt", "edits.txt", "refine.txt"};
+    static const char *const files[4] = {"queries.txt", "edits.txt", "refine.txt", "regular.txt"};
     char path[4096], churn[512] = "", b[40];
     int header = 0;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 4; i++) {
         snprintf(path, sizeof path, "%s/%s", c->outdir, files[i]);
         FILE *f = fopen(path, "r");
         if (!f) continue;

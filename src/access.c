@@ -1,12 +1,13 @@
 /*
  * access.c -- the public calls of dtdel.h whose work the mesh layer does:
- * construction and the validator (handed over to src/mesh), the
+ * construction, weighted or not, and the validator (handed over to src/mesh), the
  * canonical form and its hash, status names, and the small accessors.
  * Defined here, in the API layer, so that no layer below includes the
  * public header (docs/architecture.md).
  */
 #include "dtdel.h"
 #include "mesh/mesh.h"
+#include "mesh/hidden.h"
 #include "dtdel/alloc.h"
 
 #include <stdio.h>
@@ -14,7 +15,8 @@
 #include <string.h>
 
 /* The flags dd_create_ex knows. */
-#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES)
+#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES | (unsigned)DD_DISCARD_HIDDEN)
+_Static_assert(DD_DISCARD_HIDDEN == DD_DISCARD_HIDDEN_FLAG, "mesh.h's copy of DD_DISCARD_HIDDEN");
 
 dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
                        char *msg, size_t msglen)
@@ -22,14 +24,11 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
     dd_status s;
     *out = NULL;
     if (msg && msglen) msg[0] = 0;
-    if (weights) {
-        s = DD_ERR_UNSUPPORTED;
-        if (msg && msglen) snprintf(msg, msglen, "weights are not supported yet: pass NULL");
-    } else if (flags & ~KNOWN_FLAGS) {
+    if (flags & ~KNOWN_FLAGS) {
         s = DD_ERR_ARG;
         if (msg && msglen) snprintf(msg, msglen, "unknown flag bits 0x%x", flags & ~KNOWN_FLAGS);
     } else {
-        s = dd_mesh_create(out, xyz, n, flags, msg, msglen);
+        s = dd_mesh_create(out, xyz, weights, n, flags, msg, msglen);
     }
     if (s != DD_OK && msg && msglen && !msg[0]) snprintf(msg, msglen, "%s", dd_status_name(s));
     return s;
@@ -80,6 +79,7 @@ size_t dd_memory_bytes(const dd_tri *t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0)
          + t->made.cap * sizeof(int64_t)
+         + (t->wt ? (size_t)t->cap_v * sizeof(double) : 0) + dd_hidden_bytes(t)
          + (t->pred.limbs ? (size_t)DD_PRED_SCRATCH * DD_PRED_LIMBS * sizeof(mp_limb_t) : 0);
 }
 

@@ -86,6 +86,13 @@ static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_varian
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
 }
 
+/* The edits that remove a vertex are not there yet for weighted points
+ * (issue 44): they refuse, changing nothing.                           */
+static dd_status refuse_weighted(dd_tri *t, const char *what)
+{
+    return dd_fail(t, DD_ERR_UNSUPPORTED, "%s on a weighted triangulation is not supported yet", what);
+}
+
 /* The public edits below are each the body of a dd_edit_begin / end
  * pair: the cells they make become dd_created_cells' list, and a
  * failure's message dd_errmsg's.                                      */
@@ -93,6 +100,7 @@ static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
+    if (t->wt) return refuse_weighted(t, "deletion");
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
@@ -240,6 +248,7 @@ static void prefetch_stars(const dd_tri *t, const uint32_t *next, size_t n)
 static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
 {
     const dd_variant *var;
+    if (t->wt) return refuse_weighted(t, "dd_delete_set");
     dd_status s = resolve_variant(t, variant, &var);
     if (s != DD_OK || n == 0) return s;
     if (n > t->nvert)
@@ -422,6 +431,7 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
 
 static dd_status reinsert(dd_tri *t, uint32_t input)
 {
+    if (t->wt) return refuse_weighted(t, "dd_reinsert");
     if (input >= t->np)
         return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
     uint32_t v = t->in2v[input];
@@ -496,6 +506,7 @@ static dd_status insert_point(dd_tri *t, const double p[3], uint32_t *index)
 
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
+    if (t->wt) return dd_insert_weighted(t, p, 0.0, index);    /* weight 0 */
     dd_edit_begin(t);
     return dd_edit_end(t, insert_point(t, p, index));
 }

@@ -76,6 +76,7 @@ static dd_status move_by_reinsertion(dd_tri *t, uint32_t v, const double p[3])
 
 static dd_status move_vertex(dd_tri *t, uint32_t input, const double p[3])
 {
+    if (t->wt) return dd_fail(t, DD_ERR_UNSUPPORTED, "dd_move on a weighted triangulation is not supported yet");
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c of the new point is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c of the new point is infinite", "xyz"[c]);

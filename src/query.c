@@ -101,7 +101,7 @@ dd_status dd_nearest_vertex(const dd_tri *t, const double p[3], uint32_t *v)
     dd_reader r;
     dd_reader_init(&r);
     dd_status s = locate_cell(t, &r, p, &c);
-    if (s == DD_OK) s = dd_nearest_from(t, &r, p, c, &w);
+    if (s == DD_OK) s = t->wt ? dd_nearest_power_from(t, &r, p, c, &w) : dd_nearest_from(t, &r, p, c, &w);
     dd_reader_done(&r);
     if (s == DD_OK) *v = t->v2in[w];
     return s;

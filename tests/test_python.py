@@ -107,6 +107,11 @@ def test_bindings():
     if m:
         val = int(m.group(1), 0) << int(m.group(3) or 0)
         check("DD_STABLE_INDICES value", val == dtdel.STABLE_INDICES, m.group(0))
+    m = re.search(r"\bDD_DISCARD_HIDDEN\b\s*=?\s*\(?\s*([0-9xXa-fA-F]+)[uU]?\s*(<<\s*(\d+))?", text)
+    check("DD_DISCARD_HIDDEN in the header", m is not None)
+    if m:
+        val = int(m.group(1), 0) << int(m.group(3) or 0)
+        check("DD_DISCARD_HIDDEN value", val == dtdel.DISCARD_HIDDEN, m.group(0))
     ver = [re.search(r"#define\s+DD_VERSION_%s\s+(\d+)" % k, text) for k in ("MAJOR", "MINOR", "PATCH")]
     if all(ver):
         want = ".".join(m.group(1) for m in ver)
@@ -360,7 +365,8 @@ def test_stable_indices():
     with Triangulation(xyz) as t:
         t.delete(3)
         check("default reuses", t.insert([0.3, 0.3, 0.3]) == 3, "")
-    raises("weights unsupported", "DD_ERR_UNSUPPORTED", Triangulation, xyz, np.zeros(40))
+    with Triangulation(xyz, weights=np.zeros(40), stable_indices=True) as t:
+        check("weights with stable indices", t.is_weighted and t.num_vertices == 40)
     raises("bad weights shape", "ValueError", Triangulation, xyz, np.zeros(3))
 
 
@@ -386,9 +392,93 @@ def test_install():
               r.returncode == 0 and r.stdout.startswith(want), r.stdout + r.stderr[-300:])
 
 
+def cgal_weighted(xyz, w, discard):
+    """CGAL's (canonical cells, hidden indices) of the weighted points,
+    through the CLI's cgal-tets and cgal-hidden on an .xyzw file."""
+    with tempfile.NamedTemporaryFile("w", suffix=".xyzw", delete=False) as f:
+        for p, wi in zip(xyz, w):
+            f.write("%r %r %r %r\n" % (float(p[0]), float(p[1]), float(p[2]), float(wi)))
+        path = f.name
+    flag = ["--discard-hidden"] if discard else []
+    try:
+        tets = subprocess.run([CLI, "cgal-tets", path] + flag, check=True, capture_output=True,
+                              text=True).stdout
+        hid = subprocess.run([CLI, "cgal-hidden", path] + flag, check=True, capture_output=True,
+                             text=True).stdout
+    finally:
+        os.unlink(path)
+    rows = np.array([[int(x) for x in line.split()] for line in tets.splitlines() if line.strip()],
+                    dtype=np.int32).reshape(-1, 4)
+    return rows, np.array([int(x) for x in hid.split()], dtype=np.int64)
+
+
+def test_weighted():
+    rng = np.random.default_rng(43)
+    n = 300
+    xyz = rng.random((n, 3))
+    w = rng.random(n) * 0.04           # a few tens of hidden points
+    for discard in (False, True):
+        tag = "weighted/%s: " % ("discard" if discard else "keep")
+        ref_cells, ref_hidden = cgal_weighted(xyz, w, discard)
+        with Triangulation(xyz, weights=w, discard_hidden=discard) as t:
+            check(tag + "is_weighted", t.is_weighted)
+            check(tag + "cells as CGAL's", np.array_equal(t.canonical(), ref_cells),
+                  "%d cells, CGAL %d" % (len(t.canonical()), len(ref_cells)))
+            h = t.hidden()
+            check(tag + "hidden as CGAL's", np.array_equal(h, ref_hidden), "%s vs %s" % (h[:8], ref_hidden[:8]))
+            check(tag + "weights", all(t.weight(i) == w[i] for i in range(n)))
+            flags = np.array([t.is_hidden(i) for i in range(n)])
+            check(tag + "is_hidden agrees with hidden()", np.array_equal(np.flatnonzero(flags), h))
+            both = [i for i in range(n) if t.is_vertex(i) and t.is_hidden(i)]
+            check(tag + "no vertex is hidden", not both, str(both[:5]))
+            if not discard:
+                check(tag + "every point a vertex or hidden", t.num_vertices + len(h) == n and len(h) > 0,
+                      "%d vertices + %d hidden of %d" % (t.num_vertices, len(h), n))
+            else:
+                check(tag + "nothing kept hidden", len(h) == 0 and t.num_vertices < n)
+    # insertions: a light point next to a vertex ends hidden (its lifted
+    # point lies above the vertex's: the same position, lower weight), a
+    # heavy one becomes a vertex; then the whole set as CGAL's, keeping
+    with Triangulation(xyz, weights=w) as t:
+        v = next(i for i in range(n) if t.is_vertex(i))
+        a = t.insert_weighted(xyz[v], w[v] - 1.0)
+        check("weighted/insert light at a vertex: hidden", a == n and t.is_hidden(a) and t.is_vertex(v))
+        b = t.insert_weighted(xyz[v], w[v] + 1.0)
+        check("weighted/insert heavy at a vertex: vertex, the old one hidden",
+              b == n + 1 and t.is_vertex(b) and t.is_hidden(v) and not t.is_vertex(v))
+        extra = rng.random((40, 3))
+        ew = rng.random(40) * 0.04
+        idx = [t.insert_weighted(p, wi) for p, wi in zip(extra, ew)]
+        check("weighted/insert indices", idx == list(range(n + 2, n + 42)), str(idx[:5]))
+        allx = np.vstack([xyz, [xyz[v], xyz[v]], extra])
+        allw = np.concatenate([w, [w[v] - 1.0, w[v] + 1.0], ew])
+        ref_cells, ref_hidden = cgal_weighted(allx, allw, False)
+        check("weighted/inserted as CGAL's", np.array_equal(t.canonical(), ref_cells)
+              and np.array_equal(t.hidden(), ref_hidden))
+        t.check()
+        check("weighted/check after inserts", True)
+    # zero weights: the Delaunay triangulation; unweighted: no weights
+    with Triangulation(xyz, weights=np.zeros(n)) as z, Triangulation(xyz) as u:
+        check("weighted/zero weights are the DT", np.array_equal(z.canonical(), u.canonical()))
+        check("weighted/unweighted", not u.is_weighted and u.weight(3) == 0.0 and len(u.hidden()) == 0)
+        raises("weighted/insert_weighted unweighted", "DD_ERR_UNSUPPORTED", u.insert_weighted, [0.5] * 3, 0.1)
+    bad = w.copy()
+    bad[7] = np.nan
+    raises("weighted/nan weight", "DD_ERR_NAN", Triangulation, xyz, bad)
+    bad[7] = np.inf
+    raises("weighted/infinite weight", "DD_ERR_INFINITE", Triangulation, xyz, bad)
+    raises("weighted/weights shape", "ValueError", Triangulation, xyz, w[:5])
+    with Triangulation(xyz, weights=w) as t:
+        before = t.canonical()
+        raises("weighted/insert nan weight", "DD_ERR_NAN", t.insert_weighted, [0.5] * 3, float("nan"))
+        check("weighted/refused insert changes nothing", np.array_equal(t.canonical(), before)
+              and t.num_input == n)
+        raises("weighted/weight of no point", "DD_ERR_ARG", t.weight, n + 5)
+
+
 def main():
     for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
-              test_errors, test_cell_handles, test_write, test_stable_indices, test_install):
+              test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted, test_install):
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure

@@ -249,7 +249,13 @@ cat >"$tmp/rd/edits.txt" <<'EOQ'
 smoothing: 1000 uniform points, 2 passes of a random step of 5% of the mean spacing: dtdel 2.00 us, CGAL move_if_no_collision 28.00 us (14.0x); kept by the filter 30.0%; identical to CGAL: yes
 delete-set 90%: 1800 of 2000 uniform points: dtdel 1.00 us a vertex, CGAL remove(first, last) 30.00 us (30.0x); identical to CGAL: yes
 EOQ
+cat >"$tmp/rd/regular.txt" <<'EOQ'
+regular-build: 1000000 wuniform weighted points, 70000 hidden (CGAL), 3 runs each: dtdel 1.000 s, CGAL 2.000 s (2.00x); 0 mismatches
+regular-insert: 50000 wuniform weighted points into 200000, 15000 hidden at the end (CGAL): dtdel n/a (unsupported), CGAL hinted insert 60.00 us; mismatches n/a
+EOQ
 expect readme-runs 0 "" "$SUM" "$tmp/rd" "$tmp/moment.csv" "$tmp/helix.csv" "$tmp/uniform.csv"
+has readme-regular-build "$tmp/rd/readme-table.md" "| regular triangulation, build 1 000 000 weighted points | 1.00 | 2.00 | 2.0× | | |"
+has readme-regular-insert-na "$tmp/rd/readme-table.md" "| regular triangulation, insert 50 000 weighted points into 200 000 | n/a | 60.00 | n/a | | |"
 has readme-queries-header "$tmp/rd/readme-table.md" "| beyond deletion (uniform points) | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |"
 has readme-queries-insert "$tmp/rd/readme-table.md" "| insert a new point, 200 000 points | 4.00 | 40.00 | 10.0× | 30.00 | 7.5× |"
 has readme-queries-differ "$tmp/rd/readme-table.md" "| locate, 200 000 points (**differs from CGAL**) | 1.00 | 20.00 | 20.0× | 5.00 | 5.0× |"

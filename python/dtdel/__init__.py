@@ -12,6 +12,12 @@ was.
     with dtdel.Triangulation(np.random.rand(1000, 3)) as t:
         t.delete(7)
         print(t.canonical_hash(), t.degree(8), t.locate([0.5, 0.5, 0.5]))
+
+Weighted points give the regular triangulation (CGAL's Regular_triangulation_3):
+
+    t = dtdel.Triangulation(xyz, weights=w)          # hidden points kept
+    t.hidden(), t.is_hidden(3), t.weight(3), t.insert_weighted([0.5] * 3, 0.01)
+    dtdel.Triangulation(xyz, weights=w, discard_hidden=True)   # forgotten
 """
 import ctypes
 from ctypes import byref, c_double, c_int32, c_int64, c_size_t, c_uint32, c_void_p
@@ -116,11 +122,13 @@ def _take(ptr, count, width=4, dtype=np.int32):
 class Triangulation:
     """DT of an (n, 3) float64 array of points (dd_create); a point's row
     number is its input index.  Duplicates are merged into their first
-    occurrence (alias).  Use `with` or close() to free it early.  ctypes
+    occurrence (alias).  With weights (an (n,) array), the regular
+    triangulation (dd_create_ex), its hidden points kept, or forgotten
+    when discard_hidden.  Use `with` or close() to free it early.  ctypes
     lets other threads run during a call: an edit needs the triangulation
     to itself (no other call on it meanwhile), as in C."""
 
-    def __init__(self, points, weights=None, stable_indices=False):
+    def __init__(self, points, weights=None, stable_indices=False, discard_hidden=False):
         xyz = np.ascontiguousarray(points, dtype=np.float64)
         if xyz.ndim != 2 or xyz.shape[1] != 3:
             raise ValueError("points must be an (n, 3) array, got shape %s" % (xyz.shape,))
@@ -129,7 +137,7 @@ class Triangulation:
         self._t = None
         out = c_void_p()
         msg = ctypes.create_string_buffer(_MSGLEN)
-        if weights is None and not stable_indices:
+        if weights is None and not stable_indices and not discard_hidden:
             s = lib.dd_create(byref(out), _dptr(xyz), xyz.shape[0], msg, _MSGLEN)
         else:
             w = None
@@ -137,7 +145,7 @@ class Triangulation:
                 w = np.ascontiguousarray(weights, dtype=np.float64)
                 if w.shape != (xyz.shape[0],):
                     raise ValueError("weights must be an (n,) array")
-            flags = STABLE_INDICES if stable_indices else 0
+            flags = (STABLE_INDICES if stable_indices else 0) | (DISCARD_HIDDEN if discard_hidden else 0)
             s = _need("dd_create_ex")(byref(out), _dptr(xyz), None if w is None else _dptr(w),
                                       xyz.shape[0], flags, msg, _MSGLEN)
         if s != 0:
@@ -311,6 +319,14 @@ class Triangulation:
         self._check(lib.dd_insert(self._h, _dptr(a), byref(idx)))
         return int(idx.value)
 
+    def insert_weighted(self, p, w):
+        """Inserts the weighted point (p, w); returns its input index, also
+        when it ends hidden (dd_insert_weighted)."""
+        a = _point(p)
+        idx = c_uint32()
+        self._check(_need("dd_insert_weighted")(self._h, _dptr(a), float(w), byref(idx)))
+        return int(idx.value)
+
     def reinsert(self, v):
         """Puts back deleted vertex v at its point (dd_reinsert)."""
         self._check(lib.dd_reinsert(self._h, self._vid(v)))
@@ -375,6 +391,29 @@ class Triangulation:
             raise DtdelError(s, "check(): " + (msg.value.decode(errors="replace")
                                                or status_name(s)))
 
+    # ---- weighted points (issue 43) ---------------------------------------------
+    @property
+    def is_weighted(self):
+        """True if made with weights (dd_is_weighted)."""
+        return bool(_need("dd_is_weighted")(self._h))
+
+    def weight(self, i):
+        """The weight of input point i, 0 when unweighted (dd_weight)."""
+        w = c_double()
+        self._check(_need("dd_weight")(self._h, self._vid(i), byref(w)), "weight(%d)" % i)
+        return float(w.value)
+
+    def is_hidden(self, i):
+        """True if input point i is kept but hidden (dd_is_hidden)."""
+        i = int(i)
+        return 0 <= i < _U32 and bool(_need("dd_is_hidden")(self._h, i))
+
+    def hidden(self):
+        """The input indices of the kept hidden points, ascending (dd_hidden)."""
+        p, n = ctypes.POINTER(c_uint32)(), c_size_t()
+        self._check(_need("dd_hidden")(self._h, byref(p), byref(n)), "hidden()")
+        return _take(p, n.value, width=1, dtype=np.int64).reshape(-1)
+
     # ---- cell handles and files (issue 42) -------------------------------------
     def cell_end(self):
         """Live cell ids lie in [0, cell_end()) (dd_cell_end)."""
@@ -412,3 +451,4 @@ class Triangulation:
 
 
 STABLE_INDICES = 1   # DD_STABLE_INDICES
+DISCARD_HIDDEN = 2   # DD_DISCARD_HIDDEN

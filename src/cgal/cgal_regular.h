@@ -8,6 +8,12 @@
  * them (Discard_hidden_points), as chosen at creation.  Hidden points are
  * reported by input index.  No function throws; each returns 0 on success,
  * nonzero on failure.
+ *
+ * Equal points: exact duplicates given to dd_cgal_rt_build (same position,
+ * same weight) are collapsed first, the first index kept (as the Delaunay
+ * shim keeps the first of equal points); the later copies are neither
+ * vertices nor hidden.  Equal positions with different weights go to CGAL
+ * as they are: the heaviest hides the others (CGAL's insert).
  */
 #ifndef DD_CGAL_REGULAR_H
 #define DD_CGAL_REGULAR_H
@@ -33,10 +39,16 @@ void dd_cgal_rt_free(dd_cgal_rt *c);
  * indices of the kept hidden points.  Arrays malloc'd, caller frees.     */
 int dd_cgal_rt_canonical(const dd_cgal_rt *c, int32_t **tets, size_t *ntets);
 int dd_cgal_rt_hidden(const dd_cgal_rt *c, uint32_t **idx, size_t *n);
+/* The sorted input indices of the vertices (malloc'd, caller frees). */
+int dd_cgal_rt_vertices(const dd_cgal_rt *c, uint32_t **idx, size_t *n);
 
 /* Inserts (p, w) as input index `index` (the next one: the number of
  * points given so far), hinted by the cell of the last inserted vertex,
- * as Mesh_3 inserts.  It may end hidden.  0 on success.                  */
+ * as Mesh_3 inserts.  It may end hidden (or forgotten when discarding),
+ * and may hide vertices.  0 on success; 2 when (p, w) equals a vertex's
+ * weighted point exactly (CGAL returns that vertex: nothing changes, no
+ * index taken); 1 on any other failure.  An exact duplicate of a kept
+ * hidden point is hidden again, as CGAL does, under the new index.      */
 int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
 /* Number of input points given so far. */
 uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c);

@@ -2,9 +2,11 @@
  * cli.c -- the dtdel command line.  The only place that prints to the user
  * and picks exit codes: 0 success, 1 bad input, 2 bad usage.
  *
- *   dtdel gen DATASET N [--seed S]   points of a dataset as .xyz on stdout
+ *   dtdel gen DATASET N [--seed S]   points of a dataset as .xyz (.xyzw) on stdout
  *   dtdel tets FILE [--out F]        canonical DT(points of FILE), or a mesh file
+ *                                    (the regular triangulation for weights)
  *   dtdel cgal-tets FILE             the same computed by CGAL
+ *   (hidden, cgal-hidden: cli_regular.c)
  *   dtdel build-bench N [--seed S]   construction speed against CGAL
  *   dtdel variants                   the deletion strategies and CGAL rows
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
@@ -94,13 +96,21 @@ static int cmd_gen(int argc, char **argv)
     if (!name || !nstr) return usage_error("gen", "missing DATASET or N%s", "");
     if (parse_u64(nstr, &n) || n > UINT32_MAX / 4)
         return usage_error("gen", "N must be a non-negative integer, got '%s'", nstr);
-    double *xyz = NULL;
+    double *xyz = NULL, *w = NULL;
     uint32_t np = 0;
-    int rc = gen_points("gen", name, n, seed, &xyz, &np);
-    if (rc) return rc;
-    for (uint32_t i = 0; i < np; i++)
-        printf("%.17g %.17g %.17g\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    char msg[512];
+    dd_status s = dd_gen_weighted(name, (uint32_t)n, seed, &xyz, &w, &np, msg, sizeof msg);
+    if (s != DD_OK) {
+        fprintf(stderr, "dtdel gen: %s\n", msg);
+        return s == DD_ERR_PARSE ? EXIT_USAGE : EXIT_INPUT;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        printf("%.17g %.17g %.17g", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+        if (w) printf(" %.17g", w[i]);
+        printf("\n");
+    }
     dd_mfree(xyz);
+    dd_mfree(w);
     return 0;
 }
 
@@ -171,10 +181,13 @@ static int cmd_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("tets");
     const char *file = NULL, *out = NULL;
+    unsigned flags = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--out")) {
             if (++i >= argc) return usage_error("tets", "--out needs a file name%s", "");
             out = argv[i];
+        } else if (!strcmp(argv[i], "--discard-hidden")) {
+            flags |= DD_DISCARD_HIDDEN;
         } else if (!file) {
             file = argv[i];
         } else {
@@ -183,7 +196,7 @@ static int cmd_tets(int argc, char **argv)
     }
     if (!file) return usage_error("tets", "expected one FILE%s", "");
     dd_tri *t;
-    int rc = build_file("tets", file, &t);
+    int rc = build_weighted_file("tets", file, flags, &t);
     if (rc) return rc;
     if (dd_num_duplicates(t))
         fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
@@ -205,27 +218,15 @@ static int cmd_tets(int argc, char **argv)
 static int cmd_cgal_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("cgal-tets");
-    if (argc != 2) return usage_error("cgal-tets", "expected exactly one FILE%s", "");
-    double *xyz;
-    uint32_t np;
-    int rc = load_file("cgal-tets", argv[1], &xyz, &np);
-    if (rc) return rc;
-    dd_cgal *c = dd_cgal_build(xyz, np);
-    dd_mfree(xyz);
-    if (!c) {
-        fprintf(stderr, "dtdel cgal-tets: %s: CGAL cannot build a 3D triangulation of these points\n", argv[1]);
-        return EXIT_INPUT;
+    const char *file = NULL;
+    int discard = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--discard-hidden")) discard = 1;
+        else if (!file) file = argv[i];
+        else return usage_error("cgal-tets", "expected exactly one FILE%s", "");
     }
-    int32_t *tets;
-    size_t n;
-    if (dd_cgal_canonical(c, &tets, &n)) {
-        dd_cgal_free(c);
-        return EXIT_INPUT;
-    }
-    write_tets(tets, n);
-    dd_mfree(tets);
-    dd_cgal_free(c);
-    return 0;
+    if (!file) return usage_error("cgal-tets", "expected exactly one FILE%s", "");
+    return cgal_tets_file(file, discard);
 }
 
 /* ---- build-bench ---------------------------------------------------------- */
@@ -355,8 +356,12 @@ static const command commands[] = {
      "Writes N points of DATASET as .xyz (x y z per line) to stdout.\n"
      "Datasets: moment, helix, uniform, sphere, grid, cosphere, layers,\n"
      "grid-perturbed, and real models (bunny, elephant, armadillo, ...; N is\n"
-     "then a maximum, 0 = all).", cmd_gen},
-    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh]",
+     "then a maximum, 0 = all).  Weighted datasets, written as .xyzw (x y z w\n"
+     "per line): wuniform-few, wuniform, wuniform-most (few to most points\n"
+     "hidden), protecting (Mesh_3-like protecting balls on the cube's edges),\n"
+     "molecule (atoms, weight = radius^2), wgrid (integer grid and weights:\n"
+     "power ties, equal positions), wmoment, whelix.", cmd_gen},
+    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh] [--discard-hidden]",
      "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
      "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
      "ascending, -1 for the infinite vertex, lines sorted.  FILE is read by\n"
@@ -367,9 +372,20 @@ static const command commands[] = {
      "--out OUT: instead (nothing on stdout), the finite tetrahedra as a mesh\n"
      "file, by OUT's extension: .vtu (VTK XML, ParaView; point data\n"
      "'input_index') or .mesh (Medit, Gmsh); points in input index order,\n"
-     "coordinates exact (dd_write).  Readable by meshio.", cmd_tets},
-    {"cgal-tets", "cgal-tets FILE",
-     "As tets, computed by CGAL (the reference).", cmd_cgal_tets},
+     "coordinates exact (dd_write).  Readable by meshio.\n"
+     "Weighted points: .xyzw (x y z w per line), .xyzr (x y z radius, weight =\n"
+     "radius^2), .ply with a vertex property 'weight' or 'radius'; then the\n"
+     "regular triangulation (dd_create_ex), hidden points kept, or forgotten\n"
+     "with --discard-hidden (DD_DISCARD_HIDDEN).", cmd_tets},
+    {"cgal-tets", "cgal-tets FILE [--discard-hidden]",
+     "As tets, computed by CGAL (the reference; Regular_triangulation_3 for\n"
+     "weighted points).", cmd_cgal_tets},
+    {"hidden", "hidden FILE [--discard-hidden]",
+     "The input indices of the hidden points of FILE's regular triangulation\n"
+     "(weighted points, as tets reads them), sorted, one per line; none with\n"
+     "--discard-hidden (forgotten) or for a file without weights.", cmd_hidden},
+    {"cgal-hidden", "cgal-hidden FILE [--discard-hidden]",
+     "As hidden, computed by CGAL's Regular_triangulation_3.", cmd_cgal_hidden},
     {"delete", "delete FILE --vertex I[,J,...] [--variant NAME] [--stats] [--set]",
      "Deletes the input vertices I, J, ... in that order from DT(points in\n"
      "FILE) and writes the canonical form (as tets).  NAME: an engine\n"
@@ -424,6 +440,15 @@ static const command commands[] = {
      "the cube), our queue fed by dd_created_cells, CGAL's by find_conflicts\n"
      "and insert_in_hole; the same rule on both sides, so both must end in the\n"
      "same triangulation (exit 1 on a mismatch).", cmd_refine_bench},
+    {"regular-bench", "regular-bench [N] [--base N0] [--inserts M] [--reps R] [--seed S]",
+     "Regular triangulations against CGAL's Regular_triangulation_3, hidden\n"
+     "points kept: construction of N weighted points of wuniform (default\n"
+     "10^6; dd_create_ex against CGAL's range insert, R times each, default 3,\n"
+     "medians), then M new weighted points (default 50000) inserted into N0\n"
+     "(default 200000), dd_insert_weighted against CGAL's hinted insert.  The\n"
+     "cells and hidden sets are compared (after each construction and at five\n"
+     "checkpoints of the insertions); mismatches are printed, exit 1 on any.\n"
+     "While the engine refuses weights, its figures read n/a.", cmd_regular_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",

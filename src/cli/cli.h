@@ -54,6 +54,16 @@ int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np);
 /* Reads FILE and builds its DT in *t; 0, or the exit status after a
  * message on stderr naming the file and the problem.                    */
 int build_file(const char *cmd, const char *path, dd_tri **t);
+/* The points and weights of FILE (dd_read_weighted: *w NULL for a file
+ * without weights); 0, or EXIT_INPUT after a message.                   */
+int load_weighted_file(const char *cmd, const char *path, double **xyz, double **w, uint32_t *np);
+/* Reads FILE and builds its regular triangulation (its DT when it has no
+ * weights) with dd_create_ex and flags; 0, or the exit status after a
+ * message naming the file and the problem.                              */
+int build_weighted_file(const char *cmd, const char *path, unsigned flags, dd_tri **t);
+/* `cgal-tets FILE`: CGAL's canonical form on stdout (regular for weights,
+ * discard selecting Discard_hidden_points); 0 or EXIT_INPUT.            */
+int cgal_tets_file(const char *path, int discard);
 /* A canonical form on stdout, one line "a b c d" a cell. */
 void write_tets(const int32_t *tets, size_t n);
 
@@ -113,6 +123,9 @@ int cmd_move(int argc, char **argv);
 int cmd_edit_bench(int argc, char **argv);
 int cmd_query_bench(int argc, char **argv);
 int cmd_refine_bench(int argc, char **argv);
+int cmd_hidden(int argc, char **argv);
+int cmd_cgal_hidden(int argc, char **argv);
+int cmd_regular_bench(int argc, char **argv);
 
 
 #endif

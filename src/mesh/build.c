@@ -6,7 +6,13 @@
  * first tetrahedron, and the incremental loop (mesh.c inserts).
  *
  * Duplicates: an open-addressing hash on the exact coordinates (-0.0 as
- * +0.0) maps each input to the first input holding the same point.
+ * +0.0) maps each input to the first input holding the same point; with
+ * weights, the same weighted point (a point at another's position with
+ * another weight is an input of its own, for regular.c's rule).
+ *
+ * Weights (DESIGN 12): checked, stored per vertex id, and each point
+ * inserted by regular.c's rule (dd_insert_power) instead of mesh.c's;
+ * the choice is made once, for the whole loop.
  *
  * Order: each kept point draws its BRIO round from a hash of its input
  * index with a fixed seed: rounds grow by a factor of 8 (the last holds
@@ -20,6 +26,7 @@
  * point set (the perturbed DT is unique), not on this order.
  */
 #include "mesh/mesh.h"
+#include "mesh/hidden.h"
 #include "dtdel/alloc.h"
 
 #include <float.h>
@@ -43,6 +50,23 @@ static uint64_t hash_point(const double *p)
         h = dd_mix64(h ^ bits);
     }
     return h;
+}
+
+/* The weighted point's hash: the point's, and its weight's likewise. */
+static uint64_t hash_weighted(const double *p, double w)
+{
+    double x = w == 0 ? 0.0 : w;
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    return dd_mix64(hash_point(p) ^ bits);
+}
+
+/* The hash dedup keys input i by: of its point, or of its weighted point
+ * (w not NULL), where a point at another's position with another weight
+ * is another point.                                                     */
+static inline uint64_t hash_input(const double *pts, const double *w, uint32_t i)
+{
+    return w ? hash_weighted(pts + 3 * (size_t)i, w[i]) : hash_point(pts + 3 * (size_t)i);
 }
 
 /* ---- Hilbert order ------------------------------------------------------- */
@@ -188,7 +212,7 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
  * fetched ahead (the table, 16 bytes a point, is out of cache for large
  * n).  Cost O(n) expected.                                               */
 #define DEDUP_AHEAD 16
-static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first,
+static dd_status dedup(dd_tri *t, const double *pts, const double *w, uint32_t n, uint32_t *first,
                        uint32_t *ids, uint32_t *nkept)
 {
     size_t cap = 16;
@@ -199,12 +223,12 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
     size_t mask = cap - 1;
     uint32_t m = 0;
     uint64_t ahead[DEDUP_AHEAD];             /* the hashes of i .. i + 15 */
-    for (uint32_t i = 0; i < DEDUP_AHEAD && i < n; i++) ahead[i] = hash_point(pts + 3 * (size_t)i);
+    for (uint32_t i = 0; i < DEDUP_AHEAD && i < n; i++) ahead[i] = hash_input(pts, w, i);
     for (uint32_t i = 0; i < n; i++) {
         const double *p = pts + 3 * (size_t)i;
         uint64_t hp = ahead[i % DEDUP_AHEAD], tag = hp >> 32 << 32;
         if (i + DEDUP_AHEAD < n) {
-            uint64_t hn = hash_point(pts + 3 * (size_t)(i + DEDUP_AHEAD));
+            uint64_t hn = hash_input(pts, w, i + DEDUP_AHEAD);
             ahead[i % DEDUP_AHEAD] = hn;
             __builtin_prefetch(&slot[hn & mask]);
         }
@@ -218,7 +242,7 @@ static dd_status dedup(dd_tri *t, const double *pts, uint32_t n, uint32_t *first
                 break;
             }
             uint32_t id = (uint32_t)e;
-            if ((e ^ tag) >> 32 == 0 && dd_lex_cmp(pts + 3 * (size_t)id, p) == 0) {
+            if ((e ^ tag) >> 32 == 0 && dd_lex_cmp(pts + 3 * (size_t)id, p) == 0 && (!w || w[id] == w[i])) {
                 first[i] = id;
                 break;
             }
@@ -235,11 +259,16 @@ dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_
 {
     if (n < 2) return DD_ERR_TOO_FEW;
 #define PT(i) (pts + 3 * (size_t)(i))
-    const double *a = PT(ids[0]), *b = PT(ids[1]);
-    uint32_t k = 2;
+    const double *a = PT(ids[0]);
+    uint32_t k = 1;             /* weighted points may share a position */
+    while (k < n && dd_lex_cmp(a, PT(ids[k])) == 0) k++;
+    if (k == n) return DD_ERR_COLLINEAR;
+    uint32_t tmp = ids[1]; ids[1] = ids[k]; ids[k] = tmp;
+    const double *b = PT(ids[1]);
+    k = 2;
     while (k < n && dd_orient_coplanar(pr, a, b, PT(ids[k])) == 0) k++;
     if (k == n) return DD_ERR_COLLINEAR;
-    uint32_t tmp = ids[2]; ids[2] = ids[k]; ids[k] = tmp;
+    tmp = ids[2]; ids[2] = ids[k]; ids[k] = tmp;
     const double *c = PT(ids[2]);
     k = 3;
     while (k < n && dd_orient3d(pr, a, b, c, PT(ids[k])) == 0) k++;
@@ -268,8 +297,50 @@ static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
     return s;
 }
 
-dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned flags, char *msg,
-                          size_t msglen)
+/* NaN and infinities, in the coordinates, then in the weights (if any). */
+static dd_status check_input(dd_tri *t, const double *xyz, const double *w, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            double x = xyz[3 * (size_t)i + (size_t)c];
+            if (isnan(x)) return dd_fail(t, DD_ERR_NAN, "point %u: coordinate %c is NaN", i, "xyz"[c]);
+            if (isinf(x)) return dd_fail(t, DD_ERR_INFINITE, "point %u: coordinate %c is infinite", i, "xyz"[c]);
+        }
+    for (uint32_t i = 0; w && i < n; i++) {
+        if (isnan(w[i])) return dd_fail(t, DD_ERR_NAN, "point %u: the weight is NaN", i);
+        if (isinf(w[i])) return dd_fail(t, DD_ERR_INFINITE, "point %u: the weight is infinite", i);
+    }
+    return DD_OK;
+}
+
+/* A weighted t's weights (by vertex id: input ids[k] for id k) and its
+ * hidden points' state.                                                */
+static dd_status make_weighted(dd_tri *t, const double *w, const uint32_t *ids, uint32_t m)
+{
+    t->wt = dd_malloc((size_t)t->cap_v * sizeof *t->wt);
+    if (!t->wt) return DD_ERR_NOMEM;
+    for (uint32_t k = 0; k < m; k++) t->wt[k] = w[ids[k]];
+    return dd_hidden_init(t, !(t->flags & DD_DISCARD_HIDDEN_FLAG));
+}
+
+/* Vertex ids 4 .. m - 1 inserted in order: by mesh.c's rule, or, in a
+ * weighted t, by regular.c's (a duplicate cannot occur: dedup merged
+ * equal weighted points).                                              */
+static dd_status insert_all(dd_tri *t, uint32_t m)
+{
+    dd_status s = DD_OK;
+    if (!t->wt) {
+        for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
+        return s;
+    }
+    dd_fate fate;
+    uint32_t dup;
+    for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_power(t, k, t->hint, 1, &fate, &dup);
+    return s;
+}
+
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
+                         char *msg, size_t msglen)
 {
     *out = NULL;
     if (msg && msglen) msg[0] = 0;
@@ -280,24 +351,19 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
         return s;
     }
     t->flags = flags;
-    for (uint32_t i = 0; i < n; i++)
-        for (int c = 0; c < 3; c++) {
-            double x = xyz[3 * (size_t)i + (size_t)c];
-            if (isnan(x))
-                return report(t, dd_fail(t, DD_ERR_NAN, "point %u: coordinate %c is NaN", i, "xyz"[c]), msg, msglen);
-            if (isinf(x))
-                return report(t, dd_fail(t, DD_ERR_INFINITE, "point %u: coordinate %c is infinite", i, "xyz"[c]), msg, msglen);
-        }
+    if ((s = check_input(t, xyz, weights, n)) != DD_OK) return report(t, s, msg, msglen);
     uint32_t *ids = dd_malloc(2 * (size_t)(n ? n : 1) * sizeof *ids);
     if (!ids) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     uint32_t *first = ids + n;
     /* Input order -> insertion order: drop duplicates, BRIO + Hilbert, the
      * first tetrahedron in front.  Vertex id k is then input ids[k].      */
     uint32_t m = 0;
-    s = dedup(t, xyz, n, first, ids, &m);
+    s = dedup(t, xyz, weights, n, first, ids, &m);
     if (s == DD_OK) s = brio_order(xyz, ids, m);
     if (s == DD_OK) s = dd_pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
+    if (s == DD_OK && weights && make_weighted(t, weights, ids, m) != DD_OK)
+        s = dd_fail(t, DD_ERR_NOMEM, "out of memory");
     if (s != DD_OK) { dd_mfree(ids); return report(t, s, msg, msglen); }
     t->np = n;
     t->nvid = m;
@@ -312,8 +378,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned f
     dd_mfree(ids);
     uint32_t first4[4] = {0, 1, 2, 3};
     dd_make_first_cells(t, first4);
-    for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
-    if (s != DD_OK) return report(t, s, msg, msglen);
+    if ((s = insert_all(t, m)) != DD_OK) return report(t, s, msg, msglen);
     dd_shrink_cells(t);     /* the reserve above was a guess */
     if (dd_publish_all_cells(t) != DD_OK) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
     (void)dd_grid_ready(t); /* where queries start (locate.c); none: longer walks */

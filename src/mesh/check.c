@@ -8,12 +8,15 @@
  * the perturbed empty-sphere test across every facet (the opposite vertex
  * of the neighbour is not in conflict with the cell).  For a valid
  * triangulation the last test certifies the perturbed Delaunay
- * triangulation, hence CGAL's.
+ * triangulation, hence CGAL's.  A weighted triangulation is checked the
+ * same way with the power test (every facet regular), and its kept
+ * hidden points by hidden.c (each hidden in its cell).
  *
  * Read-only (dtdel.h, threads): its predicates are a context of its own,
  * and its message goes to the caller's buffer, not to t.
  */
 #include "mesh/mesh.h"
+#include "mesh/hidden.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -109,25 +112,49 @@ static dd_status check_cells(const dd_tri *t, dd_pred *pr, char *msg, size_t msg
     return DD_OK;
 }
 
+/* The perturbed empty-sphere test across every facet: the vertex
+ * across it is not in conflict with the cell.                          */
+static dd_status check_delaunay(const dd_tri *t, dd_pred *pr, char *msg, size_t msglen)
+{
+    for (uint32_t c = 0; c < t->ncell; c++) {
+        if (dd_tv(t, c)[0] == DD_DEAD) continue;
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t w = *dd_fv(t, dd_tn(t, c)[i]);
+            if (w == DD_INF) continue;
+            if (dd_cell_conflict_on(t, pr, c, dd_pt(t, w)))
+                return refute(msg, msglen, DD_ERR_INTERNAL,
+                              "facet %u of cell %u is not locally Delaunay: point %d is in conflict",
+                              i, c, dd_input_index(t, w));
+        }
+    }
+    return DD_OK;
+}
+
+/* The same with the power test (a weighted t): every facet regular.    */
+static dd_status check_regular(const dd_tri *t, dd_pred *pr, char *msg, size_t msglen)
+{
+    for (uint32_t c = 0; c < t->ncell; c++) {
+        if (dd_tv(t, c)[0] == DD_DEAD) continue;
+        for (uint32_t i = 0; i < 4; i++) {
+            uint32_t w = *dd_fv(t, dd_tn(t, c)[i]);
+            if (w == DD_INF) continue;
+            if (dd_cell_power_conflict_on(t, pr, c, dd_pt(t, w), t->wt[w]))
+                return refute(msg, msglen, DD_ERR_INTERNAL,
+                              "facet %u of cell %u is not regular: point %d is in conflict with the power sphere",
+                              i, c, dd_input_index(t, w));
+        }
+    }
+    return DD_OK;
+}
+
 dd_status dd_mesh_check(const dd_tri *t, char *msg, size_t msglen)
 {
     if (msg && msglen) msg[0] = 0;
     dd_pred pr;
     dd_pred_init(&pr);
     dd_status s = check_cells(t, &pr, msg, msglen);
-    /* Local Delaunay test across every facet. */
-    for (uint32_t c = 0; c < t->ncell && s == DD_OK; c++) {
-        if (dd_tv(t, c)[0] == DD_DEAD) continue;
-        for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
-            uint32_t f = dd_tn(t, c)[i];
-            uint32_t w = *dd_fv(t, f);
-            if (w == DD_INF) continue;
-            if (dd_cell_conflict_on(t, &pr, c, dd_pt(t, w)))
-                s = refute(msg, msglen, DD_ERR_INTERNAL,
-                           "facet %u of cell %u is not locally Delaunay: point %d is in conflict",
-                           i, c, dd_input_index(t, w));
-        }
-    }
+    if (s == DD_OK) s = t->wt ? check_regular(t, &pr, msg, msglen) : check_delaunay(t, &pr, msg, msglen);
+    if (s == DD_OK) s = dd_hidden_check(t, &pr, msg, msglen);
     dd_pred_clear(&pr);
     return s;
 }

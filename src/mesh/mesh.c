@@ -9,6 +9,7 @@
  */
 #define _DEFAULT_SOURCE 1   /* madvise advice names (huge_pages) */
 #include "mesh/mesh.h"
+#include "mesh/hidden.h"
 #include "dtdel/alloc.h"
 
 #include <sys/mman.h>
@@ -111,7 +112,8 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out)
 void dd_tri_destroy(dd_tri *t)
 {
     if (!t) return;
-    if (!t->borrowed) { dd_mfree(t->xyz); dd_mfree(t->vcell); dd_mfree(t->v2in); dd_mfree(t->in2v); }
+    if (!t->borrowed) { dd_mfree(t->xyz); dd_mfree(t->vcell); dd_mfree(t->v2in); dd_mfree(t->in2v); dd_mfree(t->wt); }
+    dd_hidden_free(t);
     dd_mfree(t->cell_block); dd_mfree(t->stamp);
     dd_vec_free(&t->stack); dd_vec_free(&t->conflict); dd_vec_free(&t->boundary);
     dd_mfree(t->ehash);
@@ -393,6 +395,19 @@ int dd_cell_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *
     return dd_points_conflict(pr, q, k, kd, p);
 }
 
+int dd_cell_power_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p, double wp)
+{
+    const uint32_t *v = dd_tv(t, c);
+    const int k = dd_index_of(t, c, DD_INF);
+    if (k < 0) {
+        const double w[5] = {t->wt[v[0]], t->wt[v[1]], t->wt[v[2]], t->wt[v[3]], wp};
+        return dd_power_perturbed(pr, dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]), dd_pt(t, v[3]), p, w) > 0;
+    }
+    const uint32_t a = v[dd_facet[k][0]], b = v[dd_facet[k][1]], d = v[dd_facet[k][2]];
+    const double w[4] = {t->wt[a], t->wt[b], t->wt[d], wp};
+    return dd_power_infinite(pr, dd_pt(t, a), dd_pt(t, b), dd_pt(t, d), p, w) > 0;
+}
+
 /* orient3d of cell c with its vertex i replaced by p (c finite). */
 static inline int orient_replaced(const dd_tri *t, dd_pred *pr, uint32_t c, int i, const double *p)
 {
@@ -576,8 +591,8 @@ static inline void prefetch_neighbours(const dd_tri *t, uint32_t c)
 /* Marks the conflict region of p reachable from c0 (stamp == ep) and lists
  * its boundary facets (4c+i, c in conflict, its neighbour not).  Cells found
  * not in conflict get stamp ep+1 so they are tested once.                  */
-__attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t, const double *p, uint32_t c0,
-                                                                   const int ahead)
+__attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t, const double *p, double wp,
+                                                                   uint32_t c0, const int ahead, const int power)
 {
     dd_mark ep = dd_new_epoch(t, 2), tested = (dd_mark)(ep + 1);
     t->stack.n = t->conflict.n = t->boundary.n = 0;
@@ -590,7 +605,8 @@ __attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t,
         for (uint32_t i = 0; i < 4 && s == DD_OK; i++) {
             uint32_t nb = dd_tn(t, c)[i] >> 2;
             if (t->stamp[nb] == ep) continue;
-            if (t->stamp[nb] != tested && dd_cell_conflict_fast(t, nb, p)) {
+            if (t->stamp[nb] != tested &&
+                (power ? dd_cell_power_conflict_fast(t, nb, p, wp) : dd_cell_conflict_fast(t, nb, p))) {
                 t->stamp[nb] = ep;
                 if (ahead) prefetch_neighbours(t, nb);
                 s = dd_vec_push(&t->stack, nb);
@@ -605,12 +621,29 @@ __attribute__((always_inline)) static inline dd_status find_conflicts(dd_tri *t,
 
 dd_status dd_find_conflicts(dd_tri *t, const double *p, uint32_t c0)
 {
-    return find_conflicts(t, p, c0, 0);
+    return find_conflicts(t, p, 0, c0, 0, 0);
 }
 
 static dd_status find_conflicts_ahead(dd_tri *t, const double *p, uint32_t c0)
 {
-    return find_conflicts(t, p, c0, 1);
+    return find_conflicts(t, p, 0, c0, 1, 0);
+}
+
+/* The regular triangulation's two copies (the power test compiled in,
+ * not chosen per cell).                                                  */
+static dd_status find_power_conflicts(dd_tri *t, const double *p, double wp, uint32_t c0)
+{
+    return find_conflicts(t, p, wp, c0, 0, 1);
+}
+
+static dd_status find_power_conflicts_ahead(dd_tri *t, const double *p, double wp, uint32_t c0)
+{
+    return find_conflicts(t, p, wp, c0, 1, 1);
+}
+
+dd_status dd_find_conflicts_power(dd_tri *t, const double *p, double wp, uint32_t c0, int ahead)
+{
+    return ahead ? find_power_conflicts_ahead(t, p, wp, c0) : find_power_conflicts(t, p, wp, c0);
 }
 
 /* Makes sure the edge hash has at least 4 * nfacets slots (load <= 3/8
@@ -818,7 +851,7 @@ dd_status dd_reserve_vertex(dd_tri *t)
     if (t->nvid == t->cap_v) {
         size_t cap = (size_t)t->cap_v * 2;
         if (dd_grow(&t->xyz, 3 * cap, sizeof *t->xyz) || dd_grow(&t->vcell, cap, sizeof *t->vcell) ||
-            dd_grow(&t->v2in, cap, sizeof *t->v2in))
+            dd_grow(&t->v2in, cap, sizeof *t->v2in) || (t->wt && dd_grow(&t->wt, cap, sizeof *t->wt)))
             return DD_ERR_NOMEM;
         t->cap_v = (uint32_t)cap;
     }

@@ -35,8 +35,14 @@
  * close in memory.  The public API speaks input indices; v2in and in2v
  * translate (a duplicate input maps to the id of its first occurrence).
  * vcell[v] is a live cell containing vertex v, or DD_NONE when v is not in
- * the triangulation (deleted, or not yet inserted).  inf_cell is a live
- * infinite cell.
+ * the triangulation (deleted, not yet inserted, or, in a regular
+ * triangulation, hidden or forgotten).  inf_cell is a live infinite cell.
+ *
+ * Weights (DESIGN 12).  A regular triangulation has wt[v], the weight of
+ * vertex id v (hidden points included); its conflict test is the power
+ * test (dd_cell_power_conflict below) where the Delaunay triangulation's
+ * is the in-sphere test, chosen once per triangulation or per edit, never
+ * per cell.  Its hidden points belong to hidden.c (hidden.h).
  */
 #ifndef DD_MESH_H
 #define DD_MESH_H
@@ -47,6 +53,7 @@
 #include "dtdel/types.h"          /* dd_status, dd_tri: not dtdel.h (below the API) */
 #include "dtdel/stats_types.h"    /* the test controls' names                */
 #include "geom/pred.h"
+#include "geom/power.h"
 
 #define DD_INF  UINT32_MAX          /* the infinite vertex                 */
 #define DD_DEAD (UINT32_MAX - 1)    /* tv(t)[0] of a dead cell             */
@@ -201,6 +208,8 @@ typedef struct dd_made {
     int lost;                 /* a note could not be kept (no memory)     */
 } dd_made;
 
+struct dd_hidset;
+
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
@@ -252,6 +261,11 @@ struct dd_tri {
 #ifdef DD_TEST_BUILD
     long testctl[DD_TEST_NCTL];   /* dd_test_control (dtdel_stats.h)     */
 #endif
+    /* a regular triangulation's (DESIGN 12), last: the Delaunay
+     * triangulation's hot fields keep their places                      */
+    double *wt;               /* weights by vertex id, else NULL: the one
+                                 place weights enter                    */
+    struct dd_hidset *hid;    /* hidden points (hidden.c): weighted only  */
 };
 
 /* Sets t->err and returns s. */
@@ -413,6 +427,29 @@ static inline int dd_cell_conflict_fast(dd_tri *t, uint32_t c, const double *p)
  * q[kd] = q's point).  q is permuted.                                    */
 int dd_points_conflict(dd_pred *pr, const double *q[4], int k, int kd, const double *p);
 
+/* The conflict test of a regular triangulation (DESIGN 12): 1 when the
+ * weighted point (p, wp) is in conflict with cell c, CGAL's
+ * Regular_triangulation_3::in_conflict_3 (the perturbed power test on a
+ * finite cell; on an infinite one, p beyond the hull facet or in its
+ * plane and inside its perturbed power circle).  t is weighted and has
+ * no dummy vertex.  _on: on the predicates pr (a read-only call's own).  */
+int dd_cell_power_conflict_on(const dd_tri *t, dd_pred *pr, uint32_t c, const double *p, double wp);
+__attribute__((always_inline)) static inline int dd_cell_power_conflict_fast(dd_tri *t, uint32_t c, const double *p,
+                                                                           double wp)
+{
+    const uint32_t *v = dd_tv(t, c);
+    if ((v[0] != DD_INF) & (v[1] != DD_INF) & (v[2] != DD_INF) & (v[3] != DD_INF)) {
+        const double *a = dd_pt(t, v[0]), *b = dd_pt(t, v[1]);
+        const double *d = dd_pt(t, v[2]), *e = dd_pt(t, v[3]);
+        const double w[5] = {t->wt[v[0]], t->wt[v[1]], t->wt[v[2]], t->wt[v[3]], wp};
+        int f = dd_power_filter(&t->pred, a, b, d, e, p, w);
+        if (f == DD_FILTER_UNSURE) f = dd_power_exact(&t->pred, a, b, d, e, p, w);
+        if (f == 0) f = dd_power_symbolic(&t->pred, a, b, d, e, p, w);
+        return f > 0;
+    }
+    return dd_cell_power_conflict_on(t, &t->pred, c, p, wp);
+}
+
 /* The scratch of one read-only call (dtdel.h: any number of them may run
  * at once on one triangulation, which they must not write): its own
  * predicate context, walk generator and step count, and a set of ids
@@ -466,6 +503,42 @@ void dd_fill_star(dd_tri *t, uint32_t v);
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
 dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
 
+/* ---- regular triangulations (regular.c; DESIGN 12) ----------------------- */
+
+/* dd_find_conflicts with the power test of the weighted point (p, wp)
+ * (t weighted); ahead: fetch the cells ahead (construction).           */
+dd_status dd_find_conflicts_power(dd_tri *t, const double *p, double wp, uint32_t c0, int ahead);
+
+/* What a weighted insertion did with its point. */
+typedef enum dd_fate {
+    DD_FATE_VERTEX,       /* a vertex now (it may have hidden others)     */
+    DD_FATE_HIDDEN,       /* kept as a hidden point                       */
+    DD_FATE_FORGOTTEN,    /* hidden, and forgotten (DD_DISCARD_HIDDEN)     */
+    DD_FATE_DUPLICATE     /* a vertex has its point and weight: nothing
+                             changed (CGAL returns that vertex)           */
+} dd_fate;
+
+/* Inserts vertex id v (its point and weight stored, vcell[v] DD_NONE)
+ * into the weighted 3D triangulation t by CGAL's rule
+ * (Triangulation_3::insert_in_conflict with Regular_triangulation_3's
+ * tester and hidden point visitor): located from cell `start`
+ * (DD_NONE: t->hint); a vertex with v's point and weight makes it a
+ * duplicate (*dup = that vertex); a point not in conflict with its cell
+ * is hidden (or forgotten); else the conflict region is replaced by v's
+ * star, the vertices it swallows become hidden points (or are
+ * forgotten), and the hidden points of the region are re-homed.  ahead:
+ * construction's prefetching search.  All or nothing: DD_ERR_NOMEM, or
+ * DD_ERR_INTERNAL from a broken mesh, change nothing.  O(conflict region
+ * + walk), plus a walk for each hidden point re-homed.                  */
+dd_status dd_insert_power(dd_tri *t, uint32_t v, uint32_t start, int ahead, dd_fate *fate, uint32_t *dup);
+
+/* As dd_nearest_from for a weighted t: a vertex of least power distance
+ * |p - x|^2 - w(x) (any one of ties), exactly, by greedy descent over the
+ * edges; where no neighbour is strictly nearer, the descent searches the
+ * vertices at the same power distance connected by edges (degenerate
+ * power cells) before it stops.                                         */
+dd_status dd_nearest_power_from(const dd_tri *t, dd_reader *r, const double *p, uint32_t c, uint32_t *nearest);
+
 /* ---- location for queries and new points (locate.c) ---------------------- */
 
 /* Makes t->grid fit the vertices now (made by dd_create, remade when
@@ -506,9 +579,10 @@ dd_status dd_build_insert(dd_tri *t, uint32_t v);
 /* The first tetrahedron v[0..3] (any orientation) and its four infinite
  * cells, in an empty t.  Room for 5 cells must be reserved.              */
 void dd_make_first_cells(dd_tri *t, uint32_t v[4]);
-/* Moves four affinely independent points of the distinct points
- * pts[3 ids[k]..], k < n, to ids[0..3]: ids[0] and ids[1], the first
- * point off their line to ids[2], the first off their plane to ids[3].
+/* Moves four affinely independent points of the points pts[3 ids[k]..],
+ * k < n (distinct, or weighted points some of which share a position),
+ * to ids[0..3]: ids[0], the first point at another position to ids[1],
+ * the first off their line to ids[2], the first off their plane to ids[3].
  * DD_ERR_TOO_FEW (n < 2), DD_ERR_COLLINEAR or DD_ERR_COPLANAR when there
  * are none, without a message.  The one search for a first simplex.     */
 dd_status dd_find_simplex(dd_pred *pr, const double *pts, uint32_t *ids, uint32_t n);
@@ -614,14 +688,19 @@ void dd_made_free(dd_made *m);
 dd_status dd_walk_const(const dd_tri *t, dd_pred *pr, uint64_t *rng, const double *p, uint32_t start,
                         uint32_t *out);
 
+/* dd_create_ex's flag DD_DISCARD_HIDDEN (dtdel.h, which this layer does
+ * not include; access.c asserts that the two agree).                    */
+#define DD_DISCARD_HIDDEN_FLAG (1u << 1)
+
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
 
-/* dd_create_ex (dtdel.h) with no weights and flags already checked (kept
- * in t->flags), but on failure msg (if not NULL) holds t->err, which may
- * be empty (out of memory): dd_create_ex names the status then.         */
-dd_status dd_mesh_create(dd_tri **out, const double *xyz, uint32_t n, unsigned flags, char *msg,
-                         size_t msglen);
+/* dd_create_ex (dtdel.h) with flags already checked (kept in t->flags),
+ * but on failure msg (if not NULL) holds t->err, which may be empty (out
+ * of memory): dd_create_ex names the status then.  weights NULL: the
+ * Delaunay triangulation; else the regular one (weights checked here). */
+dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
+                         char *msg, size_t msglen);
 
 /* dd_check_msg (dtdel.h): the validator, src/mesh/check.c; reads t
  * only, its scratch its own.                                           */

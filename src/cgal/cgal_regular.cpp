@@ -1,0 +1,321 @@
+/*
+ * cgal_regular.cpp -- CGAL's Regular_triangulation_3 behind cgal_regular.h
+ * (DESIGN sections 7 and 12): the reference for weighted points.
+ *
+ * Owns: a dd_cgal_rt handle = one regular triangulation over the Epick
+ * kernel, vertex info = input index, with either CGAL's Keep_hidden_points
+ * or its Discard_hidden_points cell base (chosen at creation); the
+ * hint for the next insertion; and a map from a weighted point (x, y, z, w)
+ * to the input indices that carry it.  CGAL stores a hidden point in a cell
+ * as a bare Weighted_point_3, without the vertex info, so the map is how a
+ * hidden point is named by its input index.
+ *
+ * Equal points:
+ *  - Exact duplicates in the input of dd_cgal_rt_build (same position and
+ *    same weight) are collapsed before CGAL sees them: the first index is
+ *    kept, the later ones are neither vertices nor hidden.  CGAL's own
+ *    range insert would give the vertex the info of whichever copy its
+ *    spatial sort puts last, an order the engine cannot reproduce.
+ *  - Equal positions with different weights all go to CGAL: the heavier
+ *    one hides the lighter ones, by CGAL's insert.
+ *  - dd_cgal_rt_insert of an exact duplicate of a vertex changes nothing
+ *    (returns 2, no index taken), as CGAL's insert returns that vertex;
+ *    an exact duplicate of a kept hidden point is hidden again, as CGAL
+ *    does, and both indices are reported hidden.
+ *
+ * Invariants:
+ *  - Every vertex's info is the input index of its weighted point, and
+ *    keys[(x, y, z, w)] lists, in increasing order, every input index
+ *    given to CGAL with that weighted point.
+ *  - hint is a live vertex: it is replaced by every insertion that makes
+ *    a vertex, and only such an insertion can remove one.
+ *  - No C++ exception crosses the extern "C" boundary; no mutable globals.
+ */
+#include "cgal_regular.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Regular_triangulation_cell_base_3.h>
+#include <CGAL/Regular_triangulation_vertex_base_3.h>
+#include <CGAL/Triangulation_cell_base_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+/* Types live in a named namespace: struct dd_cgal_rt (external linkage)
+ * holds them, so they must not have internal linkage.                    */
+namespace dd_regular {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Bare_point;
+typedef K::Weighted_point_3 Wpoint;
+typedef std::array<double, 4> Key;          /* x, y, z, w */
+
+typedef CGAL::Regular_triangulation_vertex_base_3<K> Rvb;
+typedef CGAL::Triangulation_vertex_base_with_info_3<uint32_t, K, Rvb> Vb;
+
+template <class Policy>
+using Rcb = CGAL::Regular_triangulation_cell_base_3<K, CGAL::Triangulation_cell_base_3<K>, Policy>;
+template <class Policy>
+using Rt = CGAL::Regular_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Rcb<Policy> > >;
+
+/* What the C face needs from either hidden-point policy. */
+struct Any_rt {
+    virtual ~Any_rt() {}
+    virtual bool build(const std::vector<std::pair<Wpoint, uint32_t> > &in) = 0;
+    virtual void cells(std::vector<std::array<int32_t, 4> > &out) const = 0;
+    virtual void hidden(std::vector<Key> &out) const = 0;
+    virtual void vertices(std::vector<uint32_t> &out) const = 0;
+    /* 0 done (vertex, hidden or forgotten), 2 exact duplicate of a vertex. */
+    virtual int insert(const Wpoint &p, uint32_t index) = 0;
+};
+
+inline Key key_of(const Wpoint &p)
+{
+    const Bare_point &b = p.point();
+    Key k = {{b.x(), b.y(), b.z(), p.weight()}};
+    return k;
+}
+
+template <class Policy>
+struct Rt_of : public Any_rt {
+    typedef Rt<Policy> T;
+    T rt;
+    typename T::Vertex_handle hint;
+
+    bool build(const std::vector<std::pair<Wpoint, uint32_t> > &in) override
+    {
+        rt.insert(in.begin(), in.end());
+        if (rt.dimension() != 3)
+            return false;
+        hint = rt.finite_vertices_begin();
+        return true;
+    }
+
+    void cells(std::vector<std::array<int32_t, 4> > &out) const override
+    {
+        out.reserve(rt.number_of_cells());
+        for (typename T::All_cells_iterator it = rt.all_cells_begin(); it != rt.all_cells_end(); ++it) {
+            std::array<int32_t, 4> t;
+            for (int k = 0; k < 4; k++) {
+                const typename T::Vertex_handle v = it->vertex(k);
+                t[static_cast<std::size_t>(k)] = rt.is_infinite(v) ? -1 : static_cast<int32_t>(v->info());
+            }
+            std::sort(t.begin(), t.end());
+            out.push_back(t);
+        }
+    }
+
+    void hidden(std::vector<Key> &out) const override
+    {
+        for (typename T::All_cells_iterator it = rt.all_cells_begin(); it != rt.all_cells_end(); ++it)
+            for (typename T::Cell::Point_const_iterator h = it->hidden_points_begin();
+                 h != it->hidden_points_end(); ++h)
+                out.push_back(key_of(*h));
+    }
+
+    void vertices(std::vector<uint32_t> &out) const override
+    {
+        for (typename T::Finite_vertices_iterator it = rt.finite_vertices_begin();
+             it != rt.finite_vertices_end(); ++it)
+            out.push_back(it->info());
+    }
+
+    int insert(const Wpoint &p, uint32_t index) override
+    {
+        typename T::Locate_type lt;
+        int li, lj;
+        const typename T::Cell_handle c = rt.locate(p, lt, li, lj, hint->cell());
+        /* Weighted_point_3's == compares the bare points only; CGAL's
+         * insert returns the vertex when the weights are equal too.    */
+        if (lt == T::VERTEX && c->vertex(li)->point().point() == p.point() &&
+            c->vertex(li)->point().weight() == p.weight())
+            return 2;
+        const typename T::Vertex_handle v = rt.insert(p, lt, c, li, lj);
+        if (v != typename T::Vertex_handle()) {
+            v->info() = index;
+            hint = v;
+        }
+        return 0;
+    }
+};
+
+} // namespace dd_regular
+
+using namespace dd_regular;
+
+struct dd_cgal_rt {
+    std::unique_ptr<Any_rt> rt;
+    std::map<Key, std::vector<uint32_t> > keys;   /* weighted point -> indices */
+    uint32_t ninput;                                /* indices given so far    */
+};
+
+namespace {
+
+bool finite_point(const double *p, double w)
+{
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(w);
+}
+
+Wpoint weighted_point(const double *p, double w)
+{
+    return Wpoint(Bare_point(p[0], p[1], p[2]), w);
+}
+
+/* Hands out a sorted index list as a malloc'd array (NULL when empty). */
+int emit_indices(std::vector<uint32_t> &v, uint32_t **idx, size_t *n)
+{
+    std::sort(v.begin(), v.end());
+    if (!v.empty()) {
+        *idx = static_cast<uint32_t *>(std::malloc(v.size() * sizeof(uint32_t)));
+        if (*idx == NULL)
+            return 1;
+        std::memcpy(*idx, v.data(), v.size() * sizeof(uint32_t));
+    }
+    *n = v.size();
+    return 0;
+}
+
+} // namespace
+
+extern "C" {
+
+dd_cgal_rt *dd_cgal_rt_build(const double *xyz, const double *w, uint32_t n, int discard_hidden)
+{
+    if (xyz == NULL || w == NULL || n < 4 || n == UINT32_MAX)
+        return NULL;
+    try {
+        for (uint32_t i = 0; i < n; i++)
+            if (!finite_point(xyz + 3 * static_cast<std::size_t>(i), w[i]))
+                return NULL;
+        std::unique_ptr<dd_cgal_rt> c(new dd_cgal_rt);
+        if (discard_hidden)
+            c->rt.reset(new Rt_of<CGAL::Discard_hidden_points>);
+        else
+            c->rt.reset(new Rt_of<CGAL::Keep_hidden_points>);
+        c->ninput = n;
+        std::vector<std::pair<Wpoint, uint32_t> > input;
+        input.reserve(n);
+        for (uint32_t i = 0; i < n; i++) {
+            const double *p = xyz + 3 * static_cast<std::size_t>(i);
+            const Key k = {{p[0], p[1], p[2], w[i]}};
+            std::vector<uint32_t> &idx = c->keys[k];
+            if (!idx.empty())
+                continue;                 /* an exact duplicate: the first stays */
+            idx.push_back(i);
+            input.push_back(std::make_pair(weighted_point(p, w[i]), i));
+        }
+        if (!c->rt->build(input))
+            return NULL;
+        return c.release();
+    } catch (...) {
+        return NULL;
+    }
+}
+
+void dd_cgal_rt_free(dd_cgal_rt *c)
+{
+    try {
+        delete c;
+    } catch (...) {
+    }
+}
+
+int dd_cgal_rt_canonical(const dd_cgal_rt *c, int32_t **tets, size_t *ntets)
+{
+    if (c == NULL || tets == NULL || ntets == NULL)
+        return 1;
+    *tets = NULL;
+    *ntets = 0;
+    try {
+        std::vector<std::array<int32_t, 4> > all;
+        c->rt->cells(all);
+        std::sort(all.begin(), all.end());
+        int32_t *out = static_cast<int32_t *>(std::malloc(4 * sizeof(int32_t) * (all.empty() ? 1 : all.size())));
+        if (out == NULL)
+            return 1;
+        for (std::size_t i = 0; i < all.size(); i++)
+            std::memcpy(out + 4 * i, all[i].data(), 4 * sizeof(int32_t));
+        *tets = out;
+        *ntets = all.size();
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgal_rt_hidden(const dd_cgal_rt *c, uint32_t **idx, size_t *n)
+{
+    if (c == NULL || idx == NULL || n == NULL)
+        return 1;
+    *idx = NULL;
+    *n = 0;
+    try {
+        std::vector<Key> hk;
+        c->rt->hidden(hk);
+        std::sort(hk.begin(), hk.end());
+        hk.erase(std::unique(hk.begin(), hk.end()), hk.end());
+        std::vector<uint32_t> out;
+        for (std::size_t i = 0; i < hk.size(); i++) {
+            std::map<Key, std::vector<uint32_t> >::const_iterator it = c->keys.find(hk[i]);
+            if (it == c->keys.end())
+                return 1;                 /* a hidden point nobody gave */
+            out.insert(out.end(), it->second.begin(), it->second.end());
+        }
+        return emit_indices(out, idx, n);
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgal_rt_vertices(const dd_cgal_rt *c, uint32_t **idx, size_t *n)
+{
+    if (c == NULL || idx == NULL || n == NULL)
+        return 1;
+    *idx = NULL;
+    *n = 0;
+    try {
+        std::vector<uint32_t> out;
+        c->rt->vertices(out);
+        return emit_indices(out, idx, n);
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index)
+{
+    if (c == NULL || p == NULL || index != c->ninput || index == UINT32_MAX || !finite_point(p, w))
+        return 1;
+    try {
+        const Key k = {{p[0], p[1], p[2], w}};
+        std::vector<uint32_t> &idx = c->keys[k];
+        idx.reserve(idx.size() + 1);      /* nothing can throw after insert */
+        const int r = c->rt->insert(weighted_point(p, w), index);
+        if (r == 0) {
+            idx.push_back(index);
+            c->ninput++;
+        } else if (idx.empty()) {
+            c->keys.erase(k);
+        }
+        return r;
+    } catch (...) {
+        return 1;
+    }
+}
+
+uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c)
+{
+    return c == NULL ? 0 : c->ninput;
+}
+
+} // extern "C"
