@@ -68,7 +68,8 @@ size_t dd_memory_bytes(const dd_tri *t)
 {
     /* cells: records (plus the alignment slack), stamp; vertices: xyz,
      * vcell, v2in; inputs: in2v; insertion scratch: the three vectors,
-     * the edge hash and table; the location grid and the reusable ids   */
+     * the edge hash and table; the location grid and the reusable ids;
+     * the predicates' GMP numbers                                        */
     return (size_t)t->cap_c * (DD_CELL_WORDS * sizeof(uint32_t) + sizeof(dd_mark)) + (t->cell_block ? 64 : 0)
          + (size_t)t->cap_v * (3 * sizeof(double) + 2 * sizeof(uint32_t))
          + (size_t)t->cap_in * sizeof(uint32_t)
@@ -78,7 +79,8 @@ size_t dd_memory_bytes(const dd_tri *t)
          + (size_t)t->ehash_cap * sizeof(dd_edge_slot)
          + (t->etab ? DD_STAR_MAXV * DD_STAR_MAXV * sizeof(uint32_t) : 0)
          + t->made.cap * sizeof(int64_t)
-         + (t->wt ? (size_t)t->cap_v * sizeof(double) : 0) + dd_hidden_bytes(t);
+         + (t->wt ? (size_t)t->cap_v * sizeof(double) : 0) + dd_hidden_bytes(t)
+         + (t->pred.limbs ? (size_t)DD_PRED_SCRATCH * DD_PRED_LIMBS * sizeof(mp_limb_t) : 0);
 }
 
 dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets)

@@ -289,11 +289,14 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
         done--;                         /* the one that failed is not done */
         char why[sizeof t->err];
         memcpy(why, t->err, sizeof why);
-        while (done > 0) {
+        int undone = 1;
+        while (done > 0 && undone) {
             uint32_t v = ids[--done];
-            if (dd_insert_vertex(t, v) != DD_OK) break;
+            undone = dd_insert_vertex(t, v) == DD_OK;
         }
         memcpy(t->err, why, sizeof why);
+        if (!undone)   /* a re-insertion failed too: not as it was (dtdel.h, NOMEM) */
+            s = dd_fail(t, DD_ERR_INTERNAL, "deleting the set failed (%s) and could not be undone", why);
     }
     for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
     if (s == DD_OK) (void)dd_grid_ready(t);

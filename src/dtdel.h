@@ -54,6 +54,25 @@
  *  - dd_errmsg(t) is the message of the last call on t that failed; a
  *    later success leaves it.  Only calls taking a non-const dd_tri *
  *    write it; read-only calls (const dd_tri *) report by status alone.
+ *  - Memory: a call that allocates may fail with DD_ERR_NOMEM, and then
+ *    leaves the triangulation as it was (dd_create, dd_create_ex: *out
+ *    NULL, nothing held).  The exact predicates allocate nothing during
+ *    an operation: their GMP numbers are sized when the triangulation is
+ *    made (dd_create can fail with DD_ERR_NOMEM for them) for the
+ *    largest any finite doubles need, and a read-only call's sit on its
+ *    stack (about 100 KB, only while such a test runs); so running out
+ *    of memory is reported, never an abort in GMP.  What remains: an
+ *    edit that succeeded may have lost dd_created_cells' list (that call
+ *    then answers DD_ERR_NOMEM) or not remade its location grid
+ *    (queries walk longer); the counts and yes/no answers that allocate
+ *    (dd_degree, dd_neighbors, dd_incident_cells, dd_on_hull) cannot
+ *    report it and answer 0;
+ *    and an edit undone by a compensating edit (dd_delete_set failing in
+ *    its one-at-a-time course, dd_move's temporary insertion) needs
+ *    memory for the undo: if that fails too (memory still short), the
+ *    call answers DD_ERR_INTERNAL and the triangulation is not as it
+ *    was.  tests/test_fault.c fails every allocation of every call in
+ *    turn.
  *  - Exported names start with dd_; nothing here keeps global state.
  *  - Diagnostics for benchmarks and tests (what a deletion did, predicate
  *    counters, test-build controls) are in dtdel_stats.h, not here.

@@ -22,11 +22,15 @@
 /* The registry (variants/registry.c): the first entry is the default. */
 extern const dd_variant *const dd_variant_table[];
 
-/* Gives vertex w's cells, point and location to v (w's id is free after). */
-static void rename_vertex(dd_tri *t, uint32_t w, uint32_t v, dd_vec *star)
+/* Gives vertex w's cells, point and location to v (w's id is free after):
+ * the cells of star, or with star NULL every live cell, O(cells) but
+ * without memory (the list of w's star could not be made).              */
+static void rename_vertex(dd_tri *t, uint32_t w, uint32_t v, const dd_vec *star)
 {
-    for (size_t k = 0; k < star->n; k++) {
-        uint32_t *tv = dd_tv(t, star->a[k]);
+    const size_t n = star ? star->n : t->ncell;
+    for (size_t k = 0; k < n; k++) {
+        uint32_t *tv = dd_tv(t, star ? star->a[k] : (uint32_t)k);
+        if (tv[0] == DD_DEAD) continue;
         for (int i = 0; i < 4; i++)
             if (tv[i] == w) tv[i] = v;
     }
@@ -63,8 +67,8 @@ static dd_status move_by_reinsertion(dd_tri *t, uint32_t v, const double p[3])
         if (s == DD_ERR_DIMENSION) return dd_fail(t, s, "moving point %u would leave only coplanar points", t->v2in[v]);
         return s;
     }
-    if ((s = dd_star_cells(t, w, &t->conflict)) != DD_OK) return dd_fail(t, DD_ERR_INTERNAL, "out of memory");
-    rename_vertex(t, w, v, &t->conflict);
+    /* v is gone now: the move must finish, memory or not */
+    rename_vertex(t, w, v, dd_star_cells(t, w, &t->conflict) == DD_OK ? &t->conflict : NULL);
     t->nvid--;
     t->moves_redone++;
     return DD_OK;

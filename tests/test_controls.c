@@ -40,7 +40,9 @@ int main(void)
         dd_test_ctl ctl = (dd_test_ctl)c;
         snprintf(name, sizeof name, "controls/%d/returns-previous", c);
         /* values a control may take (a deletion number, a course, a
-         * switch); none acts here: nothing is deleted                   */
+         * switch); none acts here: nothing is deleted or allocated.  The
+         * allocation count starts at what dd_create left: zeroed first. */
+        if (ctl == DD_TEST_ALLOC_COUNT) dd_test_control(t, ctl, 0);
         tl_check(&st, returns_previous(t, ctl, 0, 1, 2, why, sizeof why), name, "%s", why);
     }
     /* the process-wide control without a triangulation, and after a
@@ -55,6 +57,20 @@ int main(void)
     own = own && dd_test_control(u, DD_TEST_SCALAR, 0) == 0 && dd_test_control(t, DD_TEST_SCALAR, 0) == 3;
     tl_check(&st, own, "controls/per-triangulation", "a control set on one triangulation shows on another");
     dd_free(u);
+    /* the allocation controls are process-wide: no triangulation needed,
+     * and a refused allocation is one of those counted                  */
+    dd_test_control(NULL, DD_TEST_ALLOC_COUNT, 0);
+    dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 3);
+    int32_t *tets = NULL;
+    size_t n = 0;
+    dd_status s1 = dd_canonical(t, &tets, &n);   /* two allocations: not refused */
+    free(tets);
+    long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 1);   /* 1 left; now the next */
+    dd_status s2 = dd_canonical(t, &tets, &n);   /* refused at its first */
+    long after = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0), count = dd_test_control(NULL, DD_TEST_ALLOC_COUNT, 0);
+    tl_check(&st, s1 == DD_OK && left == 1 && s2 == DD_ERR_NOMEM && after == 0 && count == 3, "controls/alloc-fail",
+             "statuses %s %s, left %ld then %ld, count %ld", dd_status_name(s1), dd_status_name(s2), left, after,
+             count);
     dd_free(t);
 #else
     tl_check(&st, 1, "controls/release-has-none", "%s", "");

@@ -523,12 +523,94 @@ static void equal_positions_case(tl_state *st)
     if (ok && !(dd_insert_weighted(t, q, 0.5, &i3) == DD_OK && i3 == s.n + 1 && dd_is_vertex(t, i3) &&
                 !dd_is_vertex(t, v) && dd_is_hidden(t, v) && dd_is_hidden(t, i2)))
         ok = 0, snprintf(why, sizeof why, "the heavier point did not swallow the vertex");
+    /* the same on the hull: corner node 0 (an extreme point) */
+    const double *q0 = s.p;
+    uint32_t j1 = 0, j2 = 0;
+    if (ok && !(dd_insert_weighted(t, q0, 0.1, &j1) == DD_OK && dd_is_hidden(t, j1) && dd_is_vertex(t, 0) &&
+                dd_on_hull(t, 0)))
+        ok = 0, snprintf(why, sizeof why, "a lighter point at a hull vertex is not hidden");
+    if (ok && !(dd_insert_weighted(t, q0, 1.0, &j2) == DD_OK && dd_is_vertex(t, j2) && dd_on_hull(t, j2) &&
+                dd_is_hidden(t, 0) && dd_is_hidden(t, j1)))
+        ok = 0, snprintf(why, sizeof why, "a heavier point at a hull vertex did not take its place");
     if (ok) ok = checked(t, why, sizeof why);
+    if (ok) {       /* keep mode is order-free: CGAL's build of every point given */
+        const double extra[4][4] = {{q[0], q[1], q[2], 0.1}, {q[0], q[1], q[2], 0.5}, {q0[0], q0[1], q0[2], 0.1},
+                                    {q0[0], q0[1], q0[2], 1.0}};
+        for (int k = 0; k < 4; k++) ws_add(&s, extra[k][0], extra[k][1], extra[k][2], extra[k][3]);
+        dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
+        ok = c && same_as_cgal(t, c, why, sizeof why);
+        dd_cgal_rt_free(c);
+    }
     tl_check(st, ok, "insert/equal-positions", "%s", why);
     free(before.cells), free(before.hid);
     dd_free(t);
     ws_free(&s);
 }
+
+/* ---- allocation failures (issue 46) ------------------------------------------ */
+
+#ifdef DD_TEST_BUILD
+/* The allocations op makes (process-wide count). */
+static long count_allocs(void) { return dd_test_control(NULL, DD_TEST_ALLOC_COUNT, 0); }
+
+/* Each allocation of dd_create_ex (both modes) and of dd_insert_weighted
+ * (a point hidden on arrival, one that swallows vertices and re-homes
+ * hidden points, one outside the hull) refused in turn: DD_ERR_NOMEM,
+ * nothing changed, dd_check passes; ASan sees no leak.  Then the same
+ * call succeeds.                                                        */
+static void fault_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 80 : 200, 3, 77);
+    char msg[256], why[256] = "";
+    long survived = 0;
+    int ok = 1;
+    for (int keep = 1; keep >= 0 && ok; keep--) {
+        dd_tri *t = NULL;
+        count_allocs();
+        ok = dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+        const long n = count_allocs();
+        dd_free(t);
+        for (long k = 1; k <= n && ok; k++) {
+            t = NULL;
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+            const dd_status r = dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg);
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+            if (r == DD_ERR_NOMEM && !t) survived++;
+            else if (r == DD_OK) ok = checked(t, why, sizeof why);     /* a way without it */
+            else ok = 0, snprintf(why, sizeof why, "create, allocation %ld refused: %s", k, dd_status_name(r));
+            dd_free(t);
+        }
+    }
+    const double pts[3][4] = {{0.5, 0.5, 0.5, 0.0}, {0.4, 0.6, 0.5, 0.2}, {1.5, 0.5, 0.5, 0.0}};
+    for (int q = 0; q < 3 && ok; q++) {
+        dd_tri *t = NULL;
+        uint32_t idx;
+        dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+        count_allocs();
+        ok = dd_insert_weighted(t, pts[q], pts[q][3], &idx) == DD_OK;
+        const long n = count_allocs();
+        dd_free(t);
+        for (long k = 1; k <= n && ok; k++) {
+            dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+            shot before = take_shot(t);
+            dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+            const dd_status r = dd_insert_weighted(t, pts[q], pts[q][3], &idx);
+            const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+            if (left > 0) ok = 0, snprintf(why, sizeof why, "insert %d: allocation %ld never came", q, k);
+            else if (r == DD_ERR_NOMEM && unchanged(t, &before) && checked(t, why, sizeof why)) survived++;
+            else if (r != DD_OK) ok = 0, snprintf(why, sizeof why, "insert %d, allocation %ld: %s", q, k, dd_errmsg(t));
+            if (ok && dd_insert_weighted(t, pts[q], pts[q][3], &idx) != DD_OK)
+                ok = 0, snprintf(why, sizeof why, "insert %d fails after allocation %ld was refused", q, k);
+            if (ok) ok = checked(t, why, sizeof why);
+            free(before.cells), free(before.hid);
+            dd_free(t);
+        }
+    }
+    tl_check(st, ok && survived > 0, "fault/weighted", "%s (%ld survived)", why, survived);
+    fprintf(stderr, "  fault/weighted: %ld injected failures survived\n", survived);
+    ws_free(&s);
+}
+#endif
 
 int main(int argc, char **argv)
 {
@@ -575,5 +657,8 @@ int main(int argc, char **argv)
     ws_free(&s);
     bad_create_case(&st);
     refusals_case(&st);
+#ifdef DD_TEST_BUILD
+    fault_case(&st);
+#endif
     return tl_finish(&st);
 }

@@ -213,8 +213,6 @@ struct dd_hidset;
 struct dd_tri {
     /* vertices, indexed by vertex id */
     double *xyz;
-    double *wt;               /* weights (a regular triangulation), else
-                                 NULL: the one place weights enter      */
     uint32_t *vcell;
     uint32_t *v2in;           /* vertex id -> input index                */
     uint32_t nvid, cap_v;     /* vertex ids in use, capacity             */
@@ -243,7 +241,6 @@ struct dd_tri {
     uint64_t moves_kept, moves_flipped, moves_redone;   /* dd_move's courses */
 
     struct dd_del *del;       /* deletion context (delete.c), lazily made */
-    struct dd_hidset *hid;    /* hidden points (hidden.c): weighted only  */
     dd_grid grid;             /* location starts (locate.c), kept by edits */
     dd_vec flip[5];           /* dd_move_by_flips' scratch (flip.c)       */
     dd_vec vfree;             /* ids of deleted vertices, for dd_insert to
@@ -264,6 +261,11 @@ struct dd_tri {
 #ifdef DD_TEST_BUILD
     long testctl[DD_TEST_NCTL];   /* dd_test_control (dtdel_stats.h)     */
 #endif
+    /* a regular triangulation's (DESIGN 12), last: the Delaunay
+     * triangulation's hot fields keep their places                      */
+    double *wt;               /* weights by vertex id, else NULL: the one
+                                 place weights enter                    */
+    struct dd_hidset *hid;    /* hidden points (hidden.c): weighted only  */
 };
 
 /* Sets t->err and returns s. */
