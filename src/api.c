@@ -100,7 +100,6 @@ static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
     uint32_t q = 0;
-    if (t->wt) return refuse_weighted(t, "deletion");
     dd_status s = resolve_variant(t, variant, &var);
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);

@@ -12,7 +12,8 @@
  *    dd_insert (weight 0) on a weighted triangulation;
  *  - zero weights give dd_create's Delaunay triangulation;
  *  - bad weights and coordinates refused with their status, nothing
- *    changed; deletion, set deletion, reinsert and move refused with
+ *    changed; deletion by a strategy without a weighted fill (test_wdelete.c
+ *    tests the others), set deletion, reinsert and move refused with
  *    DD_ERR_UNSUPPORTED, nothing changed;
  *  - the read calls (dd_weight, dd_is_hidden, dd_hidden, dd_is_vertex,
  *    dd_nearest_vertex by power distance) against brute force;
@@ -464,7 +465,7 @@ static void refusals_case(tl_state *st)
     const double p[3] = {0.5, 0.5, 0.5}, nanp[3] = {0.5, NAN, 0.5}, infp[3] = {INFINITY, 0.5, 0.5};
     uint32_t set[2] = {v, v + 1 < s.n ? v + 1 : 0}, idx = 12345;
     struct { const char *name; dd_status got, want; } cases[] = {
-        {"delete", dd_delete(t, v), DD_ERR_UNSUPPORTED},
+        {"delete-grr-edge", dd_delete_with(t, v, "grr-edge"), DD_ERR_UNSUPPORTED},
         {"delete-with", dd_delete_with(t, v, "gift-wrap"), DD_ERR_UNSUPPORTED},
         {"delete-set", dd_delete_set(t, set, 2), DD_ERR_UNSUPPORTED},
         {"delete-set-with", dd_delete_set_with(t, set, 1, NULL), DD_ERR_UNSUPPORTED},

@@ -13,6 +13,9 @@
  *     (fewer cells built than grr-neighbor's random one of degree <= 7
  *     on the moment curve).  The paper's expected bounds are not claimed
  *     for this order; the result is the same, the perturbed DT is unique.
+ * On a weighted triangulation it takes sew-full's fill (the full regular
+ * triangulation of the neighbours and the star's hidden points), the
+ * one weighted fill so far.
  * The crossovers are measured by `make bench` (results/summary.md: the
  * gift-wrap, grr-neighbor and auto rows by degree), or on the curves
  * alone by `build/dtdel bench --dataset moment` (or helix); the cells
@@ -68,6 +71,7 @@ static dd_status auto_fill(dd_del *d)
 
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first",
+    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first; on weighted points sew-full's regular fill",
     auto_fill,
+    dd_full_fill_power,
 };

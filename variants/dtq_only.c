@@ -38,4 +38,5 @@ const dd_variant dd_variant_dtq_only = {
     "dtq-only",
     "conflict DT of the neighbours in random order, no guide (scan location)",
     dtq_only_fill,
+    NULL,                  /* weighted points: refused (delete.h) */
 };

@@ -19,4 +19,5 @@ const dd_variant dd_variant_gift_wrap = {
     "gift-wrap",
     "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it)",
     gift_wrap_fill,
+    NULL,                  /* weighted points: refused (delete.h) */
 };

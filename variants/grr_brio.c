@@ -183,4 +183,5 @@ const dd_variant dd_variant_grr_brio = {
     "grr-brio",
     "GRR with BRIO rounds (p = 1/2), guides along a degree-3 spanning tree per round",
     brio_fill,
+    NULL,                  /* weighted points: refused (delete.h) */
 };

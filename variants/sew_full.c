@@ -24,4 +24,5 @@ const dd_variant dd_variant_sew_full = {
     "sew-full",
     "full DT of the neighbours in random order, then sew (our CGAL-rnd)",
     sew_full_fill,
+    dd_full_fill_power,
 };

@@ -319,3 +319,64 @@ uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c)
 }
 
 } // extern "C"
+
+/* ---- removal (issue 44) ---------------------------------------------------- */
+
+namespace {
+
+/* CGAL's remove() of the vertex whose info is `index` in r: 0 done, 1 no
+ * such vertex (a hidden point, a deleted or an unknown index), 3 when CGAL
+ * refuses (the vertices left would span less than 3D).  The hint moves
+ * off the removed vertex.  CGAL makes a new vertex for each hidden point
+ * that comes back, its info not set (a hidden point is a bare weighted
+ * point): every vertex's info is set again from keys, the index a vertex
+ * had kept when keys lists it for that weighted point.  O(n): a
+ * reference, not a bench.                                                */
+template <class Policy>
+int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index)
+{
+    typedef typename Rt_of<Policy>::T T;
+    typename T::Vertex_handle v;
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it)
+        if (it->info() == index) {
+            v = it;
+            break;
+        }
+    if (v == typename T::Vertex_handle())
+        return 1;
+    if (r->rt.number_of_vertices() <= 4)
+        return 3;
+    std::vector<uint32_t> &gone = keys[key_of(v->point())];
+    gone.erase(std::remove(gone.begin(), gone.end(), index), gone.end());
+    r->rt.remove(v);
+    if (r->rt.dimension() != 3)
+        return 3;
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it) {
+        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key_of(it->point()));
+        if (k == keys.end() || k->second.empty())
+            return 1;                     /* a vertex nobody gave */
+        if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
+            it->info() = k->second.front();
+    }
+    r->hint = r->rt.finite_vertices_begin();
+    return 0;
+}
+
+} // namespace
+
+extern "C" int dd_cgal_rt_remove(dd_cgal_rt *c, uint32_t input_index)
+{
+    if (c == NULL)
+        return 1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return remove_index(k, c->keys, input_index);
+        if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
+            return remove_index(d, c->keys, input_index);
+        return 1;
+    } catch (...) {
+        return 1;
+    }
+}

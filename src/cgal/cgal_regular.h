@@ -53,6 +53,16 @@ int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index
 /* Number of input points given so far. */
 uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c);
 
+/* CGAL's Regular_triangulation_3::remove() of the vertex of input index
+ * input_index (issue 44): the hidden points of its star that are no
+ * longer hidden become vertices again (Keep_hidden_points), the others
+ * stay hidden; read the result with dd_cgal_rt_canonical and
+ * dd_cgal_rt_hidden.  0 done; 1 when input_index is no vertex (hidden,
+ * removed, unknown) or on failure; 3 when the vertices left would span
+ * less than 3D (then the triangulation is no longer usable).  Finding
+ * the vertex is O(n).                                                   */
+int dd_cgal_rt_remove(dd_cgal_rt *c, uint32_t input_index);
+
 #ifdef __cplusplus
 }
 #endif

@@ -12,6 +12,7 @@
  * perturbed DT; d->qdt holds whatever the last strategy left (garbage).
  */
 #include "delete/delete.h"
+#include "mesh/hidden.h"
 #include "dtdel/alloc.h"
 
 #include <math.h>
@@ -26,6 +27,7 @@ void dd_del_free(dd_del *d)
     if (!d) return;
     dd_vec_free(&d->star); dd_vec_free(&d->nbr); dd_vec_free(&d->fill);
     dd_vec_free(&d->order); dd_vec_free(&d->sew_out); dd_vec_free(&d->cellmap);
+    dd_vec_free(&d->hpts);
     dd_trihash_free(&d->lhash);
     dd_mfree(d->vmark);
     dd_mfree(d->qdt_vcell);
@@ -54,6 +56,7 @@ static dd_status get_ctx(dd_tri *t, dd_del **out)
     d->qdt->xyz = t->xyz;
     d->qdt->v2in = t->v2in;
     d->qdt->vcell = d->qdt_vcell;
+    d->qdt->wt = t->wt;
     *out = d;
     return DD_OK;
 }
@@ -101,6 +104,16 @@ void dd_phase_end(dd_del *d, int phase)
 
 /* ---- step 1: star, link, neighbours -------------------------------------- */
 
+/* A fresh epoch of d->vmark. */
+static uint32_t new_vepoch(dd_del *d)
+{
+    if (++d->vepoch == 0) {
+        memset(d->vmark, 0, (size_t)d->vmark_cap * sizeof *d->vmark);
+        d->vepoch = 1;
+    }
+    return d->vepoch;
+}
+
 /* Step 1: the star of q (d->star) by a search over the cells through q,
  * marked with a fresh epoch; q's finite neighbours (d->nbr, marked in
  * d->vmark); the infinite cells of the star, q's degree, whether it is
@@ -111,11 +124,7 @@ static dd_status collect_star(dd_del *d)
     dd_tri *t = d->t;
     uint32_t q = d->q;
     dd_mark ep = dd_new_epoch(t, 1);
-    if (++d->vepoch == 0) {
-        memset(d->vmark, 0, (size_t)d->vmark_cap * sizeof *d->vmark);
-        d->vepoch = 1;
-    }
-    uint32_t vep = d->vepoch;
+    uint32_t vep = new_vepoch(d);
     d->star.n = d->nbr.n = 0;
     d->star_inf = 0;
     uint32_t c0 = t->vcell[q];
@@ -343,10 +352,101 @@ dd_status dd_del_resolve(dd_tri *t, uint32_t input, uint32_t *v)
     return DD_OK;
 }
 
-/* DELETEVERTEX(q): step 1 (collect_star), step 2 (the strategy, or the
- * forced fill), step 3 (sew).  Steps 1-2 leave the mesh as it was.     */
+/* ---- weighted points (DESIGN 12, issue 44) ------------------------------ */
+
+/* Step 1 on a weighted t: takes the hidden points of the star from
+ * hidden.c into d->hpts (none when they are forgotten).  They are sites
+ * of the fill as q's neighbours are.  On failure nothing is taken.     */
+static dd_status take_hidden(dd_del *d)
+{
+    dd_tri *t = d->t;
+    const uint32_t *pts;
+    size_t np;
+    dd_status s = dd_hidden_take(t, d->star.a, d->star.n, &pts, &np);
+    if (s != DD_OK) return s;
+    if ((s = dd_vec_room(&d->hpts, np)) != DD_OK) {
+        (void)dd_hidden_settle(t);              /* back where they were */
+        return s;
+    }
+    if (np) memcpy(d->hpts.a, pts, np * sizeof *pts);
+    d->hpts.n = np;
+    return DD_OK;
+}
+
+/* Before the sew on a weighted t: moves the points of d->hpts that are
+ * vertices of the fill (no longer hidden) to its front, returning how
+ * many, and makes room for the others in the cells the sew makes.      */
+static dd_status sort_released(dd_del *d, size_t *nrel)
+{
+    dd_tri *t = d->t, *x = d->qdt;
+    const uint32_t ep = new_vepoch(d);
+    for (size_t k = 0; k < d->fill.n; k++)
+        for (uint32_t j = 0; j < 4; j++) {
+            const uint32_t w = dd_tv(x, d->fill.a[k])[j];
+            if (w != DD_INF) d->vmark[w] = ep;
+        }
+    size_t m = 0;
+    for (size_t k = 0; k < d->hpts.n; k++)
+        if (d->vmark[d->hpts.a[k]] == ep) {
+            const uint32_t v = d->hpts.a[k];
+            d->hpts.a[k] = d->hpts.a[m];
+            d->hpts.a[m++] = v;
+        }
+    *nrel = m;
+    return dd_hidden_room(t, (size_t)t->ncell + d->fill.n);
+}
+
+/* After the sew on a weighted t (s its status): the released points are
+ * vertices now, the others re-homed in the new cells; after a failure
+ * (the mesh unchanged) every point taken goes back.                     */
+static dd_status settle_hidden(dd_del *d, dd_status s, size_t nrel)
+{
+    dd_tri *t = d->t;
+    if (s == DD_OK)
+        for (size_t k = 0; k < nrel; k++) {
+            dd_hidden_release(t, d->hpts.a[k]);
+            t->nvert++;
+        }
+    d->hpts.n = 0;
+    const dd_status r = dd_hidden_settle(t);
+    if (s == DD_OK && r != DD_OK)
+        return dd_fail(t, r, "deleting point %u: re-homing hidden points did not terminate", t->v2in[d->q]);
+    return s;
+}
+
+/* ---- DELETEVERTEX -------------------------------------------------------- */
+
+/* Step 2: four independent sites and the strategy's fill, or the forced
+ * coplanar-hull fill.                                                   */
+static dd_status fill_step(dd_del *d, dd_status (*fill)(dd_del *))
+{
+    dd_tri *t = d->t;
+    if (dd_del_pick_base(d, d->order.a, d->order.n) == DD_OK) return fill(d);
+    /* Coplanar sites: q is on the hull.  If every finite cell holds q,
+     * every other point is a neighbour: all coplanar.                   */
+    const uint32_t q = d->q;
+    if (d->star.n - d->star_inf == t->nfinite && !d->hpts.n)
+        return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points", t->v2in[q]);
+    if (!d->on_hull) return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
+    if (d->hpts.n)
+        return dd_fail(t, DD_ERR_UNSUPPORTED,
+                       "deleting point %u: its neighbours and the hidden points of its star are coplanar "
+                       "(not supported yet)", t->v2in[q]);
+    d->forced_fill = 1;
+    return fill_coplanar_hull(d);
+}
+
+/* DELETEVERTEX(q): step 1 (collect_star; on a weighted t, the star's
+ * hidden points too), step 2 (fill_step), step 3 (sew; then the hidden
+ * points released or re-homed).  Steps 1-2 leave the mesh as it was;
+ * whether t is weighted is decided here, once.                         */
 dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
 {
+    const int weighted = t->wt != NULL;
+    if (weighted && !var->fill_weighted)
+        return dd_fail(t, DD_ERR_UNSUPPORTED,
+                       "the %s strategy does not delete from a weighted triangulation yet (sew-full and auto do)",
+                       var->name);
     if (t->nvert <= 4)
         return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave %u points: at least 4 are needed",
                        t->v2in[q], t->nvert - 1);
@@ -355,6 +455,7 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
     d->q = q;
     d->qp = dd_pt(t, q);
+    d->qw = weighted ? t->wt[q] : 0.0;
     /* The random choices of a deletion are seeded by the vertex: deleting
      * the same vertex of the same triangulation does the same work.     */
     uint64_t z = dd_mix64(t->v2in[q] + 0x9E3779B97F4A7C15ull);
@@ -371,35 +472,31 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     for (int i = 0; i < DD_NPHASES; i++) d->phase[i] = 0;
     DD_PHASE_BEGIN(d);
     s = collect_star(d);
+    d->hpts.n = 0;
+    if (s == DD_OK && weighted) s = take_hidden(d);
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
-    /* Four independent neighbours, or the forced coplanar-hull fill. */
+    /* The sites: q's neighbours, then the star's hidden points. */
     d->order.n = 0;
-    if ((s = dd_vec_room(&d->order, d->nbr.n)) != DD_OK) return dd_fail(t, s, "out of memory");
+    if ((s = dd_vec_room(&d->order, d->nbr.n + d->hpts.n)) != DD_OK) {
+        if (weighted) (void)settle_hidden(d, s, 0);
+        return dd_fail(t, s, "out of memory");
+    }
     memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
-    d->order.n = d->nbr.n;
+    if (d->hpts.n) memcpy(d->order.a + d->nbr.n, d->hpts.a, d->hpts.n * sizeof *d->hpts.a);
+    d->order.n = d->nbr.n + d->hpts.n;
     DD_PHASE_END(d, DD_PH_LINK);
-    if (dd_del_pick_base(d, d->order.a, d->order.n) != DD_OK) {
-        /* Coplanar finite neighbours: q is on the hull.  If every finite
-         * cell holds q, every other point is a neighbour: all coplanar.   */
-        if (d->star.n - d->star_inf == t->nfinite)
-            return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points",
-                           t->v2in[q]);
-        if (!d->on_hull)
-            return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
-        d->forced_fill = 1;
-        s = fill_coplanar_hull(d);
-    } else {
-        s = var->fill_cavity(d);
+    s = fill_step(d, weighted ? var->fill_weighted : var->fill_cavity);
+    size_t nrel = 0;
+    if (s == DD_OK) {
+        d->qdt_created = d->qdt->tets_created;
+        if (weighted) s = sort_released(d, &nrel);
+        DD_PHASE_BEGIN(d);
+        if (s == DD_OK) s = sew(d);
+        DD_PHASE_END(d, DD_PH_SEW);
+    } else if (s != DD_ERR_NOMEM && !t->err[0]) {
+        dd_fail(t, s, "the %s strategy failed on point %u", var->name, t->v2in[q]);
     }
-    if (s != DD_OK) {
-        if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
-        if (!t->err[0]) dd_fail(t, s, "the %s strategy failed on point %u", var->name, t->v2in[q]);
-        return s;
-    }
-    d->qdt_created = d->qdt->tets_created;
-    DD_PHASE_BEGIN(d);
-    s = sew(d);
-    DD_PHASE_END(d, DD_PH_SEW);
+    if (weighted) s = settle_hidden(d, s, nrel);
     if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
     return s;
 }

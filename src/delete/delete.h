@@ -66,6 +66,9 @@ typedef struct dd_del {
     dd_tri *t;            /* the triangulation being edited               */
     uint32_t q;           /* vertex id being deleted                      */
     const double *qp;     /* its point                                    */
+    double qw;            /* its weight (a weighted t; else 0)            */
+    dd_vec hpts;          /* weighted t: the star's hidden points, taken
+                             from hidden.c for this deletion              */
     int on_hull;          /* DD_INF is a neighbour of q                   */
     uint32_t star_inf;    /* infinite cells in the star                   */
 
@@ -130,6 +133,13 @@ typedef struct dd_variant {
     /* Fills d->qdt and d->fill for the cavity of d->q.  d->base holds four
      * affinely independent neighbours; d->nbr all finite neighbours.      */
     dd_status (*fill_cavity)(dd_del *d);
+    /* The same on a weighted triangulation (DESIGN 12, issue 44): fills
+     * d->qdt and d->fill with the cells of the regular triangulation of
+     * P = d->order (q's finite neighbours, then the star's hidden points
+     * d->hpts) in power conflict with (q, d->qw).  NULL: the strategy
+     * does not delete weighted points, and the framework refuses with
+     * DD_ERR_UNSUPPORTED naming it, changing nothing.                      */
+    dd_status (*fill_weighted)(dd_del *d);
 } dd_variant;
 
 /* The scratch of kind k kept in d, or NULL if none was kept yet. */
@@ -194,6 +204,20 @@ dd_status dd_qdt_scan(dd_del *d, uint32_t v, uint32_t *cell);
 dd_status dd_qdt_collect_fill(dd_del *d);
 /* Lists in d->fill the cells of a full DT(P) in d->qdt in conflict with q. */
 dd_status dd_full_collect_fill(dd_del *d);
+/* The weighted counterparts (t weighted, issue 44): the regular
+ * triangulation of d->order (base first) in d->qdt by CGAL's insertion
+ * rule (a point may end hidden there, or hide one inserted before), and
+ * its cells in power conflict with (q, d->qw) in d->fill.                */
+dd_status dd_full_build_power(dd_del *d);
+dd_status dd_full_collect_fill_power(dd_del *d);
+/* The weighted fill of sew-full (and of auto on a weighted t): the
+ * neighbours in random order, then the star's hidden points in random
+ * order, into the full regular triangulation, whose cells in power
+ * conflict with q fill the cavity.  Why neighbours first: each is a
+ * vertex of every regular triangulation of a subset of P holding it
+ * (its link triangles are faces of the result), so none is ever hidden
+ * and only hidden points can hide each other.                          */
+dd_status dd_full_fill_power(dd_del *d);
 /* Builds the full DT of d->nbr in d->qdt, inserting d->base first and then
  * the rest in the order of d->order (a permutation of d->nbr).           */
 dd_status dd_full_build(dd_del *d);

@@ -9,6 +9,7 @@
  * is only valid after dd_qdt_collect_fill / dd_full_collect_fill.
  */
 #include "delete/delete.h"
+#include "mesh/hidden.h"
 
 /* ---- the conflict DT ----------------------------------------------------- */
 
@@ -113,5 +114,52 @@ dd_status dd_full_collect_fill(dd_del *d)
     for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
         if (dd_tv(x, c)[0] != DD_DEAD && dd_cell_conflict(x, c, d->qp))
             s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+/* ---- the full regular triangulation of P (weighted t) -------------------- */
+
+dd_status dd_full_build_power(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    dd_status s = DD_OK;
+    if (!x->hid) s = dd_hidden_init(x, 0);   /* x forgets what it hides */
+    if (s == DD_OK) s = dd_reserve_cells(x, (uint32_t)(8 * d->order.n + 16));
+    if (s != DD_OK) return s;
+    uint32_t b[4];
+    memcpy(b, d->base, sizeof b);
+    dd_make_first_cells(x, b);
+    for (size_t k = 0; k < d->order.n && s == DD_OK; k++) {
+        uint32_t v = d->order.a[k], dup;
+        if (v == d->base[0] || v == d->base[1] || v == d->base[2] || v == d->base[3]) continue;
+        dd_fate fate;
+        s = dd_insert_power(x, v, DD_NONE, 0, &fate, &dup);
+    }
+    return s;
+}
+
+dd_status dd_full_collect_fill_power(dd_del *d)
+{
+    dd_tri *x = d->qdt;
+    d->fill.n = 0;
+    dd_status s = DD_OK;
+    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
+        if (dd_tv(x, c)[0] != DD_DEAD && dd_cell_power_conflict_fast(x, c, d->qp, d->qw))
+            s = dd_vec_push(&d->fill, c);
+    return s;
+}
+
+dd_status dd_full_fill_power(dd_del *d)
+{
+    const size_t nn = d->nbr.n;
+    dd_del_shuffle(d, d->order.a, nn);                    /* the neighbours, */
+    dd_del_shuffle(d, d->order.a + nn, d->order.n - nn);  /* then the hidden */
+    dd_status s = dd_del_pick_base(d, d->order.a, d->order.n);
+    if (s != DD_OK) return s;
+    dd_qdt_reset(d, 0);
+    DD_PHASE_BEGIN(d);
+    s = dd_full_build_power(d);
+    if (s == DD_OK) s = dd_full_collect_fill_power(d);
+    DD_PHASE_END(d, DD_PH_CONFLICT);
     return s;
 }

@@ -179,6 +179,12 @@ dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint3
     return DD_OK;
 }
 
+dd_status dd_hidden_room(dd_tri *t, size_t ncells)
+{
+    dd_hidset *h = t->hid;
+    return h->keep ? room_cells(h, ncells) : DD_OK;
+}
+
 void dd_hidden_release(dd_tri *t, uint32_t v)
 {
     dd_hidset *h = t->hid;

@@ -83,6 +83,12 @@ dd_status dd_hidden_take_region(dd_tri *t);
  * deletions (issue 44): a point it takes must be released or re-homed. */
 dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint32_t **pts, size_t *npts);
 
+/* Makes room for hidden points in cells of id below ncells, so that a
+ * deletion's dd_hidden_settle can re-home points in the cells it makes
+ * (issue 44).  DD_ERR_NOMEM with nothing changed; a no-op when hidden
+ * points are forgotten.                                                 */
+dd_status dd_hidden_room(dd_tri *t, size_t ncells);
+
 /* Removes taken point v from the points to re-home and from the hidden
  * set (it becomes a vertex again, or is forgotten).  O(taken).         */
 void dd_hidden_release(dd_tri *t, uint32_t v);

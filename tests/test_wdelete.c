@@ -1,0 +1,380 @@
+/*
+ * test_wdelete.c -- deletion from a regular (weighted Delaunay)
+ * triangulation against CGAL's Regular_triangulation_3::remove()
+ * (src/cgal/cgal_regular.h, dd_cgal_rt_remove), issue 44's first slice:
+ *  - deletion sequences on uniform weighted points (few to most hidden),
+ *    the degenerate integer grid with small integer weights (power ties,
+ *    equal positions with different weights), the moment curve and the
+ *    helix with weights, and a molecule-like packing: after every step
+ *    the cells and the hidden set equal CGAL's and dd_check passes, in
+ *    both hidden modes, for every strategy that deletes weighted points
+ *    (sew-full, and auto through dd_delete);
+ *  - the strategies that do not yet refuse with DD_ERR_UNSUPPORTED and a
+ *    message naming them, nothing changed; so do dd_delete_set and
+ *    dd_reinsert; a hidden point is no vertex to delete;
+ *  - every allocation of a deletion that releases hidden points refused
+ *    in turn (test builds): DD_ERR_NOMEM, nothing changed, then the
+ *    deletion succeeds with CGAL's result.
+ * Argument "small": smaller sizes (the sanitizer build).
+ */
+#include "testlib.h"
+#include <math.h>
+#include "dtdel.h"
+#include "dtdel_stats.h"
+#include "cgal/cgal_regular.h"
+
+static int small;
+
+/* ---- weighted point sets -------------------------------------------------- */
+
+typedef struct wset {
+    double *p, *w;
+    uint32_t n, cap;
+} wset;
+
+static void ws_add(wset *s, double x, double y, double z, double w)
+{
+    if (s->n == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 256;
+        s->p = realloc(s->p, 3 * (size_t)s->cap * sizeof *s->p);
+        s->w = realloc(s->w, (size_t)s->cap * sizeof *s->w);
+        if (!s->p || !s->w) exit(1);
+    }
+    s->p[3 * (size_t)s->n] = x, s->p[3 * (size_t)s->n + 1] = y, s->p[3 * (size_t)s->n + 2] = z;
+    s->w[s->n++] = w;
+}
+
+static void ws_free(wset *s)
+{
+    free(s->p), free(s->w);
+    memset(s, 0, sizeof *s);
+}
+
+/* n uniform points in the unit cube, weights uniform in [0, scale h^2),
+ * h = n^(-1/3) the mean spacing: scale 0.01 hides few, 10 most.         */
+static wset gen_uniform(uint32_t n, double scale, uint64_t seed)
+{
+    wset s = {0};
+    tl_rng r = {seed};
+    const double h = pow((double)n, -1.0 / 3);
+    for (uint32_t i = 0; i < n; i++) {
+        const double x = tl_unif(&r), y = tl_unif(&r), z = tl_unif(&r);
+        ws_add(&s, x, y, z, scale * h * h * tl_unif(&r));
+    }
+    return s;
+}
+
+/* Atoms of radii 1.2 to 1.9 (weight r^2) on a jittered lattice. */
+static wset gen_molecule(uint32_t side, uint64_t seed)
+{
+    wset s = {0};
+    tl_rng r = {seed};
+    for (uint32_t i = 0; i < side; i++)
+        for (uint32_t j = 0; j < side; j++)
+            for (uint32_t k = 0; k < side; k++) {
+                const double rad = 1.2 + 0.7 * tl_unif(&r);
+                ws_add(&s, 1.5 * i + 0.6 * (tl_unif(&r) - 0.5), 1.5 * j + 0.6 * (tl_unif(&r) - 0.5),
+                       1.5 * k + 0.6 * (tl_unif(&r) - 0.5), rad * rad);
+            }
+    return s;
+}
+
+/* The moment curve (t, t^2, t^3) or a helix, with random weights of the
+ * order of the squared spacing.                                        */
+static wset gen_curve(uint32_t n, int helix, uint64_t seed)
+{
+    wset s = {0};
+    tl_rng r = {seed};
+    for (uint32_t i = 0; i < n; i++) {
+        const double t = (double)i / n;
+        if (helix) ws_add(&s, cos(20 * t), sin(20 * t), t, 0.01 * tl_unif(&r));
+        else ws_add(&s, t, t * t, t * t * t, 0.3 * tl_unif(&r) / ((double)n * n));
+    }
+    return s;
+}
+
+/* The integer grid side^3 with integer weights in 0..2 (power ties),
+ * plus extra points at grid positions with other weights (no exact
+ * duplicates: the shim collapses those, the engine names them).       */
+static wset gen_grid(uint32_t side, uint32_t extra, uint64_t seed)
+{
+    wset s = {0};
+    tl_rng r = {seed};
+    for (uint32_t i = 0; i < side; i++)
+        for (uint32_t j = 0; j < side; j++)
+            for (uint32_t k = 0; k < side; k++) ws_add(&s, i, j, k, (double)tl_int(&r, 0, 2));
+    const uint32_t base = s.n;
+    for (uint32_t e = 0; e < extra; e++) {
+        const uint32_t i = (uint32_t)tl_int(&r, 0, base - 1);
+        const double *q = s.p + 3 * (size_t)i;
+        double w = (double)tl_int(&r, 0, 3);
+        if (w == s.w[i]) w += 0.5;
+        ws_add(&s, q[0], q[1], q[2], w);
+    }
+    return s;
+}
+
+/* ---- comparisons ------------------------------------------------------------- */
+
+static int same_as_cgal(const dd_tri *t, const dd_cgal_rt *c, char *why, size_t nwhy)
+{
+    int32_t *a = NULL, *b = NULL;
+    uint32_t *ha = NULL, *hb = NULL;
+    size_t na = 0, nb = 0, nha = 0, nhb = 0;
+    int ok = 0;
+    if (dd_canonical(t, &a, &na) != DD_OK || dd_cgal_rt_canonical(c, &b, &nb))
+        snprintf(why, nwhy, "no canonical form");
+    else if (na != nb || memcmp(a, b, 4 * na * sizeof *a))
+        snprintf(why, nwhy, "cells differ: %zu here, %zu in CGAL", na, nb);
+    else if (dd_hidden(t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(c, &hb, &nhb))
+        snprintf(why, nwhy, "no hidden list");
+    else if (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))
+        snprintf(why, nwhy, "hidden sets differ: %zu here, %zu in CGAL", nha, nhb);
+    else
+        ok = 1;
+    free(a), free(b), free(ha), free(hb);
+    return ok;
+}
+
+static int checked(const dd_tri *t, char *why, size_t nwhy)
+{
+    char msg[256];
+    if (dd_check_msg(t, msg, sizeof msg) == DD_OK) return 1;
+    snprintf(why, nwhy, "dd_check: %.200s", msg);
+    return 0;
+}
+
+/* Snapshot of what a refused edit must not change. */
+typedef struct shot { int32_t *cells; size_t n; uint32_t *hid; size_t nh; uint32_t np, nv; } shot;
+
+static shot take_shot(const dd_tri *t)
+{
+    shot s = {0};
+    dd_canonical(t, &s.cells, &s.n);
+    dd_hidden(t, &s.hid, &s.nh);
+    s.np = dd_num_input(t);
+    s.nv = dd_num_vertices(t);
+    return s;
+}
+
+static int unchanged(const dd_tri *t, const shot *s)
+{
+    shot now = take_shot(t);
+    const int same = now.n == s->n && !memcmp(now.cells, s->cells, 4 * s->n * sizeof *s->cells) &&
+                     now.nh == s->nh && (!s->nh || !memcmp(now.hid, s->hid, s->nh * sizeof *s->hid)) &&
+                     now.np == s->np && now.nv == s->nv;
+    free(now.cells), free(now.hid);
+    return same;
+}
+
+static void shot_free(shot *s) { free(s->cells), free(s->hid); }
+
+/* ---- deletion sequences ------------------------------------------------------- */
+
+/* A random vertex of t (input index), or UINT32_MAX. */
+static uint32_t random_vertex(const dd_tri *t, tl_rng *r)
+{
+    const uint32_t np = dd_num_input(t);
+    for (int tries = 0; tries < 100000; tries++) {
+        const uint32_t v = (uint32_t)tl_int(r, 0, np - 1);
+        if (dd_is_vertex(t, v)) return v;
+    }
+    return UINT32_MAX;
+}
+
+/* Builds s in one hidden mode here and in CGAL, then deletes `ndel`
+ * random vertices with strategy `variant` (NULL: dd_delete, the
+ * default), comparing with CGAL's remove() and checking after every
+ * step.  Counts the hidden points that came back.                      */
+static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t ndel, const char *variant, int keep)
+{
+    char tn[200], why[256] = "", msg[256];
+    snprintf(tn, sizeof tn, "delete/%s/%s/%s", name, variant ? variant : "default", keep ? "keep" : "discard");
+    dd_tri *t = NULL;
+    dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
+    int ok = c && dd_create_ex(&t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+    if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+    tl_rng r = {0x5eed + s->n + (uint64_t)keep};
+    uint32_t done = 0, back = 0;
+    for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
+        const uint32_t v = random_vertex(t, &r);
+        const uint32_t nv = dd_num_vertices(t);
+        const dd_status ds = variant ? dd_delete_with(t, v, variant) : dd_delete(t, v);
+        const int cr = dd_cgal_rt_remove(c, v);
+        if (ds != DD_OK || cr != 0) {
+            ok = 0, snprintf(why, sizeof why, "deleting %u: %s (%s); CGAL %d", v, dd_status_name(ds), dd_errmsg(t), cr);
+            break;
+        }
+        back += dd_num_vertices(t) + 1 - nv;
+        done++;
+        ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why) && !dd_is_vertex(t, v) &&
+             !dd_is_hidden(t, v);
+        if (!ok) {
+            char w2[256];
+            snprintf(w2, sizeof w2, "after deleting %u (step %u): %.200s", v, k, why);
+            memcpy(why, w2, sizeof why);
+        }
+    }
+    if (ok && done == 0) ok = 0, snprintf(why, sizeof why, "nothing deleted");
+    tl_check(st, ok, tn, "%s", why);
+    if (ok) fprintf(stderr, "  %s: %u deletions, %u hidden points came back\n", tn, done, back);
+    dd_free(t);
+    dd_cgal_rt_free(c);
+}
+
+static const char *const supported[] = {NULL, "auto", "sew-full"};
+
+static void delete_all(tl_state *st, const char *name, const wset *s, uint32_t ndel)
+{
+    for (int keep = 1; keep >= 0; keep--)
+        for (size_t k = 0; k < sizeof supported / sizeof *supported; k++)
+            delete_case(st, name, s, ndel, supported[k], keep);
+}
+
+/* ---- refusals ------------------------------------------------------------------ */
+
+static void refusals_case(tl_state *st)
+{
+    static const char *const refused[] = {"grr-edge", "grr-neighbor", "grr-hashing", "grr-brio",
+                                          "guide-only", "dtq-only", "gift-wrap"};
+    wset s = gen_uniform(small ? 200 : 500, 3, 9);
+    char msg[256], why[256] = "";
+    dd_tri *t = NULL;
+    if (dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg) != DD_OK) {
+        tl_check(st, 0, "refuse/setup", "%s", msg);
+        ws_free(&s);
+        return;
+    }
+    shot before = take_shot(t);
+    uint32_t v = 0;
+    while (!dd_is_vertex(t, v)) v++;
+    uint32_t hp = 0;
+    while (hp < s.n && !dd_is_hidden(t, hp)) hp++;
+    for (size_t k = 0; k < sizeof refused / sizeof *refused; k++) {
+        char tn[160];
+        snprintf(tn, sizeof tn, "refuse/weighted/%s", refused[k]);
+        const dd_status ds = dd_delete_with(t, v, refused[k]);
+        tl_check(st, ds == DD_ERR_UNSUPPORTED && unchanged(t, &before) && strstr(dd_errmsg(t), refused[k]), tn,
+                 "status %s, errmsg '%s'", dd_status_name(ds), dd_errmsg(t));
+    }
+    uint32_t set[2] = {v, v + 1 < s.n ? v + 1 : 0};
+    struct { const char *name; dd_status got, want; } cases[] = {
+        {"delete-set", dd_delete_set(t, set, 2), DD_ERR_UNSUPPORTED},
+        {"reinsert", dd_reinsert(t, v), DD_ERR_UNSUPPORTED},
+        {"delete-hidden-point", hp < s.n ? dd_delete(t, hp) : DD_ERR_UNKNOWN_VERTEX, DD_ERR_UNKNOWN_VERTEX},
+        {"delete-unknown", dd_delete(t, s.n + 5), DD_ERR_UNKNOWN_VERTEX},
+        {"delete-unknown-variant", dd_delete_with(t, v, "no-such"), DD_ERR_UNKNOWN_VARIANT},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        char tn[160];
+        snprintf(tn, sizeof tn, "refuse/weighted/%s", cases[k].name);
+        tl_check(st, cases[k].got == cases[k].want && unchanged(t, &before) && dd_errmsg(t)[0], tn,
+                 "status %s (want %s), errmsg '%s'", dd_status_name(cases[k].got), dd_status_name(cases[k].want),
+                 dd_errmsg(t));
+    }
+    tl_check(st, hp < s.n, "refuse/weighted/has-hidden", "no hidden point to try");
+    tl_check(st, checked(t, why, sizeof why), "refuse/weighted/check-after", "%s", why);
+    shot_free(&before);
+    dd_free(t);
+    ws_free(&s);
+}
+
+/* ---- allocation failures ---------------------------------------------------------- */
+
+#ifdef DD_TEST_BUILD
+/* A vertex of t whose deletion brings a hidden point back (CGAL says so),
+ * or UINT32_MAX.                                                         */
+static uint32_t releasing_vertex(const wset *s, const dd_tri *t)
+{
+    for (uint32_t v = 0; v < s->n; v++) {
+        if (!dd_is_vertex(t, v)) continue;
+        dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, 0);
+        uint32_t *h0 = NULL, *h1 = NULL;
+        size_t n0 = 0, n1 = 0;
+        dd_cgal_rt_hidden(c, &h0, &n0);
+        const int r = dd_cgal_rt_remove(c, v);
+        dd_cgal_rt_hidden(c, &h1, &n1);
+        dd_cgal_rt_free(c);
+        free(h0), free(h1);
+        if (r == 0 && n1 < n0) return v;
+    }
+    return UINT32_MAX;
+}
+
+static void fault_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 80 : 150, 3, 21);
+    char msg[256], why[256] = "";
+    dd_tri *t = NULL;
+    dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+    const uint32_t v = releasing_vertex(&s, t);
+    dd_free(t);
+    if (v == UINT32_MAX) {
+        tl_check(st, 0, "fault/weighted-delete", "no vertex releases a hidden point");
+        ws_free(&s);
+        return;
+    }
+    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
+    dd_cgal_rt_remove(c, v);
+    long nomem = 0, bad = 0;
+    for (long k = 1; k < 100000; k++) {
+        t = NULL;
+        dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
+        shot before = take_shot(t);
+        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+        const dd_status ds = dd_delete_with(t, v, k % 2 ? "sew-full" : NULL);
+        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+        int ok = 1;
+        if (ds == DD_ERR_NOMEM) {
+            nomem++;
+            ok = unchanged(t, &before) && checked(t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
+            if (ok) ok = dd_delete(t, v) == DD_OK;
+        } else if (ds != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s", k, dd_status_name(ds));
+        }
+        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        if (!ok && !bad++) fprintf(stderr, "  fault: allocation %ld: %s\n", k, why);
+        shot_free(&before);
+        dd_free(t);
+        if (left > 0) break;             /* the deletion made fewer than k */
+    }
+    tl_check(st, bad == 0 && nomem > 0, "fault/weighted-delete", "%ld bad of %ld refusals", bad, nomem);
+    fprintf(stderr, "  fault/weighted-delete: %ld allocations refused in turn\n", nomem);
+    dd_cgal_rt_free(c);
+    ws_free(&s);
+}
+#endif
+
+int main(int argc, char **argv)
+{
+    small = argc > 1 && !strcmp(argv[1], "small");
+    tl_state st = {0, 0};
+    const uint32_t n = small ? 300 : 2000, nd = small ? 40 : 300;
+    const double scales[] = {0.01, 1, 3, 10};
+    for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
+        char name[64];
+        snprintf(name, sizeof name, "uniform-w%g", scales[k]);
+        wset s = gen_uniform(n, scales[k], 100 + k);
+        delete_all(&st, name, &s, nd);
+        ws_free(&s);
+    }
+    wset s = gen_grid(small ? 4 : 6, small ? 30 : 120, 5);
+    delete_all(&st, "grid", &s, s.n);
+    ws_free(&s);
+    s = gen_molecule(small ? 5 : 8, 1);
+    delete_all(&st, "molecule", &s, nd);
+    ws_free(&s);
+    s = gen_curve(small ? 100 : 300, 0, 3);
+    delete_all(&st, "moment-curve", &s, nd);
+    ws_free(&s);
+    s = gen_curve(small ? 200 : 1000, 1, 4);
+    delete_all(&st, "helix", &s, nd);
+    ws_free(&s);
+    refusals_case(&st);
+#ifdef DD_TEST_BUILD
+    fault_case(&st);
+#endif
+    return tl_finish(&st);
+}
