@@ -25,147 +25,9 @@
 #include <math.h>
 #include "dtdel.h"
 #include "cgal/cgal_regular.h"
+#include "testweighted.h"
 
 static int small;
-
-/* ---- weighted point sets -------------------------------------------------- */
-
-typedef struct wset {
-    double *p, *w;
-    uint32_t n, cap;
-} wset;
-
-static void ws_add(wset *s, double x, double y, double z, double w)
-{
-    if (s->n == s->cap) {
-        s->cap = s->cap ? 2 * s->cap : 256;
-        s->p = realloc(s->p, 3 * (size_t)s->cap * sizeof *s->p);
-        s->w = realloc(s->w, (size_t)s->cap * sizeof *s->w);
-        if (!s->p || !s->w) exit(1);
-    }
-    s->p[3 * (size_t)s->n] = x, s->p[3 * (size_t)s->n + 1] = y, s->p[3 * (size_t)s->n + 2] = z;
-    s->w[s->n++] = w;
-}
-
-static void ws_free(wset *s)
-{
-    free(s->p), free(s->w);
-    memset(s, 0, sizeof *s);
-}
-
-/* n uniform points in the unit cube, weights uniform in [0, scale h^2),
- * h = n^(-1/3) the mean spacing: scale 0.01 hides few, 10 most.         */
-static wset gen_uniform(uint32_t n, double scale, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    const double h = pow((double)n, -1.0 / 3);
-    for (uint32_t i = 0; i < n; i++) {
-        const double x = tl_unif(&r), y = tl_unif(&r), z = tl_unif(&r);
-        ws_add(&s, x, y, z, scale * h * h * tl_unif(&r));
-    }
-    return s;
-}
-
-/* Atoms of radii 1.2 to 1.9 (weight r^2) on a jittered lattice of
- * spacing 1.5: overlapping balls, as a molecule's.                      */
-static wset gen_molecule(uint32_t side, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < side; i++)
-        for (uint32_t j = 0; j < side; j++)
-            for (uint32_t k = 0; k < side; k++) {
-                const double rad = 1.2 + 0.7 * tl_unif(&r);
-                ws_add(&s, 1.5 * i + 0.6 * (tl_unif(&r) - 0.5), 1.5 * j + 0.6 * (tl_unif(&r) - 0.5),
-                       1.5 * k + 0.6 * (tl_unif(&r) - 0.5), rad * rad);
-            }
-    return s;
-}
-
-/* Protecting balls: points every h along a circle, a helix and a
- * segment (sharp features) with weight (0.6 h)^2, and nvol unweighted
- * points in the box around them.                                       */
-static wset gen_protecting(uint32_t per_curve, uint32_t nvol, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    const double pi = 3.14159265358979323846;
-    const double h = 2 * pi / per_curve, w = 0.36 * h * h;
-    for (uint32_t i = 0; i < per_curve; i++) {
-        const double a = 2 * pi * i / per_curve;
-        ws_add(&s, cos(a), sin(a), 0, w);
-        ws_add(&s, 0.5 * cos(3 * a), 0.5 * sin(3 * a), -1 + a / pi, w);
-        ws_add(&s, -1.2 + 2.4 * i / per_curve, 0.3, 0.8, w);
-    }
-    for (uint32_t i = 0; i < nvol; i++)
-        ws_add(&s, 3 * tl_unif(&r) - 1.5, 3 * tl_unif(&r) - 1.5, 3 * tl_unif(&r) - 1.5, 0);
-    return s;
-}
-
-/* The moment curve (t, t^2, t^3) or a helix, with random weights of the
- * order of the squared spacing.                                        */
-static wset gen_curve(uint32_t n, int helix, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < n; i++) {
-        const double t = (double)i / n;
-        if (helix) ws_add(&s, cos(20 * t), sin(20 * t), t, 0.01 * tl_unif(&r));
-        else ws_add(&s, t, t * t, t * t * t, 0.3 * tl_unif(&r) / ((double)n * n));
-    }
-    return s;
-}
-
-/* The integer grid side^3 with integer weights in 0..2 (power ties),
- * plus extra points at grid positions with other weights and exact
- * duplicates of earlier points.                                        */
-static wset gen_grid(uint32_t side, uint32_t extra, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < side; i++)
-        for (uint32_t j = 0; j < side; j++)
-            for (uint32_t k = 0; k < side; k++) ws_add(&s, i, j, k, (double)tl_int(&r, 0, 2));
-    const uint32_t base = s.n;
-    for (uint32_t e = 0; e < extra; e++) {
-        const uint32_t i = (uint32_t)tl_int(&r, 0, base - 1);
-        const double *q = s.p + 3 * (size_t)i;
-        const double w = e % 3 == 0 ? s.w[i] : (double)tl_int(&r, 0, 3);   /* duplicate, or another weight */
-        ws_add(&s, q[0], q[1], q[2], w);
-    }
-    return s;
-}
-
-/* ---- comparisons ------------------------------------------------------------- */
-
-static int same_as_cgal(dd_tri *t, const dd_cgal_rt *c, char *why, size_t nwhy)
-{
-    int32_t *a = NULL, *b = NULL;
-    uint32_t *ha = NULL, *hb = NULL;
-    size_t na = 0, nb = 0, nha = 0, nhb = 0;
-    int ok = 0;
-    if (dd_canonical(t, &a, &na) != DD_OK || dd_cgal_rt_canonical(c, &b, &nb))
-        snprintf(why, nwhy, "no canonical form");
-    else if (na != nb || memcmp(a, b, 4 * na * sizeof *a))
-        snprintf(why, nwhy, "cells differ: %zu here, %zu in CGAL", na, nb);
-    else if (dd_hidden(t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(c, &hb, &nhb))
-        snprintf(why, nwhy, "no hidden list");
-    else if (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))
-        snprintf(why, nwhy, "hidden sets differ: %zu here, %zu in CGAL", nha, nhb);
-    else
-        ok = 1;
-    free(a), free(b), free(ha), free(hb);
-    return ok;
-}
-
-static int checked(const dd_tri *t, char *why, size_t nwhy)
-{
-    char msg[256];
-    if (dd_check_msg(t, msg, sizeof msg) == DD_OK) return 1;
-    snprintf(why, nwhy, "dd_check: %.200s", msg);
-    return 0;
-}
 
 /* pow(p, a) - pow(p, b) in exact rationals (pow(p, x) = |p - x|^2 - w). */
 static int cmp_power_exact(const double *p, const double *a, double wa, const double *b, double wb)
@@ -426,28 +288,6 @@ static void bad_create_case(tl_state *st)
 }
 
 /* Snapshot of what an edit must not change. */
-typedef struct shot { int32_t *cells; size_t n; uint32_t *hid; size_t nh; uint32_t np, nv; } shot;
-
-static shot take_shot(const dd_tri *t)
-{
-    shot s = {0};
-    dd_canonical(t, &s.cells, &s.n);
-    dd_hidden(t, &s.hid, &s.nh);
-    s.np = dd_num_input(t);
-    s.nv = dd_num_vertices(t);
-    return s;
-}
-
-static int unchanged(const dd_tri *t, shot *s)
-{
-    shot now = take_shot(t);
-    const int same = now.n == s->n && !memcmp(now.cells, s->cells, 4 * s->n * sizeof *s->cells) &&
-                     now.nh == s->nh && (!s->nh || !memcmp(now.hid, s->hid, s->nh * sizeof *s->hid)) &&
-                     now.np == s->np && now.nv == s->nv;
-    free(now.cells), free(now.hid);
-    return same;
-}
-
 static void refusals_case(tl_state *st)
 {
     wset s = gen_uniform(small ? 200 : 500, 3, 9);
@@ -488,7 +328,7 @@ static void refusals_case(tl_state *st)
     char why[256] = "";
     tl_check(st, checked(t, why, sizeof why), "refuse/weighted/check-after", "%s", why);
     dd_free(t);
-    free(before.cells), free(before.hid);
+    shot_free(&before);
     /* dd_insert_weighted on an unweighted t */
     dd_create(&t, s.p, s.n, msg, sizeof msg);
     before = take_shot(t);
@@ -497,7 +337,7 @@ static void refusals_case(tl_state *st)
     double w = -1;
     tl_check(st, !dd_is_weighted(t) && dd_weight(t, 3, &w) == DD_OK && w == 0 && !dd_is_hidden(t, 3),
              "unweighted/reads", "weight %g", w);
-    free(before.cells), free(before.hid);
+    shot_free(&before);
     dd_free(t);
     ws_free(&s);
 }
@@ -507,7 +347,7 @@ static void refusals_case(tl_state *st)
  * at its position is hidden; a heavier one swallows it.                */
 static void equal_positions_case(tl_state *st)
 {
-    wset s = gen_grid(4, 0, 3);
+    wset s = gen_grid(4, 0, 1, 3);
     char msg[256], why[256] = "";
     for (uint32_t i = 0; i < s.n; i++) s.w[i] = 0.25;
     dd_tri *t = NULL;
@@ -542,7 +382,7 @@ static void equal_positions_case(tl_state *st)
         dd_cgal_rt_free(c);
     }
     tl_check(st, ok, "insert/equal-positions", "%s", why);
-    free(before.cells), free(before.hid);
+    shot_free(&before);
     dd_free(t);
     ws_free(&s);
 }
@@ -602,7 +442,7 @@ static void fault_case(tl_state *st)
             if (ok && dd_insert_weighted(t, pts[q], pts[q][3], &idx) != DD_OK)
                 ok = 0, snprintf(why, sizeof why, "insert %d fails after allocation %ld was refused", q, k);
             if (ok) ok = checked(t, why, sizeof why);
-            free(before.cells), free(before.hid);
+            shot_free(&before);
             dd_free(t);
         }
     }
@@ -637,7 +477,7 @@ int main(int argc, char **argv)
     s = gen_curve(small ? 300 : 2000, 1, 4);
     build_case(&st, "helix", &s);
     ws_free(&s);
-    s = gen_grid(small ? 5 : 8, small ? 60 : 300, 5);
+    s = gen_grid(small ? 5 : 8, small ? 60 : 300, 1, 5);
     build_case(&st, "grid", &s);
     insert_case(&st, "grid", &s, s.n / 3, 1);
     ws_free(&s);
@@ -652,7 +492,7 @@ int main(int argc, char **argv)
     s = gen_uniform(n, 1, 8);
     zero_weights_case(&st, "uniform", &s);
     ws_free(&s);
-    s = gen_grid(small ? 5 : 7, 0, 9);
+    s = gen_grid(small ? 5 : 7, 0, 1, 9);
     zero_weights_case(&st, "grid", &s);
     ws_free(&s);
     bad_create_case(&st);

@@ -22,156 +22,10 @@
 #include "dtdel.h"
 #include "dtdel_stats.h"
 #include "cgal/cgal_regular.h"
+#include "testweighted.h"
 
 static int small;
 
-/* ---- weighted point sets -------------------------------------------------- */
-
-typedef struct wset {
-    double *p, *w;
-    uint32_t n, cap;
-} wset;
-
-static void ws_add(wset *s, double x, double y, double z, double w)
-{
-    if (s->n == s->cap) {
-        s->cap = s->cap ? 2 * s->cap : 256;
-        s->p = realloc(s->p, 3 * (size_t)s->cap * sizeof *s->p);
-        s->w = realloc(s->w, (size_t)s->cap * sizeof *s->w);
-        if (!s->p || !s->w) exit(1);
-    }
-    s->p[3 * (size_t)s->n] = x, s->p[3 * (size_t)s->n + 1] = y, s->p[3 * (size_t)s->n + 2] = z;
-    s->w[s->n++] = w;
-}
-
-static void ws_free(wset *s)
-{
-    free(s->p), free(s->w);
-    memset(s, 0, sizeof *s);
-}
-
-/* n uniform points in the unit cube, weights uniform in [0, scale h^2),
- * h = n^(-1/3) the mean spacing: scale 0.01 hides few, 10 most.         */
-static wset gen_uniform(uint32_t n, double scale, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    const double h = pow((double)n, -1.0 / 3);
-    for (uint32_t i = 0; i < n; i++) {
-        const double x = tl_unif(&r), y = tl_unif(&r), z = tl_unif(&r);
-        ws_add(&s, x, y, z, scale * h * h * tl_unif(&r));
-    }
-    return s;
-}
-
-/* Atoms of radii 1.2 to 1.9 (weight r^2) on a jittered lattice. */
-static wset gen_molecule(uint32_t side, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < side; i++)
-        for (uint32_t j = 0; j < side; j++)
-            for (uint32_t k = 0; k < side; k++) {
-                const double rad = 1.2 + 0.7 * tl_unif(&r);
-                ws_add(&s, 1.5 * i + 0.6 * (tl_unif(&r) - 0.5), 1.5 * j + 0.6 * (tl_unif(&r) - 0.5),
-                       1.5 * k + 0.6 * (tl_unif(&r) - 0.5), rad * rad);
-            }
-    return s;
-}
-
-/* The moment curve (t, t^2, t^3) or a helix, with random weights of the
- * order of the squared spacing.                                        */
-static wset gen_curve(uint32_t n, int helix, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < n; i++) {
-        const double t = (double)i / n;
-        if (helix) ws_add(&s, cos(20 * t), sin(20 * t), t, 0.01 * tl_unif(&r));
-        else ws_add(&s, t, t * t, t * t * t, 0.3 * tl_unif(&r) / ((double)n * n));
-    }
-    return s;
-}
-
-/* The integer grid side^3 with integer weights in 0..2 (power ties),
- * plus extra points at grid positions with other weights (no exact
- * duplicates: the shim collapses those, the engine names them).       */
-static wset gen_grid(uint32_t side, uint32_t extra, uint64_t seed)
-{
-    wset s = {0};
-    tl_rng r = {seed};
-    for (uint32_t i = 0; i < side; i++)
-        for (uint32_t j = 0; j < side; j++)
-            for (uint32_t k = 0; k < side; k++) ws_add(&s, i, j, k, (double)tl_int(&r, 0, 2));
-    const uint32_t base = s.n;
-    for (uint32_t e = 0; e < extra; e++) {
-        const uint32_t i = (uint32_t)tl_int(&r, 0, base - 1);
-        const double *q = s.p + 3 * (size_t)i;
-        double w = (double)tl_int(&r, 0, 3);
-        if (w == s.w[i]) w += 0.5;
-        ws_add(&s, q[0], q[1], q[2], w);
-    }
-    return s;
-}
-
-/* ---- comparisons ------------------------------------------------------------- */
-
-static int same_as_cgal(const dd_tri *t, const dd_cgal_rt *c, char *why, size_t nwhy)
-{
-    int32_t *a = NULL, *b = NULL;
-    uint32_t *ha = NULL, *hb = NULL;
-    size_t na = 0, nb = 0, nha = 0, nhb = 0;
-    int ok = 0;
-    if (dd_canonical(t, &a, &na) != DD_OK || dd_cgal_rt_canonical(c, &b, &nb))
-        snprintf(why, nwhy, "no canonical form");
-    else if (na != nb || memcmp(a, b, 4 * na * sizeof *a))
-        snprintf(why, nwhy, "cells differ: %zu here, %zu in CGAL", na, nb);
-    else if (dd_hidden(t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(c, &hb, &nhb))
-        snprintf(why, nwhy, "no hidden list");
-    else if (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))
-        snprintf(why, nwhy, "hidden sets differ: %zu here, %zu in CGAL", nha, nhb);
-    else
-        ok = 1;
-    free(a), free(b), free(ha), free(hb);
-    return ok;
-}
-
-static int checked(const dd_tri *t, char *why, size_t nwhy)
-{
-    char msg[256];
-    if (dd_check_msg(t, msg, sizeof msg) == DD_OK) return 1;
-    snprintf(why, nwhy, "dd_check: %.200s", msg);
-    return 0;
-}
-
-/* Snapshot of what a refused edit must not change. */
-typedef struct shot { int32_t *cells; size_t n; uint32_t *hid; size_t nh; uint32_t np, nv; } shot;
-
-static shot take_shot(const dd_tri *t)
-{
-    shot s = {0};
-    dd_canonical(t, &s.cells, &s.n);
-    dd_hidden(t, &s.hid, &s.nh);
-    s.np = dd_num_input(t);
-    s.nv = dd_num_vertices(t);
-    return s;
-}
-
-static int unchanged(const dd_tri *t, const shot *s)
-{
-    shot now = take_shot(t);
-    const int same = now.n == s->n && !memcmp(now.cells, s->cells, 4 * s->n * sizeof *s->cells) &&
-                     now.nh == s->nh && (!s->nh || !memcmp(now.hid, s->hid, s->nh * sizeof *s->hid)) &&
-                     now.np == s->np && now.nv == s->nv;
-    free(now.cells), free(now.hid);
-    return same;
-}
-
-static void shot_free(shot *s) { free(s->cells), free(s->hid); }
-
-/* ---- deletion sequences ------------------------------------------------------- */
-
-/* A random vertex of t (input index), or UINT32_MAX. */
 static uint32_t random_vertex(const dd_tri *t, tl_rng *r)
 {
     const uint32_t np = dd_num_input(t);
@@ -360,7 +214,7 @@ int main(int argc, char **argv)
         delete_all(&st, name, &s, nd);
         ws_free(&s);
     }
-    wset s = gen_grid(small ? 4 : 6, small ? 30 : 120, 5);
+    wset s = gen_grid(small ? 4 : 6, small ? 30 : 120, 0, 5);
     delete_all(&st, "grid", &s, s.n);
     ws_free(&s);
     s = gen_molecule(small ? 5 : 8, 1);
