@@ -29,31 +29,6 @@
 
 static int small;
 
-/* pow(p, a) - pow(p, b) in exact rationals (pow(p, x) = |p - x|^2 - w). */
-static int cmp_power_exact(const double *p, const double *a, double wa, const double *b, double wb)
-{
-    mpq_t x, y, s;
-    mpq_inits(x, y, s, NULL);
-    for (int c = 0; c < 3; c++) {
-        mpq_set_d(x, p[c]);
-        mpq_set_d(y, a[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_add(s, s, y);
-        mpq_set_d(y, b[c]);
-        mpq_sub(y, x, y);
-        mpq_mul(y, y, y);
-        mpq_sub(s, s, y);
-    }
-    mpq_set_d(x, wa);
-    mpq_sub(s, s, x);
-    mpq_set_d(x, wb);
-    mpq_add(s, s, x);
-    const int r = mpq_sgn(s);
-    mpq_clears(x, y, s, NULL);
-    return r;
-}
-
 /* The read calls against the input and brute force: weights, the
  * partition of the indices into vertices, hidden points and the rest
  * (duplicates; forgotten points when discarding), dd_hidden sorted and
@@ -107,7 +82,7 @@ static int reads_agree(const dd_tri *t, const wset *s, int keep, uint64_t seed, 
             if (!dd_is_vertex(t, i)) continue;
             dd_point(t, i, pb);
             dd_weight(t, i, &wb);
-            if (cmp_power_exact(p, pb, wb, pv, wv) < 0)
+            if (tl_cmp_power_exact(p, pb, wb, pv, wv) < 0)
                 ok = 0, snprintf(why, nwhy, "query %d: vertex %u is nearer in power distance than %u", q, i, v);
         }
     }

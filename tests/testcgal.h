@@ -28,8 +28,9 @@ static inline double *tl_gen(const char *ds, uint32_t n, uint64_t seed, uint32_t
     return p;
 }
 
-/* sign(|p - a|^2 - |p - b|^2) in exact rationals. */
-static inline int tl_cmp_dist_exact(const double *p, const double *a, const double *b)
+/* sign(pow(p, a) - pow(p, b)) in exact rationals, pow(p, x) = |p - x|^2
+ * - wx: the power distance (the Euclidean squared one with weights 0). */
+static inline int tl_cmp_power_exact(const double *p, const double *a, double wa, const double *b, double wb)
 {
     mpq_t x, y, s;
     mpq_inits(x, y, s, NULL);
@@ -44,9 +45,19 @@ static inline int tl_cmp_dist_exact(const double *p, const double *a, const doub
         mpq_mul(y, y, y);
         mpq_sub(s, s, y);
     }
-    int r = mpq_sgn(s);
+    mpq_set_d(x, wa);
+    mpq_sub(s, s, x);
+    mpq_set_d(x, wb);
+    mpq_add(s, s, x);
+    const int r = mpq_sgn(s);
     mpq_clears(x, y, s, NULL);
     return r;
+}
+
+/* sign(|p - a|^2 - |p - b|^2) in exact rationals. */
+static inline int tl_cmp_dist_exact(const double *p, const double *a, const double *b)
+{
+    return tl_cmp_power_exact(p, a, 0, b, 0);
 }
 
 /* Whether cell (input indices, -1 = infinite) holds p by CGAL's exact

@@ -116,43 +116,6 @@ static void lift_rows(mpz_ptr *z, int n)
     }
 }
 
-/* r = a d - b c */
-static void det2(mpz_t r, const mpz_t a, const mpz_t b, const mpz_t c, const mpz_t d, mpz_t tmp)
-{
-    mpz_mul(r, a, d);
-    mpz_mul(tmp, b, c);
-    mpz_sub(r, r, tmp);
-}
-
-/* det[[a0 a1 a2][b0 b1 b2][c0 c1 c2]] into s[1]; scratch s[0..3]. */
-static int sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s)
-{
-    det2(s[0], b[1], b[2], c[1], c[2], s[3]);
-    mpz_mul(s[1], a[0], s[0]);
-    det2(s[0], b[0], b[2], c[0], c[2], s[3]);
-    mpz_submul(s[1], a[1], s[0]);
-    det2(s[0], b[0], b[1], c[0], c[1], s[3]);
-    mpz_addmul(s[1], a[2], s[0]);
-    return mpz_sgn(s[1]);
-}
-
-/* Sign of the 4x4 determinant of rows r[0..3]; scratch s[0..9]. */
-static int sign_det4(mpz_ptr *const r[4], mpz_ptr *s)
-{
-    mpz_set_ui(s[9], 0);
-    for (int i = 0; i < 4; i++) {   /* Laplace along the last column */
-        mpz_ptr m[3][3];
-        for (int j = 0, k = 0; j < 4; j++) {
-            if (j == i) continue;
-            for (int c = 0; c < 3; c++) m[k][c] = r[j][c];
-            k++;
-        }
-        sign_det3(m[0], m[1], m[2], s);
-        if ((i & 1) == 1) mpz_addmul(s[9], r[i][3], s[1]);   /* (-1)^(i+3) */
-        else mpz_submul(s[9], r[i][3], s[1]);
-    }
-    return mpz_sgn(s[9]);
-}
 
 /* ---- small integers: exact in 128-bit arithmetic --------------------------
  *
@@ -319,7 +282,7 @@ static int power_z(mpz_ptr *z)
 {
     lift_rows(z, 5);
     mpz_ptr *const rows[4] = {&z[0], &z[4], &z[8], &z[12]};
-    return -sign_det4(rows, &z[20]);
+    return -dd_mpz_sign_det4(rows, &z[20]);
 }
 
 int dd_power_exact(dd_pred *ctx, const double *p0, const double *p1, const double *p2, const double *p3,
@@ -401,7 +364,7 @@ static int power_coplanar_z(mpz_ptr *z)
     for (int k = 0; k < 3; k++) {
         const int i = proj[k][0], j = proj[k][1];
         mpz_ptr a[3] = {z[i], z[j], z[3]}, b[3] = {z[4 + i], z[4 + j], z[7]}, c[3] = {z[8 + i], z[8 + j], z[11]};
-        const int cmp = sign_det3(a, b, c, &z[16]);
+        const int cmp = dd_mpz_sign_det3(a, b, c, &z[16]);
         if (cmp == 0 && k < 2) continue;
         /* (p0_i - p2_i)(p1_j - p2_j) - (p1_i - p2_i)(p0_j - p2_j) */
         mpz_sub(z[20], z[i], z[8 + i]);

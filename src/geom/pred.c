@@ -141,22 +141,20 @@ int dd_pred_exact(dd_pred *ctx, const double *const *pts, int npts, dd_exact_fn 
 }
 
 /* r = a*d - b*c */
-static void det2(mpz_t r, const mpz_t a, const mpz_t b, const mpz_t c,
-                 const mpz_t d, mpz_t tmp)
+void dd_mpz_det2(mpz_t r, const mpz_t a, const mpz_t b, const mpz_t c, const mpz_t d, mpz_t tmp)
 {
     mpz_mul(r, a, d);
     mpz_mul(tmp, b, c);
     mpz_sub(r, r, tmp);
 }
 
-/* sign det[[a0 a1 a2][b0 b1 b2][c0 c1 c2]] using scratch s[0..3]. */
-static int sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s)
+int dd_mpz_sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s)
 {
-    det2(s[0], b[1], b[2], c[1], c[2], s[3]);
+    dd_mpz_det2(s[0], b[1], b[2], c[1], c[2], s[3]);
     mpz_mul(s[1], a[0], s[0]);
-    det2(s[0], b[0], b[2], c[0], c[2], s[3]);
+    dd_mpz_det2(s[0], b[0], b[2], c[0], c[2], s[3]);
     mpz_submul(s[1], a[1], s[0]);
-    det2(s[0], b[0], b[1], c[0], c[1], s[3]);
+    dd_mpz_det2(s[0], b[0], b[1], c[0], c[1], s[3]);
     mpz_addmul(s[1], a[2], s[0]);
     return mpz_sgn(s[1]);
 }
@@ -169,7 +167,7 @@ static int orient3d_z(mpz_ptr *z, const void *arg)
     for (int row = 0; row < 3; row++)
         for (int c = 0; c < 3; c++)
             mpz_sub(z[12 + 3 * row + c], z[3 * (row + 1) + c], z[c]);
-    return sign_det3(&z[12], &z[15], &z[18], &z[21]);
+    return dd_mpz_sign_det3(&z[12], &z[15], &z[18], &z[21]);
 }
 
 static int orient3d_exact(dd_pred *ctx, const double *p, const double *q,
@@ -179,22 +177,18 @@ static int orient3d_exact(dd_pred *ctx, const double *p, const double *q,
     return dd_pred_exact(ctx, pts, 4, orient3d_z, NULL, NULL);
 }
 
-/* Sign of the 4x4 determinant whose rows are r[i][0..3]; scratch s[0..9]. */
-static int sign_det4(mpz_ptr r[4][4], mpz_ptr *s)
+int dd_mpz_sign_det4(mpz_ptr *const r[4], mpz_ptr *s)
 {
-    /* Laplace expansion along the last column:
-     * det = sum_i (-1)^(i+3) r[i][3] * M_i3, M_i3 the 3x3 minor without row i. */
     mpz_set_ui(s[9], 0);
-    for (int i = 0; i < 4; i++) {
-        mpz_ptr rows[3][3];
-        int k = 0;
-        for (int j = 0; j < 4; j++) {
+    for (int i = 0; i < 4; i++) {   /* Laplace along the last column */
+        mpz_ptr m[3][3];
+        for (int j = 0, k = 0; j < 4; j++) {
             if (j == i) continue;
-            rows[k][0] = r[j][0]; rows[k][1] = r[j][1]; rows[k][2] = r[j][2];
+            for (int c = 0; c < 3; c++) m[k][c] = r[j][c];
             k++;
         }
-        sign_det3(rows[0], rows[1], rows[2], s);   /* value left in s[1] */
-        if (((i + 3) & 1) == 0) mpz_addmul(s[9], r[i][3], s[1]);
+        dd_mpz_sign_det3(m[0], m[1], m[2], s);   /* value left in s[1] */
+        if ((i & 1) == 1) mpz_addmul(s[9], r[i][3], s[1]);   /* (-1)^(i+3) */
         else mpz_submul(s[9], r[i][3], s[1]);
     }
     return mpz_sgn(s[9]);
@@ -216,7 +210,7 @@ static int insphere_z(mpz_ptr *z, const void *arg)
         mpz_addmul(rows[i][3], rows[i][1], rows[i][1]);
         mpz_addmul(rows[i][3], rows[i][2], rows[i][2]);
     }
-    return sign_det4(rows, &z[31]);
+    return dd_mpz_sign_det4((mpz_ptr *const[4]){rows[0], rows[1], rows[2], rows[3]}, &z[31]);
 }
 
 static int insphere_exact(dd_pred *ctx, const double *p, const double *q,
@@ -281,14 +275,14 @@ static int incircle_coplanar_z(mpz_ptr *z, const void *arg)
         mpz_sub(pr[c], z[3 + c], z[c]);
     }
     mpz_ptr *v = &z[30];   /* v[0..3] = vx, vy, vz, v2 */
-    det2(v[0], pq[1], pq[2], pr[1], pr[2], z[34]);
-    det2(v[1], pq[2], pq[0], pr[2], pr[0], z[34]);
-    det2(v[2], pq[0], pq[1], pr[0], pr[1], z[34]);
+    dd_mpz_det2(v[0], pq[1], pq[2], pr[1], pr[2], z[34]);
+    dd_mpz_det2(v[1], pq[2], pq[0], pr[2], pr[0], z[34]);
+    dd_mpz_det2(v[2], pq[0], pq[1], pr[0], pr[1], z[34]);
     mpz_mul(v[3], v[0], v[0]);
     mpz_addmul(v[3], v[1], v[1]);
     mpz_addmul(v[3], v[2], v[2]);
     for (int c = 0; c < 4; c++) rows[3][c] = v[c];
-    return sign_det4(rows, &z[35]);
+    return dd_mpz_sign_det4((mpz_ptr *const[4]){rows[0], rows[1], rows[2], rows[3]}, &z[35]);
 }
 
 static int incircle_coplanar_exact(dd_pred *ctx, const double *p,

@@ -207,6 +207,16 @@ void dd_pred_init(dd_pred *ctx);
 dd_status dd_pred_reserve(dd_pred *ctx);
 void dd_pred_clear(dd_pred *ctx);
 
+/* The exact stages' determinants, shared by pred.c and power.c:
+ * dd_mpz_det2: r = a*d - b*c (tmp scratch).  dd_mpz_sign_det3: the sign
+ * of det[[a0 a1 a2][b0 b1 b2][c0 c1 c2]], its value left in s[1]
+ * (scratch s[0..3]).  dd_mpz_sign_det4: the sign of the 4x4 determinant
+ * of rows r[0..3] (scratch s[0..9]).  They allocate nothing when the
+ * numbers have room (dd_pred_exact's scratch always has).              */
+void dd_mpz_det2(mpz_t r, const mpz_t a, const mpz_t b, const mpz_t c, const mpz_t d, mpz_t tmp);
+int dd_mpz_sign_det3(mpz_ptr *a, mpz_ptr *b, mpz_ptr *c, mpz_ptr *s);
+int dd_mpz_sign_det4(mpz_ptr *const r[4], mpz_ptr *s);
+
 /* A GMP stage: f(z, arg) with z[0..DD_PRED_SCRATCH) integers of
  * DD_PRED_LIMBS limbs (ctx's reserved scratch, else one on the stack),
  * the npts (<= 5) points loaded into z[0 .. 3 npts) as x / 2^emin,
