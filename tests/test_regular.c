@@ -25,6 +25,7 @@
 #include <math.h>
 #include "dtdel.h"
 #include "cgal/cgal_regular.h"
+#include "testcgal.h"
 #include "testweighted.h"
 
 static int small;
