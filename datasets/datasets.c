@@ -20,6 +20,7 @@
 #define _POSIX_C_SOURCE 200809L /* getline, popen, pclose */
 
 #include "datasets.h"
+#include "msg.h"
 #include "readers.h"
 #include "rng.h"
 #include "tokens.h"
@@ -38,21 +39,7 @@
 /* Vertex indices are uint32 and UINT32_MAX is the "no vertex" sentinel.  */
 #define MAX_POINTS ((uint64_t)UINT32_MAX - 1)
 
-#ifdef __GNUC__
-#define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
-#else
-#define PRINTF_LIKE(f, a)
-#endif
 
-PRINTF_LIKE(3, 4)
-static void set_msg(char *msg, size_t msglen, const char *fmt, ...)
-{
-    if (msg == NULL || msglen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, msglen, fmt, ap);
-    va_end(ap);
-}
 
 /* ---- synthetic generators ------------------------------------------------ */
 /* Each fills xyz[0 .. 3n-1] (allocated by the caller) and returns a status.

@@ -23,6 +23,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "readers.h"
+#include "msg.h"
 #include "tokens.h"
 
 #include <ctype.h>
@@ -41,15 +42,6 @@
 #define MAX_PROPS 256
 #define MAX_NAME 64
 
-__attribute__((format(printf, 3, 4)))
-static void set_msg(char *msg, size_t msglen, const char *fmt, ...)
-{
-    if (msg == NULL || msglen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, msglen, fmt, ap);
-    va_end(ap);
-}
 
 dd_format dd_format_of(const char *path)
 {

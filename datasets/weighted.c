@@ -13,6 +13,7 @@
  *  - Input index = order of the point in the generator's output.
  */
 #include "datasets.h"
+#include "msg.h"
 #include "rng.h"
 
 #include <math.h>
@@ -21,15 +22,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-__attribute__((format(printf, 3, 4)))
-static void set_msg(char *msg, size_t msglen, const char *fmt, ...)
-{
-    if (msg == NULL || msglen == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, msglen, fmt, ap);
-    va_end(ap);
-}
 
 /* Each fills xyz[0 .. 3n) and w[0 .. n) (allocated by the caller). */
 typedef dd_status (*wgen_fn)(uint32_t n, uint64_t seed, double alpha, double *xyz, double *w, char *msg,
