@@ -77,7 +77,7 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
     dd_cgal_rt_free(c);
 }
 
-static const char *const supported[] = {NULL, "auto", "sew-full"};
+static const char *const supported[] = {NULL, "auto", "gift-wrap", "sew-full"};
 
 static void delete_all(tl_state *st, const char *name, const wset *s, uint32_t ndel)
 {
@@ -91,7 +91,7 @@ static void delete_all(tl_state *st, const char *name, const wset *s, uint32_t n
 static void refusals_case(tl_state *st)
 {
     static const char *const refused[] = {"grr-edge", "grr-neighbor", "grr-hashing", "grr-brio",
-                                          "guide-only", "dtq-only", "gift-wrap"};
+                                          "guide-only", "dtq-only"};
     wset s = gen_uniform(small ? 200 : 500, 3, 9);
     char msg[256], why[256] = "";
     dd_tri *t = NULL;

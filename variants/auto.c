@@ -13,9 +13,10 @@
  *     (fewer cells built than grr-neighbor's random one of degree <= 7
  *     on the moment curve).  The paper's expected bounds are not claimed
  *     for this order; the result is the same, the perturbed DT is unique.
- * On a weighted triangulation it takes sew-full's fill (the full regular
- * triangulation of the neighbours and the star's hidden points), the
- * one weighted fill so far.
+ * On a weighted triangulation: gift wrapping in the lifted frame, the
+ * star's hidden points among the sites (docs/gift-wrap.md §13), and where
+ * it declines sew-full's fill (the full regular triangulation of the
+ * neighbours and the star's hidden points).
  * The crossovers are measured by `make bench` (results/summary.md: the
  * gift-wrap, grr-neighbor and auto rows by degree), or on the curves
  * alone by `build/dtdel bench --dataset moment` (or helix); the cells
@@ -69,9 +70,22 @@ static dd_status auto_fill(dd_del *d)
     return dd_auto_wrap_first(d, AUTO_WIDE_BELOW_DEGREE);
 }
 
+dd_status dd_auto_wrap_first_weighted(dd_del *d, uint32_t wide_below)
+{
+    int declined;
+    dd_status s = dd_wrap_fill(d, wide_below, &declined);
+    if (s != DD_OK || !declined) return s;
+    return dd_full_fill_power(d);
+}
+
+static dd_status auto_fill_weighted(dd_del *d)
+{
+    return dd_auto_wrap_first_weighted(d, AUTO_WIDE_BELOW_DEGREE);
+}
+
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first; on weighted points sew-full's regular fill",
+    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first; on weighted points gift wrapping in the lifted frame, where it declines sew-full's regular fill",
     auto_fill,
-    dd_full_fill_power,
+    auto_fill_weighted,
 };

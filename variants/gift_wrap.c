@@ -15,9 +15,16 @@ static dd_status gift_wrap_fill(dd_del *d)
     return dd_auto_wrap_first(d, UINT32_MAX);
 }
 
+/* On a weighted t: auto's weighted choice, with the wide guess at every
+ * degree.                                                               */
+static dd_status gift_wrap_fill_weighted(dd_del *d)
+{
+    return dd_auto_wrap_first_weighted(d, UINT32_MAX);
+}
+
 const dd_variant dd_variant_gift_wrap = {
     "gift-wrap",
-    "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it)",
+    "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it; weighted: in the lifted frame, the star's hidden points as sites, else sew-full's fill)",
     gift_wrap_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    gift_wrap_fill_weighted,
 };

@@ -378,7 +378,7 @@ static dd_status take_hidden(dd_del *d)
  * many, and makes room for the others in the cells the sew makes.      */
 static dd_status sort_released(dd_del *d, size_t *nrel)
 {
-    dd_tri *t = d->t, *x = d->qdt;
+    dd_tri *t = d->t, *x = d->fill_in_mesh ? t : d->qdt;   /* where the fill is */
     const uint32_t ep = new_vepoch(d);
     for (size_t k = 0; k < d->fill.n; k++)
         for (uint32_t j = 0; j < 4; j++) {

@@ -68,6 +68,30 @@ dd_lift_frame dd_lift_rows(double *const *L, const double *const *pts, uint32_t 
     return dd_lift_classify(integral, m);
 }
 
+/* As dd_lift_rows, the fourth coordinate less dw = wt[k] - qw (lift.h's
+ * weighted lift).  O(n).                                                 */
+dd_lift_frame dd_lift_rows_power(double *const *L, const double *const *pts, const double *wt, uint32_t n,
+                                 const double *q, double qw, double *wmax)
+{
+    double m = 0, W = 0;
+    int integral = dd_lift_is_int3(q);
+    for (uint32_t k = 0; k < n; k++) {
+        const double *p = pts[k];
+        for (int i = 0; i < 3; i++) {
+            L[i][k] = p[i] - q[i];
+            m = dd_lift_max(m, fabs(L[i][k]));
+        }
+        integral = integral && dd_lift_is_int3(p);
+        const double dw = wt[k] - qw;
+        W = dd_lift_max(W, fabs(dw));
+        L[3][k] = (L[0][k] * L[0][k] + L[1][k] * L[1][k] + L[2][k] * L[2][k]) - dw;
+    }
+    for (uint32_t k = n; k % 4; k++)               /* the AVX2 passes' padding */
+        for (int i = 0; i < 4; i++) L[i][k] = NAN;
+    *wmax = W;
+    return dd_lift_classify(integral, m);
+}
+
 /* Index sort by dd_lex_cmp: insertion while short, else bottom-up
  * merges through tmp and rank; then rank inverts the order.           */
 void dd_lex_ranks(const double *const *pts, uint32_t n, uint32_t *tmp, uint32_t *rank)

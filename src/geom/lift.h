@@ -167,6 +167,32 @@ static inline double dd_lift_orient_err(double m)
     return m >= DD_LIFT_M_MIN && m <= DD_LIFT_M_MAX ? 1e-13 * m * m * m : 1.0 / 0.0;
 }
 
+/* ---- the weighted lift ----------------------------------------------------
+ *
+ * A regular triangulation's lift (DESIGN 12) relative to the deleted
+ * point (q, w_q): L[x] = (x - q, |x - q|^2 - (w_x - w_q)), the fourth
+ * coordinate evaluated as (|x - q|^2 as dd_lift_row has it) - dw, dw =
+ * w_x - w_q rounded once.  With every dw exactly 0 it is the unweighted
+ * lift, bit for bit.  The determinants of these rows are the power tests'
+ * (minus their sign: dd_power_exact's rows are the same up to a
+ * translation and combinations of the first three columns).
+ *
+ * Bound.  With W = max |dw|: the fourth coordinate is at most 3m^2 + W
+ * (1 + u); its error, 5u 3m^2 for the norm, u W for dw and u (3m^2 + W)
+ * (1 + 5u) for the subtraction, is below 6u (3m^2 + W).  So with
+ * 3 M2 = 1.25 (3m^2 + W) the entries of the fourth column are at most
+ * 3 M2 with errors at most 5u 3 M2: the in-sphere derivation above holds
+ * with 3m^2 replaced by 3 M2 for that column.  Each of its terms is a
+ * product of the three coordinate columns (m each) and the fourth, so the
+ * bound is 1e-11 m^3 M2.  The orientation bound, on the first three
+ * columns only, is unchanged.  Range: m as above, and M2 at most 1e110
+ * (NaN and an overflowed dw included: +inf, no filter).                 */
+static inline double dd_lift_power_err(double m, double W)
+{
+    const double M2 = 1.25 * (m * m + W / 3);
+    return m >= DD_LIFT_M_MIN && m <= DD_LIFT_M_MAX && M2 <= 1e110 ? 1e-11 * m * m * m * M2 : 1.0 / 0.0;
+}
+
 /* ---- the integer modes --------------------------------------------------
  *
  * When q and every point of the frame have integer coordinates, each

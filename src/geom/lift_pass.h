@@ -264,6 +264,13 @@ static inline int dd_lift_all_outside(double *const *L, uint32_t n, uint32_t a, 
  * (room for n rounded up to a multiple of four: the padding is NaN) and
  * returns the frame (m, the bounds, the integer modes).  O(n).          */
 dd_lift_frame dd_lift_rows(double *const *L, const double *const *pts, uint32_t n, const double *q);
+/* The same for weighted points (lift.h's weighted lift): wt[k] the weight
+ * of pts[k], qw q's; *wmax = W, the largest |w_x - w_q| as rounded (NaN
+ * or +inf when one overflows).  The frame returned is dd_lift_rows' for
+ * the same points (modes and bounds of the unweighted lift, which these
+ * rows are when W = 0); the caller takes dd_lift_power_err otherwise.   */
+dd_lift_frame dd_lift_rows_power(double *const *L, const double *const *pts, const double *wt, uint32_t n,
+                                 const double *q, double qw, double *wmax);
 
 /* rank[k]: the position of pts[k] in the lexicographic order of
  * pts[0..n) (dd_lex_cmp; the points distinct), the ranks that

@@ -53,6 +53,8 @@ uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, 
         if (w->nadj[v[i]] <= bound) nc = w_take_list(w, v[i], nc);
     for (uint32_t i = 0, n1 = nc; w->narrow == DD_GUESS_TWO_STEP && !W_NARROWER(w) && i < n1; i++)
         if (w->nadj[w->cand[i]] != W_ADJ_FULL) nc = w_take_list(w, w->cand[i], nc);
+    for (uint32_t k = w->nlink; k < w->n; k++)      /* the hidden sites (docs §13), a few */
+        if (w->seen[k] != w->stamp) w->cand[nc++] = k;
     uint32_t uns, best = w_least_ratio(w, a, N, T, w->cand, nc, &uns);   /* a, b, c not among them */
     if (best != W_NONE && best != W_TIE && uns) best = w_scan_exact(w, pr, a, b, c, m, best, 1, w->cand, nc);
     return best;

@@ -110,7 +110,7 @@ uint32_t w_scan_inf(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b)
         mark[k] = o == 0;
     }
     if (!flat) return best;
-    if (z == W_NONE) return W_BAIL;
+    if (z == W_NONE || w->wmode) return W_BAIL;     /* weighted: power circles, left to the regular fill */
     const int side = dd_orient3d(pr, pt[a], pt[b], pt[z], pt[best]);
     for (uint32_t k = 0; k < w->n; k++)
         mark[k] = mark[k] != 0 && dd_orient3d(pr, pt[a], pt[b], pt[z], pt[k]) == side;

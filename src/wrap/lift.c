@@ -16,11 +16,25 @@
  */
 #include "wrap/wrap_int.h"
 
-/* Lifts the neighbours relative to q (dd_lift_rows) and sets the
- * filters' bounds and exact modes from the frame.  O(n).                */
-void w_lift(struct dd_wrap *w, const double *q)
+/* Lifts the sites relative to q (dd_lift_rows; weighted,
+ * dd_lift_rows_power at (q, qw)) and sets the filters' bounds and exact
+ * modes from the frame.  The weighted mode (docs §13) holds when a
+ * weight differs from q's or hidden points are among the sites: then the
+ * in-sphere bound is dd_lift_power_err, only the orientations may be
+ * exact in integers, and there are no shifted lifts (they drop the
+ * weights).  Otherwise the lifts are the unweighted ones, bit for bit,
+ * and so is everything that follows.  O(n).                              */
+void w_lift(struct dd_wrap *w, const double *q, double qw, int weighted)
 {
-    const dd_lift_frame f = dd_lift_rows(w->lift, w->pt, w->n, q);
+    double W = 0;
+    dd_lift_frame f = weighted ? dd_lift_rows_power(w->lift, w->pt, w->wgt, w->n, q, qw, &W)
+                               : dd_lift_rows(w->lift, w->pt, w->n, q);
+    w->wmode = weighted && (W != 0 || w->nlink < w->n);
+    if (w->wmode) {
+        f.modes &= DD_LIFT_OEXACT;
+        f.ierr = dd_lift_power_err(f.m, W);
+    }
+    w->wbig = w->wmode && !(W <= 1e3 * f.m * f.m);
     w->exact = (f.modes & DD_LIFT_EXACT) != 0;
     w->oexact = (f.modes & DD_LIFT_OEXACT) != 0;
     w->kexact = (f.modes & DD_LIFT_KEXACT) != 0;
@@ -29,7 +43,8 @@ void w_lift(struct dd_wrap *w, const double *q)
     const int ok = f.ierr != 1.0 / 0.0;
     w->m = f.m;
     w->q = q;
-    w->shifted = !ok || w->kexact;   /* nothing to shift for: the filters are off, or exact tests cheap */
+    /* nothing to shift for: the filters are off, exact tests cheap, or weights */
+    w->shifted = !ok || w->kexact || w->wmode;
     w->nexact = 0;
     w->lex_ok = 0;
 }

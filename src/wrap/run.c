@@ -302,6 +302,19 @@ static dd_status w_reserve_cell(struct w_wrapping *x)
     return w_reserve_recs(x->w, 3);
 }
 
+/* Whether no hidden site (local numbers nlink .. n-1, none on an
+ * unweighted t) but the cell's corners is in conflict with x's guessed
+ * finite cell, its cofactors made (docs §13): local regularity proves
+ * the fill the regular triangulation of its vertices; this proves that
+ * the sites left out stay hidden.  O(hidden sites), filtered.          */
+static inline int w_empty_of_hidden(struct w_wrapping *x)
+{
+    struct dd_wrap *w = x->w;
+    for (uint32_t k = w->nlink; k < w->n; k++)
+        if (k != x->a && k != x->b && k != x->e && k != x->p && w_conflicts(w, x->pr, x->c->lv, x->c->K, k)) return 0;
+    return 1;
+}
+
 /* Makes x's cell in the mesh, the next fill cell: over the next star
  * cell, past the star in a new one (the star is in w->keep), and closes
  * the facet of record r with it (facet 3, opposite the apex).  A guessed
@@ -333,6 +346,7 @@ static int w_make_cell(struct w_wrapping *x, uint32_t r)
         dd_lift_vcofactors(x->c->K, X, x->c->mb);
         /* o as dd_lift_row_o has it; the other guesses' apexes are beyond already */
         if (x->single && !dd_lift_sure_pos(dd_lift_o(X, x->c->N), w->oerr)) return w_wrong(x, "");
+        if (!w_empty_of_hidden(x)) return w_wrong(x, "");
     }
     if (!w_delaunay_across(x, w->own[r])) return w_wrong(x, "");
     w_glue(x, r, 3);

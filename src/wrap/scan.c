@@ -18,6 +18,7 @@
  * w->nexact, for the budget (w_spent).
  */
 #include "wrap/wrap_int.h"
+#include "geom/power.h"
 
 /* Lexicographic ranks of the neighbours (w->lexr, dd_lex_ranks), made the
  * first time the perturbation is asked this deletion.  O(n log n).     */
@@ -78,6 +79,10 @@ __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, c
         return sg ? sg < 0 : w_symbolic(w, pr, lv, y) > 0;
     }
     w->nexact++;
+    if (w->wmode) {                                 /* the weighted lift: the power test */
+        const double *wg = w->wgt, wt[5] = {wg[lv[0]], wg[lv[1]], wg[lv[2]], wg[lv[3]], wg[y]};
+        return dd_power_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y], wt) > 0;
+    }
     return dd_insphere_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
 }
 
@@ -91,6 +96,7 @@ __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, c
  * exact tests.                                                          */
 static uint32_t w_flat_hull(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c)
 {
+    if (w->wmode) return W_BAIL;                    /* power circles: left to the regular fill */
     const double *cell[4] = {w->pt[a], w->pt[b], w->pt[c], NULL};
     for (uint32_t k = 0; k < w->n; k++) {
         if (k == a || k == b || k == c) continue;
@@ -266,6 +272,7 @@ uint32_t w_scan_apex(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uin
  * O(n).                                                                  */
 int w_cospherical(struct dd_wrap *w, dd_pred *pr, size_t nlink)
 {
+    if (w->wmode) return 0;                         /* the weighted scans ask the power tests */
     double *const *L = w->lift;
     const double *const *pt = w->pt;
     const uint32_t n = w->n;

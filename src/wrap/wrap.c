@@ -21,7 +21,7 @@ void dd_wrap_free(struct dd_wrap *w)
     if (!w) return;
     dd_mfree(w->pt);
     for (int i = 0; i < 4; i++) dd_mfree(w->lift[i]), dd_mfree(w->flift[i]);
-    dd_mfree(w->o); dd_mfree(w->tmp); dd_mfree(w->lexr); dd_mfree(w->loc);
+    dd_mfree(w->o); dd_mfree(w->wgt); dd_mfree(w->tmp); dd_mfree(w->lexr); dd_mfree(w->loc);
     dd_mfree(w->fs);
     dd_mfree(w->tri); dd_mfree(w->own); dd_mfree(w->out); dd_mfree(w->closed); dd_mfree(w->stack); dd_mfree(w->lcell); dd_mfree(w->keep);
     dd_mfree(w->adj); dd_mfree(w->nadj); dd_mfree(w->seen); dd_mfree(w->cand); dd_mfree(w->code);
@@ -37,6 +37,7 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
         uint32_t cap = w->cap_n ? w->cap_n : 64;
         while (cap < n) cap *= 2;
         if (dd_grow(&w->pt, cap, sizeof *w->pt) || dd_grow(&w->o, cap, sizeof *w->o) ||
+            dd_grow(&w->wgt, cap, sizeof *w->wgt) ||
             dd_grow(&w->tmp, cap, sizeof *w->tmp) || dd_grow(&w->lexr, cap, sizeof *w->lexr))
             return DD_ERR_NOMEM;
         for (int i = 0; i < 4; i++)
@@ -110,6 +111,17 @@ struct w_course {
     size_t refuted;               /* cells made by refuted guesses        */
 };
 
+/* On a weighted t, the sites in the order of their local numbers: q's
+ * neighbours (d->nbr, whose order collect_star made), then the star's
+ * hidden points (d->hpts); fill_step's choice of a base may have mixed
+ * them.  The regular fill a declined wrap leaves to (dd_full_fill_power)
+ * picks its base again.  O(n).                                         */
+static void w_sites_in_order(dd_del *d)
+{
+    memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
+    if (d->hpts.n) memcpy(d->order.a + d->nbr.n, d->hpts.a, d->hpts.n * sizeof *d->hpts.a);
+}
+
 /* Numbers the neighbours (d->order's order; the infinite vertex is n),
  * lifts them, and sets the deletion's modes: AVX2, the lean and
  * single-precision passes, the test controls.  The star is kept aside
@@ -123,15 +135,20 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     w->ncell0 = t->ncell;
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
+    const int weighted = t->wt != NULL;
+    if (weighted) w_sites_in_order(d);
     d->order.a[d->order.n] = DD_INF;                /* gid[n]: the infinite vertex */
     const uint32_t *gid = d->order.a, n = w->n = (uint32_t)d->order.n;
+    w->nlink = (uint32_t)d->nbr.n;                  /* n on an unweighted t */
     w->lead = 0;                                    /* the neighbour of least id */
     for (uint32_t k = 0; k < n; k++) {
         w->pt[k] = dd_pt(t, gid[k]);
         w->loc[gid[k]] = k;
-        w->lead = gid[k] < gid[w->lead] ? k : w->lead;
+        w->lead = gid[k] < gid[w->lead] && k < w->nlink ? k : w->lead;
     }
-    w_lift(w, d->qp);
+    if (weighted)
+        for (uint32_t k = 0; k < n; k++) w->wgt[k] = t->wt[gid[k]];
+    w_lift(w, d->qp, d->qw, weighted);
     w->unf0 = w_unfiltered(&d->qdt->pred);
     d->sstat[DD_WS_INTEGER] = w->exact ? 1u : w->kexact ? 2u : 0u;
     w->cosph = 0;
@@ -139,7 +156,7 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     w->avx2 = w->has_avx2 && !W_TESTCTL(t, DD_TEST_SCALAR);
     w->lean = w->avx2 && !w->oexact && n >= W_LEAN_FROM;
     /* the float lifts' scales stay finite (dd_lift_f32_ok) */
-    w->flift_ok = w->lean && w->has_fma && dd_lift_f32_ok(w->m) && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
+    w->flift_ok = w->lean && w->has_fma && dd_lift_f32_ok(w->m) && !w->wbig && !W_TESTCTL(t, DD_TEST_NO_SINGLE);
 #ifdef DD_TEST_BUILD
     w->narrower = W_TESTCTL(t, DD_TEST_NARROWER);
     w->f32_spoil = W_TESTCTL(t, DD_TEST_SPOIL_SINGLE);

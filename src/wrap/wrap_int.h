@@ -104,6 +104,16 @@ struct dd_wrap {
     double ierr, oerr;            /* the filters' error bounds (+inf: off) */
     double m;                     /* max |x_k - q_k| over the neighbours  */
     const double *q;
+    /* weighted points (docs §13): the sites are q's neighbours, local
+     * numbers below nlink, then the star's hidden points up to n        */
+    uint32_t nlink;               /* n on an unweighted t                  */
+    int wmode;                    /* the weighted lift holds: weights not
+                                     all q's, or hidden points among the
+                                     sites (w_lift); 0: the unweighted
+                                     wrap, bit for bit                    */
+    double *wgt;                  /* local -> weight (a weighted t)       */
+    int wbig;                     /* weighted, and a weight difference
+                                     beyond 1e3 m^2: no float lifts       */
     int shifted;                  /* the shifted lifts were tried         */
     int cosph;                    /* every neighbour on one sphere (the
                                      scans' in-sphere tests are all 0)   */
@@ -199,8 +209,8 @@ dd_status w_ftab_reset(struct dd_wrap *w, size_t expect);
 dd_status w_grow_recs(struct dd_wrap *w, size_t more);
 
 /* lift.c: the frame */
-/* Lifts the neighbours relative to q and sets the filters' bounds and integer modes. */
-void w_lift(struct dd_wrap *w, const double *q);
+/* Lifts the sites relative to (q, qw) (w->wgt on a weighted t) and sets the filters' bounds and modes. */
+void w_lift(struct dd_wrap *w, const double *q, double qw, int weighted);
 /* Switches to the shifted lifts when their bound is tighter (1), else keeps the lifts (0). */
 int w_shift(struct dd_wrap *w);
 
