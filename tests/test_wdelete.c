@@ -8,13 +8,19 @@
  *    helix with weights, and a molecule-like packing: after every step
  *    the cells and the hidden set equal CGAL's and dd_check passes, in
  *    both hidden modes, for every strategy that deletes weighted points
- *    (sew-full, and auto through dd_delete);
+ *    (auto through dd_delete, gift-wrap, sew-full), the wrap's courses
+ *    taken in turn (test builds: scalar, no single precision, spoiled
+ *    single precision, narrower guesses), on the grid also with exact
+ *    duplicates, and on protecting balls;
+ *  - zero weights: the same cells as the unweighted triangulation after
+ *    every step, the wrap taking the same course (gift-wrap, auto);
  *  - the strategies that do not yet refuse with DD_ERR_UNSUPPORTED and a
  *    message naming them, nothing changed; so do dd_delete_set and
  *    dd_reinsert; a hidden point is no vertex to delete;
  *  - every allocation of a deletion that releases hidden points refused
- *    in turn (test builds): DD_ERR_NOMEM, nothing changed, then the
- *    deletion succeeds with CGAL's result.
+ *    in turn (test builds), by sew-full, auto and gift-wrap in turn:
+ *    DD_ERR_NOMEM, nothing changed, then the deletion succeeds with
+ *    CGAL's result.
  * Argument "small": smaller sizes (the sanitizer build).
  */
 #include "testlib.h"
@@ -51,9 +57,11 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
     if (ok) ok = same_as_cgal(t, c, why, sizeof why);
     tl_rng r = {0x5eed + s->n + (uint64_t)keep};
     uint32_t done = 0, back = 0;
+    tl_courses cs = tl_courses_all();               /* the wrap's courses, in turn (test builds) */
     for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
         const uint32_t v = random_vertex(t, &r);
         const uint32_t nv = dd_num_vertices(t);
+        tl_course_next(&cs, t);
         const dd_status ds = variant ? dd_delete_with(t, v, variant) : dd_delete(t, v);
         const int cr = dd_cgal_rt_remove(c, v);
         if (ds != DD_OK || cr != 0) {
@@ -77,13 +85,62 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
     dd_cgal_rt_free(c);
 }
 
-static const char *const supported[] = {NULL, "auto", "gift-wrap", "sew-full"};
+/* NULL: dd_delete, the default strategy (auto). */
+static const char *const supported[] = {NULL, "gift-wrap", "sew-full"};
 
 static void delete_all(tl_state *st, const char *name, const wset *s, uint32_t ndel)
 {
     for (int keep = 1; keep >= 0; keep--)
         for (size_t k = 0; k < sizeof supported / sizeof *supported; k++)
             delete_case(st, name, s, ndel, supported[k], keep);
+}
+
+/* ---- zero weights ----------------------------------------------------------------- */
+
+/* Zero weights: the weighted triangulation of s's points (every weight 0)
+ * and the unweighted one of the same points, the same deletions by
+ * `variant` in both: after every step the same cells, and the same
+ * course of the wrap (dd_last_delete_stats: its statistics, the same
+ * course and guesses, the unweighted wrap bit for bit).              */
+static void zero_weights_case(tl_state *st, const char *name, const wset *s0, uint32_t ndel, const char *variant)
+{
+    char tn[200], why[256] = "", msg[256];
+    snprintf(tn, sizeof tn, "zero-weights/%s/%s", name, variant);
+    double *zw = calloc(s0->n, sizeof *zw);
+    dd_tri *t = NULL, *u = NULL;
+    int ok = zw && dd_create_ex(&t, s0->p, zw, s0->n, 0, msg, sizeof msg) == DD_OK &&
+             dd_create_ex(&u, s0->p, NULL, s0->n, 0, msg, sizeof msg) == DD_OK;
+    if (!ok) snprintf(why, sizeof why, "build: %.200s", msg);
+    tl_rng r = {0x2e70 + s0->n};
+    uint32_t done = 0;
+    for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
+        const uint32_t v = random_vertex(t, &r);
+        const dd_status a = dd_delete_with(t, v, variant), b = dd_delete_with(u, v, variant);
+        if (a != DD_OK || b != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "deleting %u: %s / %s (%s)", v, dd_status_name(a), dd_status_name(b),
+                             dd_errmsg(a != DD_OK ? t : u));
+            break;
+        }
+        dd_delete_stats sa, sb;
+        dd_last_delete_stats(t, &sa);
+        dd_last_delete_stats(u, &sb);
+        int32_t *ca = NULL, *cb = NULL;
+        size_t na = 0, nb = 0;
+        dd_canonical(t, &ca, &na);
+        dd_canonical(u, &cb, &nb);
+        ok = na == nb && ca && cb && !memcmp(ca, cb, 4 * na * sizeof *ca);
+        if (!ok) snprintf(why, sizeof why, "after deleting %u: cells differ (%zu, %zu)", v, na, nb);
+        if (ok && (sa.nstrategy != sb.nstrategy || memcmp(sa.strategy, sb.strategy, sa.nstrategy * sizeof *sa.strategy)))
+            ok = 0, snprintf(why, sizeof why, "after deleting %u: the wrap took another course", v);
+        if (ok) ok = checked(t, why, sizeof why);
+        free(ca), free(cb);
+        done++;
+    }
+    if (ok && done == 0) ok = 0, snprintf(why, sizeof why, "nothing deleted");
+    tl_check(st, ok, tn, "%s", why);
+    dd_free(t);
+    dd_free(u);
+    free(zw);
 }
 
 /* ---- refusals ------------------------------------------------------------------ */
@@ -177,7 +234,8 @@ static void fault_case(tl_state *st)
         dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
         shot before = take_shot(t);
         dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
-        const dd_status ds = dd_delete_with(t, v, k % 2 ? "sew-full" : NULL);
+        static const char *const fvar[3] = {"sew-full", NULL, "gift-wrap"};   /* NULL: auto, the wrap */
+        const dd_status ds = dd_delete_with(t, v, fvar[k % 3]);
         const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
         int ok = 1;
         if (ds == DD_ERR_NOMEM) {
@@ -216,6 +274,22 @@ int main(int argc, char **argv)
     }
     wset s = gen_grid(small ? 4 : 6, small ? 30 : 120, 0, 5);
     delete_all(&st, "grid", &s, s.n);
+    ws_free(&s);
+    s = gen_grid(small ? 4 : 6, small ? 30 : 120, 1, 6);
+    delete_all(&st, "grid-duplicates", &s, s.n);
+    ws_free(&s);
+    s = gen_protecting(small ? 24 : 60, small ? 100 : 400, 7);
+    delete_all(&st, "protecting", &s, nd);
+    ws_free(&s);
+    s = gen_uniform(small ? 300 : 1500, 1, 8);
+    zero_weights_case(&st, "uniform", &s, nd, "gift-wrap");
+    zero_weights_case(&st, "uniform", &s, nd, "auto");
+    ws_free(&s);
+    s = gen_grid(small ? 4 : 6, 0, 0, 9);
+    zero_weights_case(&st, "grid", &s, s.n, "gift-wrap");
+    ws_free(&s);
+    s = gen_curve(small ? 100 : 400, 1, 10);
+    zero_weights_case(&st, "helix", &s, nd, "auto");
     ws_free(&s);
     s = gen_molecule(small ? 5 : 8, 1);
     delete_all(&st, "molecule", &s, nd);

@@ -379,6 +379,8 @@ static dd_status take_hidden(dd_del *d)
 static dd_status sort_released(dd_del *d, size_t *nrel)
 {
     dd_tri *t = d->t, *x = d->fill_in_mesh ? t : d->qdt;   /* where the fill is */
+    *nrel = 0;
+    if (!d->hpts.n) return dd_hidden_room(t, (size_t)t->ncell + d->fill.n);   /* nothing to sort */
     const uint32_t ep = new_vepoch(d);
     for (size_t k = 0; k < d->fill.n; k++)
         for (uint32_t j = 0; j < 4; j++) {

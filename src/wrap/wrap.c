@@ -111,11 +111,13 @@ struct w_course {
     size_t refuted;               /* cells made by refuted guesses        */
 };
 
-/* On a weighted t, the sites in the order of their local numbers: q's
- * neighbours (d->nbr, whose order collect_star made), then the star's
- * hidden points (d->hpts); fill_step's choice of a base may have mixed
- * them.  The regular fill a declined wrap leaves to (dd_full_fill_power)
- * picks its base again.  O(n).                                         */
+/* With hidden points among the sites (a weighted t), the sites in the
+ * order of their local numbers: q's neighbours (d->nbr, whose order
+ * collect_star made), then the star's hidden points (d->hpts);
+ * fill_step's choice of a base may have mixed them.  The regular fill a
+ * declined wrap leaves to (dd_full_fill_power) picks its base again.
+ * Without hidden points d->order stays as it is, as on an unweighted t.
+ * O(n).                                                                */
 static void w_sites_in_order(dd_del *d)
 {
     memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
@@ -136,7 +138,7 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
     DD_PHASE_BEGIN(d);
     if ((s = w_keep_star(d, w)) != DD_OK) return s;
     const int weighted = t->wt != NULL;
-    if (weighted) w_sites_in_order(d);
+    if (weighted && d->hpts.n) w_sites_in_order(d);
     d->order.a[d->order.n] = DD_INF;                /* gid[n]: the infinite vertex */
     const uint32_t *gid = d->order.a, n = w->n = (uint32_t)d->order.n;
     w->nlink = (uint32_t)d->nbr.n;                  /* n on an unweighted t */
