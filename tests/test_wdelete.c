@@ -263,7 +263,7 @@ int main(int argc, char **argv)
 {
     small = argc > 1 && !strcmp(argv[1], "small");
     tl_state st = {0, 0};
-    const uint32_t n = small ? 300 : 2000, nd = small ? 40 : 300;
+    const uint32_t n = small ? 300 : 1000, nd = small ? 40 : 120;
     const double scales[] = {0.01, 1, 3, 10};
     for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
         char name[64];
@@ -278,10 +278,10 @@ int main(int argc, char **argv)
     s = gen_grid(small ? 4 : 6, small ? 30 : 120, 1, 6);
     delete_all(&st, "grid-duplicates", &s, s.n);
     ws_free(&s);
-    s = gen_protecting(small ? 24 : 60, small ? 100 : 400, 7);
+    s = gen_protecting(small ? 24 : 40, small ? 100 : 200, 7);
     delete_all(&st, "protecting", &s, nd);
     ws_free(&s);
-    s = gen_uniform(small ? 300 : 1500, 1, 8);
+    s = gen_uniform(small ? 300 : 1000, 1, 8);
     zero_weights_case(&st, "uniform", &s, nd, "gift-wrap");
     zero_weights_case(&st, "uniform", &s, nd, "auto");
     ws_free(&s);
@@ -291,13 +291,13 @@ int main(int argc, char **argv)
     s = gen_curve(small ? 100 : 400, 1, 10);
     zero_weights_case(&st, "helix", &s, nd, "auto");
     ws_free(&s);
-    s = gen_molecule(small ? 5 : 8, 1);
+    s = gen_molecule(small ? 5 : 7, 1);
     delete_all(&st, "molecule", &s, nd);
     ws_free(&s);
-    s = gen_curve(small ? 100 : 300, 0, 3);
+    s = gen_curve(small ? 100 : 200, 0, 3);
     delete_all(&st, "moment-curve", &s, nd);
     ws_free(&s);
-    s = gen_curve(small ? 200 : 1000, 1, 4);
+    s = gen_curve(small ? 200 : 500, 1, 4);
     delete_all(&st, "helix", &s, nd);
     ws_free(&s);
     refusals_case(&st);
