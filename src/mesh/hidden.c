@@ -100,16 +100,6 @@ dd_status dd_hidden_add(dd_tri *t, uint32_t c, uint32_t v)
     return DD_OK;
 }
 
-/* The number of hidden points in the lists of cells[0..n). */
-static size_t count_in(const dd_hidset *h, const uint32_t *cells, size_t n)
-{
-    size_t k = 0;
-    for (size_t i = 0; i < n; i++)
-        if (cells[i] < h->ncap)
-            for (uint32_t v = h->head[cells[i]]; v != DD_NONE; v = h->next[v]) k++;
-    return k;
-}
-
 /* Moves the lists of cells[0..n) to taken (room reserved). */
 static void take_lists(dd_hidset *h, const uint32_t *cells, size_t n)
 {
@@ -170,7 +160,9 @@ dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint3
     dd_hidset *h = t->hid;
     const size_t before = h->taken.n;
     if (h->keep) {
-        dd_status s = dd_vec_room(&h->taken, count_in(h, cells, n));
+        /* every point taken is hidden and taken once: room for all of
+         * them (seldom grown) spares a counting pass over the cells      */
+        dd_status s = dd_vec_room(&h->taken, h->all.n);
         if (s != DD_OK) return s;
         take_lists(h, cells, n);
     }
