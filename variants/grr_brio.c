@@ -13,9 +13,12 @@
  * parent, which is always present by then (inserted earlier in the BFS or
  * kept by the smaller set).  A parent that is the infinite vertex is no
  * guide: then the point's BFS-earliest finite link neighbour is used, or,
- * if none precedes it, a counted scan.
+ * if none precedes it, a counted scan.  On a weighted t the same rounds
+ * build the conflict regular triangulation (qdt.h), the base among the
+ * neighbours, the star's hidden points inserted after them.
  */
 #include "delete/grr.h"
+#include "delete/qdt.h"
 #include "delete/bdst.h"
 #include "dtdel/alloc.h"
 
@@ -85,6 +88,8 @@ static dd_status brio_fill(dd_del *d)
 {
     dd_grr *g;
     brio_buf *b;
+    const int weighted = d->t->wt != NULL;
+    if (weighted && dd_qdt_weighted_base(d) != DD_OK) return dd_full_fill_power(d);
     dd_status s = dd_grr_begin(d, &g);
     if (s == DD_OK) s = get_buf(d, d->nbr.n, &b);
     if (s != DD_OK) return s;
@@ -164,7 +169,7 @@ static dd_status brio_fill(dd_del *d)
 
     /* 5. The conflict DT: the base, then the rounds from the last one. */
     dd_qdt_reset(d, 1);
-    s = dd_qdt_create(d);
+    s = weighted ? dd_qdt_create_power(d) : dd_qdt_create(d);
     DD_PHASE_END(d, DD_PH_CONFLICT);
     for (size_t r = nrounds; r-- > 0 && s == DD_OK;) {
         size_t lo = r ? b->round_end[r - 1] : 0, hi = b->round_end[r];
@@ -172,10 +177,11 @@ static dd_status brio_fill(dd_del *d)
             uint32_t c = DD_NONE;
             s = dd_grr_locate(g, b->guide[k], b->seq[k], &c);
             DD_PHASE_END(d, DD_PH_LOCATE);
-            if (s == DD_OK) s = dd_qdt_insert(d, b->seq[k], c);
+            if (s == DD_OK) s = weighted ? dd_qdt_insert_power(d, b->seq[k], c) : dd_qdt_insert(d, b->seq[k], c);
             DD_PHASE_END(d, DD_PH_CONFLICT);
         }
     }
+    if (s == DD_OK && weighted) s = dd_qdt_insert_hidden(d);   /* after every neighbour */
     return s == DD_OK ? dd_qdt_collect_fill(d) : s;
 }
 
@@ -183,5 +189,5 @@ const dd_variant dd_variant_grr_brio = {
     "grr-brio",
     "GRR with BRIO rounds (p = 1/2), guides along a degree-3 spanning tree per round",
     brio_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    brio_fill,             /* weighted points: the conflict RT (qdt.h) */
 };

@@ -15,5 +15,5 @@ const dd_variant dd_variant_grr_edge = {
     "grr-edge",
     "GRR, random link edge uv, deg(u) <= 7, deg(u)+deg(v) <= 15, guide v",
     grr_edge_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    grr_edge_fill,     /* weighted points: the conflict RT (grr.h) */
 };

@@ -22,5 +22,5 @@ const dd_variant dd_variant_grr_hashing = {
     "grr-hashing",
     "GRR, random link vertex of degree <= 7, guide = a new link triangle via a hash",
     grr_hashing_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    grr_hashing_fill,     /* weighted points: the conflict RT (grr.h) */
 };

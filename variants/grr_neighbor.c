@@ -21,5 +21,5 @@ const dd_variant dd_variant_grr_neighbor = {
     "grr-neighbor",
     "GRR, random link vertex of degree <= 7, guide = its lowest-degree neighbour",
     grr_neighbor_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    grr_neighbor_fill,     /* weighted points: the conflict RT (grr.h) */
 };

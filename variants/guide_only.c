@@ -14,5 +14,5 @@ const dd_variant dd_variant_guide_only = {
     "guide-only",
     "full DT of the neighbours with edge sampling and edge guides, then sew",
     guide_only_fill,
-    NULL,                  /* weighted points: refused (delete.h) */
+    guide_only_fill,     /* weighted points: the conflict RT (grr.h) */
 };

@@ -9,6 +9,7 @@
  * context and reused.
  */
 #include "delete/grr.h"
+#include "delete/qdt.h"
 #include "dtdel/alloc.h"
 
 #include <stdlib.h>
@@ -25,6 +26,8 @@ struct dd_grr {
     dd_vec seq, gv, gt;           /* removal order, vertex guides, triangles */
     dd_vec walk;                  /* scratch for locate_from_vertex          */
     dd_trihash dh;                /* dummy cells by their other 3 vertices   */
+    int weighted;                 /* this deletion's t is weighted: the power
+                                     tests, chosen once per location       */
 };
 
 /* Frees a GRR scratch (the free function of its scratch kind). */
@@ -214,6 +217,7 @@ static dd_status init(dd_grr *g)
             return DD_ERR_NOMEM;
         g->vcap = t->cap_v;
     }
+    g->weighted = t->wt != NULL;
     dd_status s = dd_link_extract(&g->link, d);
     if (s != DD_OK) return s;
     for (int k = 0; k <= DD_LOWDEG; k++) g->cand[k].n = 0;
@@ -255,11 +259,20 @@ static uint32_t dh_get(const dd_grr *g, const uint32_t tri[3])
 
 /* ---- guided point location ------------------------------------------------ */
 
-/* A cell around vertex g in conflict with vertex p (see grr.h), or DD_NONE. */
-static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
+/* The conflict test of the location: the in-sphere test, or (w, a
+ * constant of each compiled copy) the power test of qdt.h.           */
+__attribute__((always_inline)) static inline int locate_conflict(dd_del *d, uint32_t c, uint32_t p, const int w)
+{
+    dd_tri *x = d->qdt;
+    return w ? dd_qdt_power_conflict(d, c, dd_pt(x, p), x->wt[p]) : dd_cell_conflict(x, c, dd_pt(x, p));
+}
+
+/* A cell around vertex g in conflict with vertex p (see grr.h), or
+ * DD_NONE; w as locate_conflict's.                                      */
+__attribute__((always_inline)) static inline uint32_t locate_from_vertex_as(dd_grr *gr, uint32_t g, uint32_t p,
+                                                                           const int w)
 {
     dd_tri *x = gr->d->qdt;
-    const double *pp = dd_pt(x, p);
     uint32_t c0 = x->vcell[g];
     if (c0 >= x->ncell || dd_tv(x, c0)[0] == DD_DEAD || dd_index_of(x, c0, g) < 0) return DD_NONE;
     dd_mark ep = dd_new_epoch(x, 1);
@@ -269,7 +282,7 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
     for (size_t k = 0; k < gr->walk.n; k++) {
         uint32_t c = gr->walk.a[k];
         gr->d->locate_steps++;
-        if (dd_cell_conflict(x, c, pp)) return c;
+        if (locate_conflict(gr->d, c, p, w)) return c;
         for (uint32_t j = 0; j < 4; j++) {
             if (dd_tv(x, c)[j] == g) continue;
             uint32_t nb = dd_tn(x, c)[j] >> 2;
@@ -282,16 +295,31 @@ static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
 }
 
 /* Any cell in conflict with p, by scanning (the fallback). */
-static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
+__attribute__((always_inline)) static inline uint32_t locate_by_scan_as(dd_grr *gr, uint32_t p, const int w)
 {
     dd_tri *x = gr->d->qdt;
-    const double *pp = dd_pt(x, p);
     for (uint32_t c = 0; c < x->ncell; c++) {
         if (dd_tv(x, c)[0] == DD_DEAD) continue;
         gr->d->locate_steps++;
-        if (dd_cell_conflict(x, c, pp)) return c;
+        if (locate_conflict(gr->d, c, p, w)) return c;
     }
     return DD_NONE;
+}
+
+/* The two compiled copies of each location, chosen per point. */
+static uint32_t locate_from_vertex_plain(dd_grr *gr, uint32_t g, uint32_t p) { return locate_from_vertex_as(gr, g, p, 0); }
+static uint32_t locate_from_vertex_power(dd_grr *gr, uint32_t g, uint32_t p) { return locate_from_vertex_as(gr, g, p, 1); }
+static uint32_t locate_by_scan_plain(dd_grr *gr, uint32_t p) { return locate_by_scan_as(gr, p, 0); }
+static uint32_t locate_by_scan_power(dd_grr *gr, uint32_t p) { return locate_by_scan_as(gr, p, 1); }
+
+static uint32_t locate_from_vertex(dd_grr *gr, uint32_t g, uint32_t p)
+{
+    return gr->weighted ? locate_from_vertex_power(gr, g, p) : locate_from_vertex_plain(gr, g, p);
+}
+
+static uint32_t locate_by_scan(dd_grr *gr, uint32_t p)
+{
+    return gr->weighted ? locate_by_scan_power(gr, p) : locate_by_scan_plain(gr, p);
 }
 
 /* ---- GRR-CONSTRUCT --------------------------------------------------------- */
@@ -345,9 +373,47 @@ dd_status dd_grr_locate(dd_grr *g, uint32_t guide, uint32_t p, uint32_t *cell)
     return DD_OK;
 }
 
+/* Step 2 of GRR-CONSTRUCT: the base, as DT(x) of the four base points
+ * (or the conflict RT's, weighted) or their full DT (or RT).          */
+static dd_status construct_base(dd_grr *g, const dd_grr_policy *pol)
+{
+    dd_del *d = g->d;
+    dd_status s = DD_OK;
+    dd_qdt_reset(d, !pol->full_dt);
+    if (pol->full_dt) {
+        s = dd_reserve_cells(d->qdt, 16);
+        if (s == DD_OK) {
+            uint32_t b[4];
+            memcpy(b, d->base, sizeof b);
+            dd_make_first_cells(d->qdt, b);
+        }
+    } else {
+        s = g->weighted ? dd_qdt_create_power(d) : dd_qdt_create(d);
+    }
+    if (s == DD_OK && pol->triangle_guide) {
+        s = dd_trihash_reset(&g->dh, 8 * g->seq.n + 16);
+        for (uint32_t c = 0; c < d->qdt->ncell && s == DD_OK; c++)
+            if (dd_tv(d->qdt, c)[0] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
+    }
+    return s;
+}
+
+/* The fill of the built d->qdt: its cells without the dummy vertex, or
+ * the full triangulation's cells in (power) conflict with q.  On a
+ * weighted t the star's hidden points go in first (qdt.h).            */
+static dd_status construct_finish(dd_grr *g, const dd_grr_policy *pol)
+{
+    dd_del *d = g->d;
+    if (!g->weighted) return pol->full_dt ? dd_full_collect_fill(d) : dd_qdt_collect_fill(d);
+    dd_status s = dd_qdt_insert_hidden(d);
+    if (s != DD_OK) return s;
+    return pol->full_dt ? dd_full_collect_fill_power(d) : dd_qdt_collect_fill(d);
+}
+
 dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
 {
     dd_grr *g;
+    if (d->t->wt && dd_qdt_weighted_base(d) != DD_OK) return dd_full_fill_power(d);
     dd_status s = get_grr(d, &g);
     if (s != DD_OK) return s;
     DD_PHASE_BEGIN(d);
@@ -369,23 +435,8 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
     DD_PHASE_END(d, DD_PH_LINK);
     if (s != DD_OK) return s;
 
-    /* 2. The base: DT(x) of the four base points, or their full DT. */
-    dd_qdt_reset(d, !pol->full_dt);
-    if (pol->full_dt) {
-        s = dd_reserve_cells(d->qdt, 16);
-        if (s == DD_OK) {
-            uint32_t b[4];
-            memcpy(b, d->base, sizeof b);
-            dd_make_first_cells(d->qdt, b);
-        }
-    } else {
-        s = dd_qdt_create(d);
-    }
-    if (s == DD_OK && pol->triangle_guide) {
-        s = dd_trihash_reset(&g->dh, 8 * g->seq.n + 16);
-        for (uint32_t c = 0; c < d->qdt->ncell && s == DD_OK; c++)
-            if (dd_tv(d->qdt, c)[0] != DD_DEAD && dd_index_of(d->qdt, c, DD_QD) >= 0) s = dh_put(g, c);
-    }
+    /* 2. The base. */
+    s = construct_base(g, pol);
     DD_PHASE_END(d, DD_PH_CONFLICT);
 
     /* 3. Reinsertion in reverse order, each from its guide. */
@@ -399,7 +450,7 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
             if (c == DD_NONE) return DD_ERR_INTERNAL;
         }
         DD_PHASE_END(d, DD_PH_LOCATE);
-        s = dd_qdt_insert(d, p, c);
+        s = g->weighted ? dd_qdt_insert_power(d, p, c) : dd_qdt_insert(d, p, c);
         if (s == DD_OK && pol->triangle_guide) {
             const dd_tri *x = d->qdt;
             for (size_t k = 0; k < x->boundary.n && s == DD_OK; k++) {
@@ -410,5 +461,16 @@ dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol)
         DD_PHASE_END(d, DD_PH_CONFLICT);
     }
     if (s != DD_OK) return s;
-    return pol->full_dt ? dd_full_collect_fill(d) : dd_qdt_collect_fill(d);
+    return construct_finish(g, pol);
 }
+
+static uint32_t mindeg_sample(dd_grr *g, uint32_t *guide)
+{
+    uint32_t u = dd_grr_sample_mindeg(g);
+    *guide = dd_grr_lowest_neighbour(g, u);
+    return u;
+}
+
+static const dd_grr_policy mindeg_policy = {mindeg_sample, 0, 0};
+
+dd_status dd_grr_fill_mindeg(dd_del *d) { return dd_grr_construct(d, &mindeg_policy); }

@@ -16,6 +16,14 @@
  *     it; a hash table keyed by the vertex triple finds it in O(1).
  * The iterative loop here is the paper's recursion unrolled.  The base
  * points are never sampled, and neither is the infinite vertex.
+ *
+ * On a weighted t (issue 44) the same construction builds the conflict
+ * regular triangulation of qdt.h: the link deletions and the locations
+ * use the power test (link.c, and each location's compiled power copy,
+ * chosen once per point), the base is taken among the neighbours, and
+ * the star's hidden points follow the neighbours (dd_qdt_insert_hidden).
+ * When the neighbours alone are coplanar the fill is sew-full's
+ * (dd_full_fill_power).
  */
 #ifndef DD_GRR_H
 #define DD_GRR_H
@@ -35,8 +43,13 @@ typedef struct dd_grr_policy {
     int full_dt;          /* build the full DT(P) (guide-only), not DT(x)  */
 } dd_grr_policy;
 
-/* GRR-CONSTRUCT: fills d->qdt and d->fill. */
+/* GRR-CONSTRUCT: fills d->qdt and d->fill, on a weighted t or not. */
 dd_status dd_grr_construct(dd_del *d, const dd_grr_policy *pol);
+
+/* GRR-CONSTRUCT with grr-neighbor's guides, deleting first a link vertex
+ * of least degree (dd_grr_sample_mindeg): auto's fill for large
+ * cavities the wrap declines, weighted or not.                         */
+dd_status dd_grr_fill_mindeg(dd_del *d);
 
 /* ---- for sampling policies ------------------------------------------------ */
 
@@ -59,7 +72,9 @@ uint32_t dd_grr_lowest_neighbour(const dd_grr *g, uint32_t v);
 
 /* ---- for constructions other than GRR-CONSTRUCT (grr-brio) --------------- */
 
-/* Extracts the link of d->q and fills the sampling sets. */
+/* Extracts the link of d->q and fills the sampling sets.  On a weighted
+ * t the caller has picked the base among the neighbours
+ * (dd_qdt_weighted_base).                                              */
 dd_status dd_grr_begin(dd_del *d, dd_grr **out);
 dd_link *dd_grr_link(dd_grr *g);
 /* The link vertices still deletable (base points excluded). */

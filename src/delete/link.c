@@ -20,6 +20,7 @@
 #include "delete/link.h"
 #include "delete/delete.h"
 #include "dtdel/alloc.h"
+#include "mesh/hidden.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -107,6 +108,7 @@ dd_status dd_link_extract(dd_link *l, dd_del *d)
     l->ntri = n;
     l->nnew = 0;
     l->inf_in_link = d->on_hull;
+    l->weighted = t->wt != NULL;
     return DD_OK;
 }
 
@@ -127,39 +129,72 @@ static int link_conflict(dd_del *d, uint32_t a, uint32_t b, uint32_t c, const do
     return dd_points_conflict(&t->pred, pts, k, -1, w);
 }
 
+/* The weighted link (a regular triangulation's, issue 44): 1 if vertex
+ * u is in power conflict with the link tetrahedron (a, b, c, q), CGAL's
+ * perturbed power test (mesh.c's rule for an infinite one).             */
+static int link_power_conflict(dd_del *d, uint32_t a, uint32_t b, uint32_t c, uint32_t u)
+{
+    dd_tri *t = d->t;
+    const uint32_t v[3] = {a, b, c};
+    const double *p = dd_pt(t, u), wp = t->wt[u];
+    int k = -1;
+    for (int i = 0; i < 3; i++)
+        if (v[i] == DD_INF) k = i;
+    if (k < 0) {
+        const double w[5] = {t->wt[a], t->wt[b], t->wt[c], d->qw, wp};
+        return dd_power_perturbed(&t->pred, dd_pt(t, a), dd_pt(t, b), dd_pt(t, c), d->qp, p, w) > 0;
+    }
+    /* (a, b, c, q) with DD_INF at k: its finite facet as dd_facet[k] lists it */
+    const uint32_t id[4] = {a, b, c, d->q};
+    const uint32_t f0 = id[dd_facet[k][0]], f1 = id[dd_facet[k][1]], f2 = id[dd_facet[k][2]];
+    const double w[4] = {t->wt[f0], t->wt[f1], t->wt[f2], wp};
+    return dd_power_infinite(&t->pred, dd_pt(t, f0), dd_pt(t, f1), dd_pt(t, f2), p, w) > 0;
+}
+
+/* The conflict test of the link: in-sphere, or (pw, a constant of each
+ * compiled copy of the ear search) power.                               */
+__attribute__((always_inline)) static inline int ear_conflict(dd_del *d, uint32_t a, uint32_t b, uint32_t c,
+                                                              uint32_t u, const int pw)
+{
+    return pw ? link_power_conflict(d, a, b, c, u) : link_conflict(d, a, b, c, dd_pt(d->t, u));
+}
+
 /* Is the ear (r[a], r[b], r[c]) of the ring r[0..k) (only the positions in
  * alive[] count) a triangle of the new link?                              */
-static int ear_ok(dd_del *d, const uint32_t *r, const uint32_t *alive, uint32_t n,
-                  uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+__attribute__((always_inline)) static inline int ear_ok(dd_del *d, const uint32_t *r, const uint32_t *alive,
+                                                        uint32_t n, uint32_t a, uint32_t b, uint32_t c, uint32_t p,
+                                                        const int pw)
 {
     dd_tri *t = d->t;
     uint32_t x = r[a], y = r[b], z = r[c];
     if (x != DD_INF && y != DD_INF && z != DD_INF) {
         if (dd_orient3d(&t->pred, dd_pt(t, x), dd_pt(t, y), dd_pt(t, z), d->qp) <= 0) return 0;
-    } else if (!link_conflict(d, x, y, z, dd_pt(t, p))) {
+    } else if (!ear_conflict(d, x, y, z, p, pw)) {
         return 0;
     }
     for (uint32_t m = 0; m < n; m++) {
         uint32_t w = alive[m];
         if (w == a || w == b || w == c || r[w] == DD_INF) continue;
-        if (link_conflict(d, x, y, z, dd_pt(t, r[w]))) return 0;
+        if (ear_conflict(d, x, y, z, r[w], pw)) return 0;
     }
     return 1;
 }
 
 /* Triangulates the ring positions alive[0..n) (cyclic order) into out
- * (triples of ring positions); returns the triangles written.            */
-static uint32_t clip_ears(dd_del *d, const uint32_t *r, uint32_t *alive, uint32_t n,
-                          uint32_t p, uint32_t *out)
+ * (triples of ring positions); returns the triangles written.  pw: the
+ * power test (a weighted t), a constant of each compiled copy.           */
+__attribute__((always_inline)) static inline uint32_t clip_ears_as(dd_del *d, const uint32_t *r, uint32_t *alive,
+                                                                   uint32_t n, uint32_t p, uint32_t *out,
+                                                                   const int pw)
 {
     uint32_t w = 0;
     while (n > 3) {
         uint32_t j = 0;
         if (n == 4) {   /* one test decides between the two diagonals */
-            j = ear_ok(d, r, alive, 4, alive[0], alive[1], alive[2], p) ? 1 : 2;
-            if (j == 2 && !ear_ok(d, r, alive, 4, alive[1], alive[2], alive[3], p)) return UINT32_MAX;
+            j = ear_ok(d, r, alive, 4, alive[0], alive[1], alive[2], p, pw) ? 1 : 2;
+            if (j == 2 && !ear_ok(d, r, alive, 4, alive[1], alive[2], alive[3], p, pw)) return UINT32_MAX;
         } else {
-            while (j < n && !ear_ok(d, r, alive, n, alive[(j + n - 1) % n], alive[j], alive[(j + 1) % n], p))
+            while (j < n && !ear_ok(d, r, alive, n, alive[(j + n - 1) % n], alive[j], alive[(j + 1) % n], p, pw))
                 j++;
             if (j == n) return UINT32_MAX;   /* no ear: infinity must enter */
         }
@@ -171,11 +206,22 @@ static uint32_t clip_ears(dd_del *d, const uint32_t *r, uint32_t *alive, uint32_
         n--;
     }
     /* The last triangle must be convex too; if not, infinity must enter. */
-    if (!ear_ok(d, r, alive, 3, alive[0], alive[1], alive[2], p)) return UINT32_MAX;
+    if (!ear_ok(d, r, alive, 3, alive[0], alive[1], alive[2], p, pw)) return UINT32_MAX;
     out[3 * w] = alive[0];
     out[3 * w + 1] = alive[1];
     out[3 * w + 2] = alive[2];
     return w + 1;
+}
+
+static uint32_t clip_ears(dd_del *d, const uint32_t *r, uint32_t *alive, uint32_t n, uint32_t p, uint32_t *out)
+{
+    return clip_ears_as(d, r, alive, n, p, out, 0);
+}
+
+static uint32_t clip_ears_power(dd_del *d, const uint32_t *r, uint32_t *alive, uint32_t n, uint32_t p,
+                                uint32_t *out)
+{
+    return clip_ears_as(d, r, alive, n, p, out, 1);
 }
 
 static uint32_t rpos_lookup(const dd_link *l, uint32_t v)
@@ -201,6 +247,8 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
     x->xyz = t->xyz;
     x->v2in = t->v2in;
     x->vcell = d->qdt_vcell;      /* free to use: qdt is not built yet */
+    x->wt = t->wt;
+    if (t->wt && !x->hid && dd_hidden_init(x, 0) != DD_OK) return DD_ERR_NOMEM;
     dd_clear_cells(x);
     x->qd_point = NULL;
     /* ids: q then the finite ring vertices; four independent ones first */
@@ -225,7 +273,18 @@ static dd_status fill_by_dt(dd_link *l, dd_del *d, uint32_t k, uint32_t *tri, ui
         uint32_t b4[4] = {ids[0], ids[1], ids[2], ids[3]};
         dd_make_first_cells(x, b4);
     }
-    for (uint32_t j = 4; j < n && s == DD_OK; j++) s = dd_insert_vertex(x, ids[j]);
+    for (uint32_t j = 4; j < n && s == DD_OK; j++) {
+        if (!t->wt) {
+            s = dd_insert_vertex(x, ids[j]);
+            continue;
+        }
+        /* q and the ring are vertices of every regular triangulation of a
+         * subset holding them (qdt.h): each insertion makes a vertex.    */
+        dd_fate fate;
+        uint32_t dup;
+        s = dd_insert_power(x, ids[j], DD_NONE, 0, &fate, &dup);
+        if (s == DD_OK && fate != DD_FATE_VERTEX) s = DD_ERR_INTERNAL;
+    }
     if (s != DD_OK) return s;
     /* The seed: the cell around q whose link triangle has the directed edge
      * u0 -> u1 (the link orientation of the facets of mesh.h).            */
@@ -297,7 +356,7 @@ dd_status dd_link_delete(dd_link *l, dd_del *d, uint32_t p)
     uint32_t alive[DD_LINK_EARS_UPTO], *tri = l->newtri, nt = UINT32_MAX;
     if (k <= DD_LINK_EARS_UPTO) {
         for (uint32_t j = 0; j < k; j++) alive[j] = j;
-        nt = clip_ears(d, l->ring, alive, k, p, tri);
+        nt = l->weighted ? clip_ears_power(d, l->ring, alive, k, p, tri) : clip_ears(d, l->ring, alive, k, p, tri);
         if (nt == k - 2)
             for (uint32_t j = 0; j < 3 * nt; j++) tri[j] = l->ring[tri[j]];   /* positions -> ids */
     }

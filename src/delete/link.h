@@ -6,7 +6,10 @@
  * triangulation whose in-circle test for triangle abc and point w is the
  * in-sphere test of the tetrahedron (a,b,c,q) and w (with CGAL's rule when
  * one of a,b,c is the infinite vertex): deleting a link vertex is a
- * Delaunay deletion on that sphere.
+ * Delaunay deletion on that sphere.  On a weighted t (issue 44) the link
+ * is q's in the regular triangulation and the test is the power test of
+ * (a,b,c,q) with the weights (CGAL's perturbed one), the rest unchanged:
+ * the ear argument only uses the lifting, which the weights change.
  *
  * Encoding (as the mesh, one dimension down): triangle t has vertices
  * lv[3t+0..2] and neighbours ln[3t+k] = 3u+j, u the triangle across the
@@ -42,6 +45,7 @@ typedef struct dd_link {
     dd_tri *scratch;            /* DT(ring + q) when infinity appears   */
     uint32_t nnew;              /* triangles created by the last delete */
     uint32_t nring;             /* p's degree at the last delete        */
+    int weighted;               /* t is weighted: the power test (below) */
 } dd_link;
 
 void dd_link_free(dd_link *l);

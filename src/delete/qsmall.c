@@ -13,6 +13,7 @@
  * vertices and 16-bit neighbour references.
  */
 #include "delete/qsmall.h"
+#include "delete/qdt.h"
 #include "dtdel/alloc.h"
 
 #include <stdlib.h>
@@ -33,6 +34,7 @@ typedef struct qs_cell {
 struct dd_qs {
     double pt[64][3];             /* local vertex -> point (QS_QD: q)   */
     double lift[64][4];           /* dd_lift_row of x relative to q; QS_QD: 0 */
+    double w[64];                 /* weighted t: local vertex -> weight   */
     double lift_err;              /* the in-sphere bound (0: exact, +inf: off) */
     double lift_m;                /* max |x_k - q_k| over the cavity      */
     uint32_t nlift, nexact;       /* points lifted; exact tests so far    */
@@ -202,6 +204,42 @@ static int qs_conflict(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
     return qs_conflict_exact(s, pr, c, x);
 }
 
+/* The weighted counterpart of qs_conflict (issue 44): qdt.h's rule on
+ * the local points and weights, CGAL's perturbed power predicates (their
+ * own semi-static filter; the lifted filter is the unweighted one's).   */
+static int qs_conflict_power(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x)
+{
+    const uint8_t *v = s->c[c].v;
+    const double *q[4];
+    double w[5];
+    int k = -1, kd = -1;
+    for (int i = 0; i < 4; i++) {
+        if (v[i] == QS_INF) k = i;
+        else if (v[i] == QS_QD) kd = i;
+        q[i] = v[i] == QS_INF ? NULL : s->pt[v[i]];
+        w[i] = v[i] == QS_INF ? 0 : s->w[v[i]];
+    }
+    if (kd >= 0) {               /* dummy cell: swap the first two others */
+        int a = kd == 0 ? 1 : 0, b = kd <= 1 ? 2 : 1;
+        const double *t = q[a]; q[a] = q[b]; q[b] = t;
+        double wt = w[a]; w[a] = w[b]; w[b] = wt;
+        if (k == a) k = b; else if (k == b) k = a;
+    }
+    w[4] = s->w[x];
+    if (k < 0) return dd_power_perturbed(pr, q[0], q[1], q[2], q[3], s->pt[x], w) > 0;
+    const int a = dd_facet[k][0], b = dd_facet[k][1], e = dd_facet[k][2];
+    const double wf[4] = {w[a], w[b], w[e], w[4]};
+    return dd_power_infinite(pr, q[a], q[b], q[e], s->pt[x], wf) > 0;
+}
+
+/* The conflict test of a compiled copy: pw (a constant) picks the power
+ * test of a weighted t.                                                 */
+__attribute__((always_inline)) static inline int qs_test(struct dd_qs *s, dd_pred *pr, uint32_t c, uint32_t x,
+                                                         const int pw)
+{
+    return pw ? qs_conflict_power(s, pr, c, x) : qs_conflict(s, pr, c, x);
+}
+
 /* Lifts the points 0..n-1 relative to q and sets the filter's bound:
  * lift.h's for the frame, 0 with integer lifts (then no shift).          */
 static void qs_lift(struct dd_qs *s, uint32_t n)
@@ -257,7 +295,8 @@ static dd_status qs_fill_star(struct dd_qs *s, uint32_t nb, uint32_t nc, uint32_
 }
 
 /* QCONFLICTDTINSERT: the conflict region of local point x from cell c0. */
-static dd_status qs_insert(struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t c0)
+__attribute__((always_inline)) static inline dd_status qs_insert_as(struct dd_qs *s, dd_pred *pr, uint32_t x,
+                                                                    uint32_t c0, const int pw)
 {
     uint32_t ep = qs_new_epoch(s), ns = 0, nc = 0, nb = 0;
     s->stamp[c0] = ep;
@@ -268,7 +307,7 @@ static dd_status qs_insert(struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t c0
         for (uint32_t i = 0; i < 4; i++) {
             uint32_t nb_ = s->c[c].n[i] >> 2;
             if (s->stamp[nb_] == ep) continue;
-            if (s->stamp[nb_] != ep + 1 && qs_conflict(s, pr, nb_, x)) {
+            if (s->stamp[nb_] != ep + 1 && qs_test(s, pr, nb_, x, pw)) {
                 s->stamp[nb_] = ep;
                 s->stack[ns++] = (uint16_t)nb_;
             } else {
@@ -282,10 +321,20 @@ static dd_status qs_insert(struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t c0
     return qs_fill_star(s, nb, nc, x);
 }
 
+static dd_status qs_insert(struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t c0)
+{
+    return qs_insert_as(s, pr, x, c0, 0);
+}
+
+static dd_status qs_insert_power(struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t c0)
+{
+    return qs_insert_as(s, pr, x, c0, 1);
+}
+
 /* CREATEQCONFLICTDT: the tetrahedron of local points 0..3 with its four
  * infinite cells, then the cells not in conflict with q replaced by the
- * dummy vertex's star.                                                   */
-static dd_status qs_create(struct dd_qs *s, dd_pred *pr)
+ * dummy vertex's star; pw: the power test.                               */
+static dd_status qs_create(struct dd_qs *s, dd_pred *pr, const int pw)
 {
     s->ncell = 0;
     s->free_head = QS_NONE;
@@ -319,7 +368,7 @@ static dd_status qs_create(struct dd_qs *s, dd_pred *pr)
     /* The region to replace: the cells not in conflict with q. */
     uint32_t ep = qs_new_epoch(s), nc = 0, nb = 0;
     for (uint32_t k = 0; k < 5; k++)
-        if (!qs_conflict(s, pr, k, QS_QD)) {
+        if (!(pw ? qs_conflict_power(s, pr, k, QS_QD) : qs_conflict(s, pr, k, QS_QD))) {
             s->stamp[k] = ep;
             s->conflict[nc++] = (uint16_t)k;
         }
@@ -331,14 +380,15 @@ static dd_status qs_create(struct dd_qs *s, dd_pred *pr)
     return qs_fill_star(s, nb, nc, QS_QD);
 }
 
-/* Unguided location: the first dummy cell in conflict with x. */
-static dd_status qs_scan(dd_del *d, struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t *cell)
+/* Unguided location: the first dummy cell in conflict with x; pw: the
+ * power test.                                                           */
+static dd_status qs_scan(dd_del *d, struct dd_qs *s, dd_pred *pr, uint32_t x, uint32_t *cell, const int pw)
 {
     for (uint32_t c = 0; c < s->ncell; c++) {
         const qs_cell *a = &s->c[c];
         if (a->v[0] == QS_DEAD || !qs_has(a, QS_QD)) continue;
         d->locate_steps++;
-        if (qs_conflict(s, pr, c, x)) { *cell = c; return DD_OK; }
+        if (pw ? qs_conflict_power(s, pr, c, x) : qs_conflict(s, pr, c, x)) { *cell = c; return DD_OK; }
     }
     return dd_fail(d->t, DD_ERR_INTERNAL, "no dummy cell of the conflict DT conflicts with point %u",
                    d->t->v2in[d->order.a[x]]);
@@ -375,7 +425,7 @@ static dd_status qs_export(dd_del *d, struct dd_qs *s)
 void dd_qs_order_nearest(dd_del *d)
 {
     uint32_t *a = d->order.a;
-    size_t n = d->order.n;
+    size_t n = d->nbr.n < d->order.n ? d->nbr.n : d->order.n;   /* the hidden sites stay last */
     double key[DD_QS_MAXV];
     const double *q = d->qp;
     for (size_t k = 0; k < n && k < DD_QS_MAXV; k++) {
@@ -393,6 +443,63 @@ void dd_qs_order_nearest(dd_del *d)
     }
 }
 
+/* 1 if local site x has the point and weight of an earlier site that is
+ * a vertex now (dd_insert_power's duplicate rule).                     */
+static int qs_duplicate(const struct dd_qs *s, uint32_t x)
+{
+    for (uint32_t u = 0; u < x; u++) {
+        if (dd_lex_cmp(s->pt[u], s->pt[x]) != 0 || s->w[u] != s->w[x]) continue;
+        for (uint32_t c = 0; c < s->ncell; c++)
+            if (s->c[c].v[0] != QS_DEAD && qs_has(&s->c[c], u)) return 1;
+    }
+    return 0;
+}
+
+/* The hidden sites nn..n-1 of a weighted t, after the neighbours (qdt.h):
+ * a duplicate, or a site in conflict with no cell without the dummy
+ * vertex (hidden), is skipped; the others go in from such a cell.      */
+static dd_status qs_insert_hidden(dd_del *d, struct dd_qs *s, dd_pred *pr, uint32_t nn, uint32_t n)
+{
+    dd_status st = DD_OK;
+    for (uint32_t x = nn; x < n && st == DD_OK; x++) {
+        if (qs_duplicate(s, x)) continue;
+        uint32_t c0 = QS_NONE;
+        for (uint32_t c = 0; c < s->ncell && c0 == QS_NONE; c++) {
+            const qs_cell *a = &s->c[c];
+            if (a->v[0] == QS_DEAD || qs_has(a, QS_QD)) continue;
+            d->locate_steps++;
+            if (qs_conflict_power(s, pr, c, x)) c0 = c;
+        }
+        if (c0 != QS_NONE) st = qs_insert_power(s, pr, x, c0);
+    }
+    return st;
+}
+
+/* dd_qs_fill on a weighted t: the neighbours d->order[0 .. d->nbr.n)
+ * (the base first), then the star's hidden points.                     */
+static dd_status qs_fill_power(dd_del *d, struct dd_qs *s, size_t n)
+{
+    dd_pred *pr = &d->qdt->pred;
+    const double *wt = d->t->wt;
+    for (size_t k = 0; k < n; k++) s->w[k] = wt[d->order.a[k]];
+    s->w[QS_QD] = d->qw;
+    s->w[QS_INF] = 0;
+    const uint32_t nn = (uint32_t)(d->nbr.n < n ? d->nbr.n : n);
+    DD_PHASE_BEGIN(d);
+    dd_status st = qs_create(s, pr, 1);
+    DD_PHASE_END(d, DD_PH_CONFLICT);
+    for (uint32_t k = 4; k < nn && st == DD_OK; k++) {
+        uint32_t c = 0;
+        st = qs_scan(d, s, pr, k, &c, 1);
+        DD_PHASE_END(d, DD_PH_LOCATE);
+        if (st == DD_OK) st = qs_insert_power(s, pr, k, c);
+        DD_PHASE_END(d, DD_PH_CONFLICT);
+    }
+    if (st == DD_OK) st = qs_insert_hidden(d, s, pr, nn, (uint32_t)n);
+    DD_PHASE_END(d, DD_PH_CONFLICT);
+    return st;
+}
+
 dd_status dd_qs_fill(dd_del *d)
 {
     size_t n = d->order.n;
@@ -403,19 +510,32 @@ dd_status dd_qs_fill(dd_del *d)
     dd_pred *pr = &d->qdt->pred;
     for (size_t k = 0; k < n; k++) memcpy(s->pt[k], dd_pt(d->t, d->order.a[k]), sizeof s->pt[k]);
     memcpy(s->pt[QS_QD], d->qp, sizeof s->pt[QS_QD]);
-    qs_lift(s, (uint32_t)n);
-    DD_PHASE_BEGIN(d);
-    st = qs_create(s, pr);
-    DD_PHASE_END(d, DD_PH_CONFLICT);
-    for (uint32_t k = 4; k < n && st == DD_OK; k++) {
-        uint32_t c = 0;
-        st = qs_scan(d, s, pr, k, &c);
-        DD_PHASE_END(d, DD_PH_LOCATE);
-        if (st == DD_OK) st = qs_insert(s, pr, k, c);
+    if (d->t->wt) {
+        st = qs_fill_power(d, s, n);
+    } else {
+        qs_lift(s, (uint32_t)n);
+        DD_PHASE_BEGIN(d);
+        st = qs_create(s, pr, 0);
         DD_PHASE_END(d, DD_PH_CONFLICT);
+        for (uint32_t k = 4; k < n && st == DD_OK; k++) {
+            uint32_t c = 0;
+            st = qs_scan(d, s, pr, k, &c, 0);
+            DD_PHASE_END(d, DD_PH_LOCATE);
+            if (st == DD_OK) st = qs_insert(s, pr, k, c);
+            DD_PHASE_END(d, DD_PH_CONFLICT);
+        }
     }
     if (st == DD_OK) st = qs_export(d, s);
     if (st == DD_ERR_INTERNAL && !d->t->err[0])
         dd_fail(d->t, st, "compact conflict DT: a cavity boundary is not closed (point %u)", d->t->v2in[d->q]);
     return st;
+}
+
+dd_status dd_qs_fill_nearest(dd_del *d)
+{
+    if (d->order.n > DD_QS_MAXV) return DD_ERR_INTERNAL;
+    dd_qs_order_nearest(d);
+    dd_status s = d->t->wt ? dd_qdt_weighted_base(d) : dd_del_pick_base(d, d->order.a, d->order.n);
+    if (s == DD_ERR_COPLANAR && d->t->wt) return dd_full_fill_power(d);
+    return s == DD_OK ? dd_qs_fill(d) : s;
 }

@@ -20,6 +20,12 @@
  *    pred.c, so every answer equals dd_cell_conflict's on the same cell.
  * When the structure is complete its fill cells (the non-dummy ones) are
  * exported into d->qdt / d->fill with vertex ids, for the framework's sew.
+ *
+ * On a weighted t (issue 44) it is the conflict regular triangulation of
+ * qdt.h: the local points carry their weights, every test is CGAL's
+ * perturbed power test (no lifted filter), and the star's hidden points
+ * (the sites after the neighbours) go in last, skipped when hidden or
+ * duplicates.  The choice is made once per deletion.
  */
 #ifndef DD_QSMALL_H
 #define DD_QSMALL_H
@@ -32,10 +38,19 @@
 /* Builds DT(x)_q of d->order[0..n) (d->order[0..3] the base, the rest in
  * insertion order; n = d->order.n <= DD_QS_MAXV) and lists its fill in
  * d->qdt / d->fill.  Counts located cells in d->locate_steps and cells
- * built in d->qdt->tets_created.                                         */
+ * built in d->qdt->tets_created.  Weighted t: the base among the
+ * neighbours (dd_qdt_weighted_base), the hidden sites after them.        */
 dd_status dd_qs_fill(dd_del *d);
 
-/* Sorts d->order (at most DD_QS_MAXV entries) by increasing distance to q
+/* auto's small-cavity fill, weighted or not: the neighbours nearest to q
+ * first (dd_qs_order_nearest), the base picked, dd_qs_fill; on a
+ * weighted t whose neighbours are coplanar, dd_full_fill_power.
+ * DD_ERR_INTERNAL when d->order.n > DD_QS_MAXV (sites, hidden ones
+ * included: the caller takes GRR then).                                 */
+dd_status dd_qs_fill_nearest(dd_del *d);
+
+/* Sorts q's neighbours at the front of d->order (at most DD_QS_MAXV
+ * entries; the hidden sites after them stay in place) by increasing distance to q
  * (rounded squared distances; ties keep their order): an insertion order
  * for the compact conflict DT that builds fewer cells than a random one
  * (auto.c).                                                              */
