@@ -227,7 +227,8 @@ static int whole_equal(wpair *p, uint32_t v)
 }
 
 /* Puts v back into our triangulation; while dd_reinsert refuses weighted
- * points, by building the triangulation again (slow, said once).       */
+ * points, by building the triangulation again (slow, said once; the
+ * engine rows then time one cold run each).                            */
 static int put_back(wrun *b, wpair *p, uint32_t v)
 {
     dd_status s = dd_reinsert(p->t, v);
@@ -249,7 +250,8 @@ static int engine_row(wrun *b, wpair *p, const wvertex *wv, const char *var, dou
     double us[MAX_REPS + 1], spent = 0;
     int reps = 0;
     *match = 0;
-    while (reps < MAX_REPS + 1 && (reps == 0 || spent < rep_budget_s)) {
+    /* one cold run while each run costs a rebuild (put_back) */
+    while (reps < MAX_REPS + 1 && (reps == 0 || (spent < rep_budget_s && !b->rebuilt_note))) {
         double t0 = now_seconds();
         dd_status s = dd_delete_with(p->t, wv->v, var);
         double t1 = now_seconds();
