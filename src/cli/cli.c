@@ -415,10 +415,12 @@ static const command commands[] = {
      "d', the input indices of a cell whose closure holds it (-1: the infinite\n"
      "vertex, for a point outside the hull: a hull facet it sees), then\n"
      "'nearest: v', a vertex nearest to it.  Exact.", cmd_locate},
-    {"move", "move FILE --vertex I --to X,Y,Z",
+    {"move", "move FILE --vertex I --to X,Y,Z [--weight W] [--discard-hidden]",
      "Moves vertex I to (X, Y, Z) and writes the canonical form of the new\n"
      "triangulation (as delete does); exit 1 if the point is another\n"
-     "vertex's or the move would leave only coplanar points.", cmd_move},
+     "vertex's or the move would leave only coplanar points.  Weighted\n"
+     "points (.xyzw, ...): I keeps its weight, or takes W (dd_move_weighted:\n"
+     "it may end hidden, and may hide others; a hidden point I moves too).", cmd_move},
     {"edit-bench", "edit-bench [N] [--passes P] [--set M] [--seed S]",
      "Against CGAL, each result compared: smoothing, every vertex of N\n"
      "uniform points (default 100000) moved by a random step of 5% of the\n"
