@@ -226,7 +226,7 @@ bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
 	@CFLAGS_USED="$(CFLAGS_R)" sh scripts/bench.sh quick $(BENCH_SCALE)
 
 plots: $(B)/summarize
-	@$(B)/summarize results results/*.csv && sh scripts/plots.sh results
+	@$(B)/summarize results results/*.csv $(if $(wildcard results/weighted/*.csv),--weighted results/weighted/*.csv) && sh scripts/plots.sh results
 
 # DESTDIR only stages the files: dtdel.pc names PREFIX.
 install: all install-python

@@ -16,6 +16,11 @@
 #   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt,
 #        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt,
 #        regular-bench -> OUT/regular.txt)
+#   (2d. weighted points, hidden points kept (issue 44): $DTDEL wbench ->
+#        OUT/weighted/<dataset>.csv and OUT/wdelete.txt, the per-degree
+#        deletion tables against CGAL's regular remove(); $DTDEL
+#        wedit-bench -> OUT/wedits.txt, the re-weighting, move and set
+#        deletion passes; summarize takes the CSVs after --weighted)
 # DTDEL, DTDEL_COUNT and SUMMARIZE name the binaries (default build/dtdel,
 # build/count/dtdel and build/summarize).  BENCH_SIZES=tiny runs the
 # deletion bench on uniform points only and shrinks the whole-workload
@@ -104,8 +109,24 @@ nw=1000000 nw0=200000 mw=50000
 [ "${BENCH_SIZES:-}" = tiny ] && nw=2000 nw0=1000 mw=500
 "$DTDEL" regular-bench "$nw" --base "$nw0" --inserts "$mw" >$out/regular.txt || rc=$?
 cat $out/regular.txt
+# weighted points (regular triangulations, hidden points kept, the bench's
+# mode): every deletion strategy against CGAL's Regular_triangulation_3
+# remove() per degree, then the re-weighting pass, the move pass and the
+# set deletions; results compared with CGAL's, cells and hidden sets
+wmode=$mode
+[ "${BENCH_SIZES:-}" = tiny ] && wmode=tiny
+mkdir -p $out/weighted
+rm -f $out/weighted/*.csv
+"$DTDEL" wbench --mode "$wmode" --scale "$scale" --out $out/weighted >$out/wdelete.txt || rc=$?
+cat $out/wdelete.txt
+nwe=100000 mwe=200000
+[ "$mode" = quick ] && nwe=20000 mwe=40000
+[ "${BENCH_SIZES:-}" = tiny ] && nwe=1000 mwe=2000
+"$DTDEL" wedit-bench "$nwe" --set "$mwe" >$out/wedits.txt || rc=$?
+cat $out/wedits.txt
 csvs=$(ls $out/*.csv)
-"$SUMMARIZE" "$out" $csvs
+wcsvs=$(ls $out/weighted/*.csv 2>/dev/null || true)
+"$SUMMARIZE" "$out" $csvs ${wcsvs:+--weighted $wcsvs}
 sh scripts/plots.sh "$out"
 if [ "$mode" = full ]; then
     sh scripts/readme-table.sh "$out/readme-table.md" README.md

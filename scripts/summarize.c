@@ -3,7 +3,13 @@
  * Markdown summary and the gnuplot data files (DESIGN 10).  Standalone:
  * libc and libm only, no state outside the context passed first.
  *
- *   summarize OUTDIR CSV...
+ *   summarize OUTDIR CSV... [--weighted CSV...]
+ *
+ * The CSVs after --weighted are those of dtdel wbench (weighted points,
+ * issue 44): their datasets get their sections like any other, but are
+ * pooled apart ("All weighted datasets", not in "All datasets" nor in
+ * its plot), and the weighted rows (write_weighted) go into summary.md
+ * and readme-table.md with the lines of OUTDIR/wedits.txt.
  *
  * Input.  Each CSV starts with exactly this header line:
  *   dataset,n,vertex,degree,on_hull,variant,us,tets_created,link_us,
@@ -169,6 +175,7 @@ typedef struct table {
 typedef struct ctx {
     const char *outdir;
     char *const *files;
+    size_t first_weighted;     /* files from this index on: --weighted    */
     strtab datasets, variants;
     row *rows;
     size_t nrows, caprows;
@@ -216,6 +223,18 @@ static size_t intern(strtab *t, const char *s)
     memcpy(copy, s, len + 1);
     t->s[t->n] = copy;
     return t->n++;
+}
+
+/* The pools: every unweighted dataset, every weighted one. */
+#define POOL_PLAIN ((size_t)-1)
+#define POOL_WEIGHTED ((size_t)-2)
+
+/* Whether row r belongs to dataset ds or to the pool ds names. */
+static int in_group(const ctx *c, const struct row *r, size_t ds)
+{
+    if (ds == POOL_PLAIN) return r->file < c->first_weighted;
+    if (ds == POOL_WEIGHTED) return r->file >= c->first_weighted;
+    return r->ds == ds;
 }
 
 /* ---- degree buckets --------------------------------------------------------- */
@@ -521,7 +540,7 @@ static void free_table(table *t)
     memset(t, 0, sizeof *t);
 }
 
-/* Aggregates the rows of dataset ds (or every row when ds == (size_t)-1)
+/* Aggregates the rows of dataset ds (or of a pool: POOL_PLAIN, POOL_WEIGHTED)
  * into t: cells by (bucket, variant), deletions per bucket. */
 static int build_table(ctx *c, size_t ds, table *t)
 {
@@ -536,7 +555,7 @@ static int build_table(ctx *c, size_t ds, table *t)
     int maxb = 0;
     for (size_t i = 0; i < c->nrows; i++) {
         const row *r = &c->rows[i];
-        if (ds != (size_t)-1 && r->ds != ds) continue;
+        if (!in_group(c, r, ds)) continue;
         if (r->bucket > maxb) maxb = r->bucket;
         idx[k++] = i;
     }
@@ -745,6 +764,22 @@ static void write_time_table(const ctx *c, const table *t, FILE *out)
     fprintf(out, "\n\n");
 }
 
+/* On a weighted dataset: the engine deletion variants of the run with no
+ * rows there, which refused weighted points (dtdel wbench says n/a).   */
+static void write_refused(const ctx *c, const table *t, size_t ds, FILE *out)
+{
+    size_t i = 0;
+    while (i < c->nrows && c->rows[i].ds != ds) i++;
+    if (i == c->nrows || !in_group(c, &c->rows[i], POOL_WEIGHTED)) return;
+    int any = 0;
+    for (size_t v = 0; v < c->variants.n; v++) {
+        const char *name = c->variants.s[v];
+        if (!is_deletion_variant(name) || strstr(name, "-paired") || column_of(c, t, name) >= 0) continue;
+        fprintf(out, "%s%s", any++ ? ", " : "n/a (the strategy refuses weighted points in this build): ", name);
+    }
+    if (any) fprintf(out, ".\n\n");
+}
+
 /* Deletion vs re-insertion: per bucket with insert rows, insert's median
  * and each deletion variant's median / insert's median. */
 static void write_insert_table(const ctx *c, const table *t, FILE *out)
@@ -805,7 +840,7 @@ static void write_mismatches(const ctx *c, const table *t, size_t ds, FILE *out)
     size_t listed = 0;
     for (size_t i = 0; i < c->nrows && listed < MAX_LISTED_MISMATCHES; i++) {
         const row *r = &c->rows[i];
-        if (r->match || (ds != (size_t)-1 && r->ds != ds)) continue;
+        if (r->match || !in_group(c, r, ds)) continue;
         fprintf(out, "- MISMATCH %s n=%lld vertex=%lld degree=%lld variant=%s (%s:%ld)\n",
                 c->datasets.s[r->ds], r->n, r->vertex, r->degree, c->variants.s[r->var],
                 c->files[r->file], r->line);
@@ -823,7 +858,7 @@ static int phase_medians(const ctx *c, const table *t, size_t ds, size_t j, size
 {
     size_t k = 0;
     for (size_t i = 0; i < c->nrows; i++)
-        if (c->rows[i].var == t->var[j] && (ds == (size_t)-1 || c->rows[i].ds == ds))
+        if (c->rows[i].var == t->var[j] && in_group(c, &c->rows[i], ds))
             idx[k++] = i;
     int any = 0;
     for (int p = 0; p < NPHASES; p++) {
@@ -984,6 +1019,8 @@ static int write_plotdata(ctx *c, const table *t, size_t ds, const char *name)
  * bucket of the highest degree at size n (on the curves each size has
  * one degree, or nearly: the moment curve n - 1, the helix about 2√n).  */
 typedef struct readme_spec { const char *dataset; long long n, lo, hi; } readme_spec;
+/* hi of a row over every degree (its cells say the degrees seen). */
+#define ALL_DEGREES (1LL << 40)
 static const readme_spec readme_rows[] = {
     {"moment", 64, 0, 0},    {"moment", 256, 0, 0},   {"moment", 1024, 0, 0},
     {"helix", 16000, 0, 0},  {"helix", 64000, 0, 0},  {"uniform", 0, 12, 16},
@@ -1090,7 +1127,7 @@ static void readme_missing(const readme_spec *s, FILE *out, int first)
 /* One row of the table from the rows of spec s; 0 if the run has none.
  * idx, sizes: scratch for nrows entries each. */
 static int readme_row(const ctx *c, const readme_spec *s, const size_t *col, size_t ncol,
-                      size_t *idx, long long *sizes, FILE *out)
+                      size_t *idx, long long *sizes, const char *none, FILE *out)
 {
     size_t ds = find_name(&c->datasets, s->dataset), k = 0;
     if (ds == (size_t)-1) return 0;
@@ -1126,8 +1163,10 @@ static int readme_row(const ctx *c, const readme_spec *s, const size_t *col, siz
 
     /* degree (as the bench counts it: the infinite vertex too): the range
      * asked for, else the one degree, else about the median             */
-    if (s->lo || s->hi) {
+    if ((s->lo || s->hi) && hi < ALL_DEGREES) {
         fprintf(out, " | %lld–%lld", lo, hi - 1);
+    } else if (s->lo || s->hi) {
+        fprintf(out, " | %lld–%lld", dmin, dmax);
     } else if (dmin == dmax) {
         fprintf(out, " | %lld", dmin);
     } else {
@@ -1147,7 +1186,7 @@ static int readme_row(const ctx *c, const readme_spec *s, const size_t *col, siz
     fprintf(out, " | %zu | %s |", most, fmt_sig(ref, b));
     for (size_t j = 0; j < ncol; j++) {
         double med = variant_median(c, idx, m, col[j], &cnt);
-        if (isnan(ref) || !(med > 0)) fprintf(out, " — |");
+        if (isnan(ref) || !(med > 0)) fprintf(out, " %s |", none);
         else fprintf(out, " %s× |", fmt_sig(ref / med, b));
     }
     fputc('\n', out);
@@ -1306,6 +1345,113 @@ static void readme_queries(const ctx *c, FILE *out)
     fputs(churn, out);
 }
 
+/* ---- weighted points (dtdel wbench, wedit-bench; issue 44) ------------------ */
+
+/* The weighted deletion rows and their targets (issue 44): the ratio of
+ * CGAL's regular remove() to the default strategy's, over the rows.     */
+static const struct { readme_spec s; const char *target; } weighted_rows[] = {
+    {{"wuniform", 0, 4, 32}, "≥ 15×"}, {{"wuniform-most", 0, 4, 32}, ""}, {{"molecule", 0, 4, 32}, ""},
+    {{"wgrid", 0, 4, 32}, ""},         {{"wmoment", 256, 0, ALL_DEGREES}, "≥ 300×"},
+    {{"whelix", 16000, 0, ALL_DEGREES}, "≥ 200×"}};
+#define NWEIGHTED (sizeof weighted_rows / sizeof weighted_rows[0])
+
+/* The edits' lines of wedits.txt: their prefix, name and target. */
+static const struct { const char *prefix, *name, *target; } wedit_rows[] = {
+    {"wreweight:", "re-weight every vertex by ±10% (exudation-like)", "≥ 8×"},
+    {"wmove:", "move every vertex by 5% of the spacing (Mesh_3-like)", "≥ 8×"},
+    {"wdelete-set 10%:", "delete a set, 10%", "≥ 8×"},
+    {"wdelete-set 90%:", "delete a set, 90%", "≥ 50×"}};
+#define NWEDITS (sizeof wedit_rows / sizeof wedit_rows[0])
+
+/* The number n in the first "; n WORDS" of line, or -1. */
+static long long after_semicolon(const char *line, const char *words)
+{
+    long long v;
+    int at;
+    for (const char *m = strstr(line, "; "); m; m = strstr(m + 1, "; "))
+        if (sscanf(m, "; %lld%n", &v, &at) == 1 && !strncmp(m + at, words, strlen(words))) return v;
+    return -1;
+}
+
+/* One row of the edits' table from a line of wedits.txt (dtdel
+ * wedit-bench), if it is one: our µs and CGAL's, their ratio (n/a while
+ * the engine refuses the call), the target.                            */
+static void weighted_edit_row(const char *line, FILE *out)
+{
+    for (size_t i = 0; i < NWEDITS; i++) {
+        size_t len = strlen(wedit_rows[i].prefix);
+        if (strncmp(line, wedit_rows[i].prefix, len)) continue;
+        long long n = 0, k = 0;
+        double ours = NAN, cgal = NAN, ratio = NAN;
+        if (sscanf(line + len, " %lld of %lld", &k, &n) != 2) sscanf(line + len, " %lld", &n);
+        const char *d = strstr(line, "): dtdel "), *g = strstr(line, ", CGAL ");
+        if (d) sscanf(d + 9, "%lf", &ours);
+        for (const char *v = g ? g + 7 : NULL; v && *v; v++)
+            if (*v >= '0' && *v <= '9' && v[-1] == ' ') { sscanf(v, "%lf", &cgal); break; }
+        const char *x = g ? strstr(g, "x); ") : NULL;
+        while (x && x > g && x[-1] != '(') x--;
+        if (x && !isnan(ours)) sscanf(x, "%lf", &ratio);
+        const long long mism = after_semicolon(line, " mismatches"), edits = after_semicolon(line, " edits, ");
+        const char *e = strstr(line, " edits, ");
+        long long fb = -1;
+        if (e) sscanf(e, " edits, %lld by", &fb);
+        char b[40], b1[40], b2[40], b3[40], extra[96] = "";
+        if (!strcmp(wedit_rows[i].prefix, "wmove:") && edits > 0 && fb >= 0)
+            snprintf(extra, sizeof extra, " (CGAL: move() %.0f%%, remove+insert %.0f%%)",
+                     100.0 * (double)(edits - fb) / (double)edits, 100.0 * (double)fb / (double)edits);
+        fprintf(out, "| %s, %s points%s%s | %s | %s | %s | %s |\n", wedit_rows[i].name, fmt_int(n, b), extra,
+                mism > 0 ? " (**differs from CGAL**)" : "", isnan(ours) ? "n/a" : fmt_sig(ours, b1),
+                fmt_sig(cgal, b2), isnan(ratio) ? "n/a" : (fmt_sig(ratio, b3), strcat(b3, "×")), wedit_rows[i].target);
+        return;
+    }
+}
+
+/* The weighted rows (summary.md and readme-table.md): the deletion rows
+ * (default strategy and every other, n/a where a strategy refuses
+ * weighted points) and the edits of OUTDIR/wedits.txt, with targets.    */
+static void write_weighted(const ctx *c, FILE *out)
+{
+    size_t nw = 0;
+    for (size_t i = 0; i < c->nrows; i++) nw += in_group(c, &c->rows[i], POOL_WEIGHTED);
+    if (!nw) return;
+    size_t *col = malloc((c->variants.n ? c->variants.n : 1) * sizeof *col);
+    size_t *idx = malloc((c->nrows ? c->nrows : 1) * sizeof *idx);
+    long long *sizes = malloc((c->nrows ? c->nrows : 1) * sizeof *sizes);
+    if (!col || !idx || !sizes) { free(col), free(idx), free(sizes); return; }
+    size_t ncol = readme_columns(c, col);
+    if (ncol && !strcmp(c->variants.s[col[ncol - 1]], "cgal-rnd")) ncol--;    /* none for weights */
+    fprintf(out, "\n| weighted points, hidden points kept | degree | deletions | CGAL regular remove µs |");
+    for (size_t j = 0; j < ncol; j++) fprintf(out, " %s |", c->variants.s[col[j]]);
+    fprintf(out, " target |\n|---|---:|---:|---:|");
+    for (size_t j = 0; j < ncol; j++) fprintf(out, "---:|");
+    fprintf(out, "---|\n");
+    for (size_t i = 0; i < NWEIGHTED; i++) {
+        char line[4096];
+        FILE *mem = fmemopen(line, sizeof line, "w");
+        if (!mem) continue;
+        int got = readme_row(c, &weighted_rows[i].s, col, ncol, idx, sizes, "n/a", mem);
+        fclose(mem);
+        size_t len = strlen(line);
+        if (!got || !len) continue;
+        line[len - 1] = '\0';                           /* the newline */
+        fprintf(out, "%s %s |\n", line, weighted_rows[i].target);
+    }
+    fprintf(out, "\nn/a: the strategy refuses weighted points in this build (DD_ERR_UNSUPPORTED). Target: on "
+                 "the default strategy (%s).\n", c->variants.n ? "auto" : "");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/wedits.txt", c->outdir);
+    FILE *f = fopen(path, "r");
+    if (f) {
+        fputs("\n| weighted edits (wuniform) | dtdel µs | CGAL µs | ratio | target |\n|---|---:|---:|---:|---|\n", out);
+        char *line = NULL;
+        size_t cap = 0;
+        while (read_line(f, &line, &cap) == 1) weighted_edit_row(line, out);
+        free(line);
+        fclose(f);
+    }
+    free(col), free(idx), free(sizes);
+}
+
 static int write_readme_table(ctx *c)
 {
     char path[4096];
@@ -1329,7 +1475,7 @@ static int write_readme_table(ctx *c)
     fputc('\n', out);
     int present[NREADME], missing = 0;
     for (size_t i = 0; i < NREADME; i++) {
-        present[i] = readme_row(c, &readme_rows[i], col, ncol, idx, sizes, out);
+        present[i] = readme_row(c, &readme_rows[i], col, ncol, idx, sizes, "—", out);
         missing += !present[i];
     }
     if (missing) {                  /* paragraphs: a blank line before each */
@@ -1360,6 +1506,7 @@ static int write_readme_table(ctx *c)
     readme_construction(c, out);
     fputc('\n', out);
     readme_queries(c, out);
+    write_weighted(c, out);
     free(col);
     free(idx);
     free(sizes);
@@ -1374,6 +1521,25 @@ static int make_dir(ctx *c, const char *path)
 {
     if (mkdir(path, 0777) && errno != EEXIST)
         return fail(c, "cannot create directory %s: %s", path, strerror(errno));
+    return 0;
+}
+
+/* The weighted datasets pooled, then the weighted rows of issue 44. */
+static int write_weighted_pool(ctx *c, FILE *md)
+{
+    table w;
+    if (build_table(c, POOL_WEIGHTED, &w)) return -1;
+    if (w.rows) {
+        fprintf(md, "## All weighted datasets\n\nRows of every weighted dataset (dtdel wbench: regular "
+                    "triangulations, hidden points kept, against CGAL's Regular_triangulation_3::remove()) "
+                    "pooled per bucket and variant; %zu deletions, %zu rows.\n\n", w.total_deletions, w.rows);
+        write_time_table(c, &w, md);
+        write_mismatches(c, &w, POOL_WEIGHTED, md);
+        fprintf(md, "## Weighted points: the rows of issue 44\n");
+        write_weighted(c, md);
+        fputc('\n', md);
+    }
+    free_table(&w);
     return 0;
 }
 
@@ -1394,8 +1560,10 @@ static int write_all(ctx *c)
     write_meta(c, md);
     table all;
     if (build_table(c, (size_t)-1, &all)) { fclose(md); fclose(list); return -1; }
-    if (all.mismatches)
-        fprintf(md, "**MISMATCHES: %zu in total** -- see the datasets below.\n\n", all.mismatches);
+    size_t mism = 0;
+    for (size_t i = 0; i < c->nrows; i++) mism += !c->rows[i].match;
+    if (mism)
+        fprintf(md, "**MISMATCHES: %zu in total** -- see the datasets below.\n\n", mism);
     else
         fprintf(md, "mismatches: 0 (every deletion of every variant equals CGAL's result)\n\n");
     fprintf(md, "Degree buckets [lo,hi): [4,8), then [2^k, 1.5·2^k) and [1.5·2^k, 2^(k+1)); "
@@ -1414,6 +1582,7 @@ static int write_all(ctx *c)
         fprintf(md, "; %zu deletions (%zu on the hull), %zu rows.\n\n", t.total_deletions,
                 t.on_hull, t.rows);
         write_time_table(c, &t, md);
+        write_refused(c, &t, d, md);
         write_mismatches(c, &t, d, md);
         write_insert_table(c, &t, md);
         st = write_phases(c, &t, d, md, NULL);
@@ -1439,6 +1608,7 @@ static int write_all(ctx *c)
         if (!st) st = write_plotdata(c, &all, (size_t)-1, ALL_NAME);
     }
     free_table(&all);
+    if (!st) st = write_weighted_pool(c, md);
     if (!st) st = write_readme_table(c);
     int bad = ferror(md);
     if (fclose(md) || bad) st = st ? st : fail(c, "cannot write %s", path);
@@ -1458,9 +1628,16 @@ int main(int argc, char **argv)
     ctx c;
     memset(&c, 0, sizeof c);
     c.outdir = argv[1];
-    c.files = argv + 2;
-    int st = 0;
-    for (int i = 2; i < argc && !st; i++) st = load_csv(&c, (size_t)(i - 2));
+    char **files = malloc((size_t)argc * sizeof *files);
+    size_t nfiles = 0;
+    c.first_weighted = (size_t)argc;
+    for (int i = 2; files && i < argc; i++) {
+        if (!strcmp(argv[i], "--weighted")) c.first_weighted = nfiles;
+        else files[nfiles++] = argv[i];
+    }
+    c.files = files;
+    int st = files ? 0 : fail(&c, "out of memory");
+    for (size_t i = 0; i < nfiles && !st; i++) st = load_csv(&c, i);
     if (!st && c.nrows == 0) st = fail(&c, "no data rows in the CSV files given");
     if (!st) {
         c.scratch = malloc(c.nrows * sizeof *c.scratch);
@@ -1476,5 +1653,6 @@ int main(int argc, char **argv)
     free(c.rows);
     free(c.var_rank);
     free(c.scratch);
+    free(files);
     return st ? EXIT_INPUT : 0;
 }

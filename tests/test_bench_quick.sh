@@ -29,6 +29,16 @@ else
 fi
 [ -s "$tree/results/quick/summary.md" ] && ok writes-results-quick ||
     bad writes-results-quick "no results/quick/summary.md"
+# the weighted rows (issue 44): deletion tables and edits at tiny sizes,
+# every result compared with CGAL's (0 mismatches; n/a while the engine
+# refuses a call on weighted points)
+q=$tree/results/quick
+grep -qx "wbench: 0 mismatches" "$q/wdelete.txt" 2>/dev/null && [ -s "$q/weighted/wuniform.csv" ] &&
+    ok weighted-deletions || bad weighted-deletions "wdelete.txt: $(tail -n 2 "$q/wdelete.txt" 2>/dev/null | tr '\n' ' ')"
+nw=$(grep -cE '^(wreweight|wmove|wdelete-set 10%|wdelete-set 90%):.*(; 0 mismatches|mismatches n/a)' "$q/wedits.txt" 2>/dev/null)
+[ "$nw" = 4 ] && ok weighted-edits || bad weighted-edits "wedits.txt: $(head -c 400 "$q/wedits.txt" 2>/dev/null)"
+grep -q "^## All weighted datasets" "$q/summary.md" 2>/dev/null && grep -q "^| weighted edits" "$q/readme-table.md" &&
+    ok weighted-summary || bad weighted-summary "no weighted rows in summary.md or readme-table.md"
 grep -q "results/quick/summary.md" "$tmp/err" && ok says-where ||
     bad says-where "the run does not say where its results are"
 exit $fail

@@ -451,6 +451,28 @@ static const command commands[] = {
      "cells and hidden sets are compared (after each construction and at five\n"
      "checkpoints of the insertions); mismatches are printed, exit 1 on any.\n"
      "While the engine refuses weights, its figures read n/a.", cmd_regular_bench},
+    {"wbench", "wbench [--mode quick|full|tiny] [--scale F] [--out DIR] [--dataset NAME] [--seed S] [--discard-hidden]",
+     "Weighted deletions (make bench runs it): every strategy (dtdel variants)\n"
+     "against CGAL's Regular_triangulation_3::remove() on the weighted datasets\n"
+     "(wuniform, wuniform-most, molecule, wgrid, wmoment up to n = 256, whelix\n"
+     "up to n = 16000), hidden points kept (--discard-hidden: forgotten), each\n"
+     "deletion timed alone and compared with CGAL's (the cells it made and\n"
+     "the hidden set), the vertex put back untimed; one CSV per dataset in\n"
+     "DIR (default results/weighted), as dtdel bench writes them.  A\n"
+     "strategy refusing weighted points prints n/a.  --mode tiny: a few\n"
+     "deletions on small sets, for tests.  Exit 1 on any mismatch.", cmd_wbench},
+    {"wedit-bench", "wedit-bench [N] [--passes P] [--set M] [--seed S] [--discard-hidden]",
+     "Weighted edits against CGAL's Regular_triangulation_3, hidden points\n"
+     "kept (--discard-hidden: forgotten): every vertex of N wuniform weighted\n"
+     "points (default 100000) re-weighted by a random factor in [0.9, 1.1)\n"
+     "(dd_move_weighted; CGAL's remove and insert), then moved by 5% of the\n"
+     "mean spacing in a random direction, P passes (default 2; dd_move;\n"
+     "CGAL's move(), or remove and insert where move() would not give the\n"
+     "reference result: counted); then dd_delete_set of a random 10% and 90%\n"
+     "of the vertices of M wuniform weighted points (default 200000) against\n"
+     "CGAL's remove() one by one.  Results compared whole (cells and hidden\n"
+     "set) at five checkpoints a pass; exit 1 on a mismatch.  Calls the\n"
+     "engine refuses read n/a.", cmd_wedit_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
