@@ -270,6 +270,14 @@ clean:
 # one per core) split the cases and the last line sums them.
 SOAK_SCALE ?= 1
 SOAK_JOBS  ?= 2
+# Two halves, one binary: tests/soak.c (unweighted cases, the workers) and
+# tests/soak_weighted.c (regular triangulations), sharing tests/soak.h.
+SOAK_SRC = tests/soak.c tests/soak_weighted.c
+$(B)/tests/soak: $(SOAK_SRC) tests/soak.h tests/testweighted.h tests/fuzz/canon.h $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h | $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) -c tests/soak.c -o $@.o
+	$(CC) $(CFLAGS_R) -c tests/soak_weighted.c -o $@-weighted.o
+	$(CXX) $(CXXFLAGS_R) $@.o $@-weighted.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a -o $@ $(LIBS)
 .PHONY: soak
 soak: deps $(B)/tests/soak
 	@$(B)/tests/soak --jobs $(SOAK_JOBS) --scale $(SOAK_SCALE)
