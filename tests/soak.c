@@ -36,6 +36,9 @@
  * whole canonical form is compared with CGAL's and dd_check validates the
  * engine's triangulation.
  *
+ * The weighted cases (regular triangulations, both hidden modes, the
+ * same transforms) come after these in the numbering: soak_weighted.c.
+ *
  * --jobs J forks J workers that take the cases from a queue, the dearest
  * first; the parent waits for them and sums.  The last line is "soak:
  * N deletions, I insertions, V moves, M mismatches".  On a mismatch the
@@ -691,20 +694,20 @@ static int run_seq(soak *s, const soak_case *c, rng *r)
 static int run_down(soak *s, const soak_case *c, rng *r)
 {
     uint64_t done = 0, tries = 0;
-    double *pool;
+    double *reservoir;
     uint32_t npool;
-    if (dataset_points(s, c->dataset, down_pool(c->dataset), c->seed, &pool, &npool)) return -1;
-    soak_transform(c->tf, pool, NULL, npool);
+    if (dataset_points(s, c->dataset, down_pool(c->dataset), c->seed, &reservoir, &npool)) return -1;
+    soak_transform(c->tf, reservoir, NULL, npool);
     double *xyz = malloc(3 * 40 * sizeof *xyz);
-    if (!xyz) { free(pool); return -1; }
+    if (!xyz) { free(reservoir); return -1; }
     while (done < c->quota && tries++ < 100 * c->quota) {
         uint32_t k = 5 + below(r, 36);
         if (k > npool) k = npool;
         for (uint32_t i = 0; i < k; i++)       /* with repetition: duplicates too */
-            memcpy(xyz + 3 * i, pool + 3 * (size_t)below(r, npool), 3 * sizeof *xyz);
+            memcpy(xyz + 3 * i, reservoir + 3 * (size_t)below(r, npool), 3 * sizeof *xyz);
         pair p;
         int b = pair_build(s, &p, xyz, k);
-        if (b < 0) { free(pool); free(xyz); return -1; }
+        if (b < 0) { free(reservoir); free(xyz); return -1; }
         if (b > 0) { s->round++; continue; }
         uint64_t start = s->st.deletions;
         s->step = 0;
@@ -719,19 +722,19 @@ static int run_down(soak *s, const soak_case *c, rng *r)
             }
             for (uint32_t i = 0; i < n && !gone; i++) {
                 int rc = pair_delete(s, &p, order[i]);
-                if (rc < 0) { pair_free(&p); free(pool); free(xyz); return -1; }
+                if (rc < 0) { pair_free(&p); free(reservoir); free(xyz); return -1; }
                 if (rc == 0) gone = 1;
                 else s->st.refusals++;
             }
             if (!gone) break;                    /* every deletion would drop the dimension */
             s->step++;
-            if (pair_full_check(s, &p, "a deletion")) { pair_free(&p); free(pool); free(xyz); return -1; }
+            if (pair_full_check(s, &p, "a deletion")) { pair_free(&p); free(reservoir); free(xyz); return -1; }
         }
         pair_free(&p);
         done += s->st.deletions - start;
         s->round++;
     }
-    free(pool);
+    free(reservoir);
     free(xyz);
     return 0;
 }

@@ -72,18 +72,15 @@ typedef struct soak {
     uint64_t round, step;
 } soak;
 
-/* ---- a seeded generator (splitmix64) ---------------------------------------- */
+/* ---- a seeded generator: testlib.h's (splitmix64) ------------------------------ */
 
-typedef struct rng { uint64_t s; } rng;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"     /* testlib.h's runner: unused here */
+#include "testlib.h"
+#pragma GCC diagnostic pop
 
-static inline uint64_t next_u64(rng *r)
-{
-    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
+typedef tl_rng rng;
+static inline uint64_t next_u64(rng *r) { return tl_next(r); }
 static inline uint32_t below(rng *r, uint32_t m) { return (uint32_t)(next_u64(r) % m); }
 
 /* ---- shared by both halves (soak.c) ----------------------------------------- */

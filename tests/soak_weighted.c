@@ -35,10 +35,6 @@
 #include "cgal/cgal_regular.h"
 #include "datasets/datasets.h"
 #include "soak.h"
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"     /* testlib.h's runner: unused */
-#include "testlib.h"
-#pragma GCC diagnostic pop
 #include "testweighted.h"
 #include "fuzz/canon.h"
 

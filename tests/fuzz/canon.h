@@ -41,14 +41,14 @@ static inline void canon_remap(int32_t *c, size_t nc, const uint32_t *map)
                 o[y - 1] = tmp;
             }
     }
-    qsort(c, nc, 4 * sizeof *c, canon_cmp4);
+    if (nc > 1) qsort(c, nc, 4 * sizeof *c, canon_cmp4);
 }
 
 /* Renames a list of indices through map and sorts it. */
 static inline void canon_remap_list(uint32_t *a, size_t n, const uint32_t *map)
 {
     for (size_t i = 0; i < n; i++) a[i] = map[a[i]];
-    qsort(a, n, sizeof *a, canon_cmp_u32);
+    if (n > 1) qsort(a, n, sizeof *a, canon_cmp_u32);
 }
 
 #endif
