@@ -76,10 +76,21 @@ static const char *const mode_names[NUM_MODES] = {"seq", "down", "churn"};
 const char *const soak_tf_names[NUM_TF] = {"x1",     "x1e16",     "x1e-16", "x1e150", "x1e-150", "far",
                                              "x1e300", "x1e-300", "x2^-1050", "mixed", "span"};
 
+/* The unweighted dataset a weighted one's points come from, for the
+ * sizes below: wmoment and whelix are the curves, wgrid a grid.        */
+static const char *shape(const char *name)
+{
+    static const char *const w[][2] = {{"wmoment", "moment"}, {"whelix", "helix"}, {"wgrid", "grid"}};
+    for (size_t i = 0; i < sizeof w / sizeof *w; i++)
+        if (!strcmp(name, w[i][0])) return w[i][1];
+    return name;
+}
+
 /* Largest set a case takes from a dataset: moment and helix have high
  * degrees (CGAL's remove() costs d^2 there), so their sets stay small.  */
 static uint32_t dataset_cap(const char *name)
 {
+    name = shape(name);
     if (!strcmp(name, "moment")) return 96;
     if (!strcmp(name, "helix")) return 2000;
     if (!strcmp(name, "cosphere")) return 6000;
@@ -90,6 +101,7 @@ static uint32_t dataset_cap(const char *name)
  * local check d^2 (d up to 95 and about 90 here), so they take fewer.  */
 static double dataset_weight(const char *name)
 {
+    name = shape(name);
     return !strcmp(name, "moment") || !strcmp(name, "helix") ? 0.35 : 1.0;
 }
 
@@ -97,6 +109,7 @@ static double dataset_weight(const char *name)
  * subsets stay degenerate.                                              */
 static uint32_t down_pool(const char *name)
 {
+    name = shape(name);
     if (!strcmp(name, "grid") || !strcmp(name, "grid-perturbed") || !strcmp(name, "layers")) return 64;
     if (!strcmp(name, "moment") || !strcmp(name, "cosphere")) return 60;
     return 400;
@@ -843,7 +856,7 @@ static double case_cost(size_t k)
     soak_case c = make_case(k, 1, 1);
     if (c.weighted) return soak_weighted_cost(&c);
     double cost = (double)c.quota;
-    if (!strcmp(c.dataset, "moment") || !strcmp(c.dataset, "helix")) cost *= 15;
+    if (!strcmp(shape(c.dataset), "moment") || !strcmp(shape(c.dataset), "helix")) cost *= 15;
     if (c.tf == TF_E150 || c.tf == TF_EM150) cost *= 6;
     return cost;
 }
