@@ -9,6 +9,7 @@
 #include "dtdel.h"
 #include "dtdel_stats.h"
 #include "delete/delete.h"
+#include "mesh/hidden_move.h"
 #include "geom/expansion.h"
 #include "dtdel/alloc.h"
 
@@ -86,11 +87,35 @@ static dd_status resolve_variant(dd_tri *t, const char *variant, const dd_varian
                 : dd_fail(t, DD_ERR_UNKNOWN_VARIANT, "unknown variant '%s'", variant ? variant : "(null)");
 }
 
-/* The edits that remove a vertex are not there yet for weighted points
- * (issue 44): they refuse, changing nothing.                           */
-static dd_status refuse_weighted(dd_tri *t, const char *what)
+/* The vertex id of input index `input` when it names a kept hidden
+ * point of a weighted t (not a duplicate of one), else DD_NONE.        */
+static uint32_t hidden_id(const dd_tri *t, uint32_t input)
 {
-    return dd_fail(t, DD_ERR_UNSUPPORTED, "%s on a weighted triangulation is not supported yet", what);
+    if (!t->wt || input >= t->np) return DD_NONE;
+    const uint32_t v = t->in2v[input];
+    return t->v2in[v] == input && dd_hidden_has(t, v) ? v : DD_NONE;
+}
+
+/* Whether vertex id v is in t now: a vertex, or a kept hidden point.  */
+static int present(const dd_tri *t, uint32_t v)
+{
+    return t->vcell[v] != DD_NONE || dd_hidden_has(t, v);
+}
+
+/* Puts vertex id v (its point, and weight, as they were) back into t:
+ * the undo of its deletion.  On a weighted t by CGAL's rule, so that a
+ * point that was hidden is hidden again (keep mode is the regular
+ * triangulation of the points in t, whatever the order).               */
+static dd_status put_back(dd_tri *t, uint32_t v)
+{
+    if (!t->wt) return dd_insert_vertex(t, v);
+    dd_fate fate;
+    uint32_t dup;
+    dd_status s = dd_insert_power(t, v, dd_start_near(t, dd_pt(t, v)), 0, &fate, &dup);
+    if (s == DD_OK && fate == DD_FATE_DUPLICATE)
+        s = dd_fail(t, DD_ERR_DUPLICATE, "point %u is the weighted point of vertex %u", t->v2in[v], t->v2in[dup]);
+    if (s == DD_OK && fate == DD_FATE_VERTEX) dd_grid_note(t, v);
+    return s;
 }
 
 /* The public edits below are each the body of a dd_edit_begin / end
@@ -99,11 +124,15 @@ static dd_status refuse_weighted(dd_tri *t, const char *what)
 static dd_status delete_one(dd_tri *t, uint32_t input, const char *variant)
 {
     const dd_variant *var;
-    uint32_t q = 0;
+    uint32_t q = 0, h = hidden_id(t, input), cell;
     dd_status s = resolve_variant(t, variant, &var);
+    if (s == DD_OK && h != DD_NONE) {       /* a kept hidden point: forgotten */
+        dd_hidden_forget(t, h, &cell);
+        return DD_OK;
+    }
     if (s == DD_OK) s = dd_del_resolve(t, input, &q);
     if (s == DD_OK) s = dd_del_vertex(t, q, var);
-    if (s == DD_OK) note_deleted(t, q);
+    if (s == DD_OK && !t->wt) note_deleted(t, q);   /* weighted t: indices never reused */
     if (s == DD_OK) (void)dd_grid_ready(t);     /* the queries' starts (locate.c) */
     return s;
 }
@@ -171,32 +200,35 @@ static int cmp_u32(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* Lists in left[0..max) the first vertices, in id order, that are not
- * among the sorted ids[0..n); returns how many.                          */
+/* Lists in left[0..max) the first points in t (vertices, and kept
+ * hidden points), in id order, that are not among the sorted ids[0..n);
+ * returns how many.                                                      */
 static uint32_t vertices_left(const dd_tri *t, const uint32_t *ids, size_t n, uint32_t *left, uint32_t max)
 {
     uint32_t m = 0;
     size_t k = 0;
     for (uint32_t v = 0; v < t->nvid && m < max; v++) {
-        if (t->vcell[v] == DD_NONE) continue;
+        if (!present(t, v)) continue;
         if (k < n && ids[k] == v) { k++; continue; }
         left[m++] = v;
     }
     return m;
 }
 
-/* Whether the vertices left after deleting the sorted ids[0..n) include
- * four affinely independent ones.  The first 64 left nearly always do, so
+/* Whether the points left after deleting the sorted ids[0..n) (of the
+ * `total` in t) include four affinely independent ones: on a weighted t
+ * kept hidden points count, since the regular triangulation of the
+ * points left spans their hull.  The first 64 left nearly always do, so
  * a small set costs no pass over the whole triangulation.               */
-static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
+static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n, uint32_t total)
 {
     uint32_t few[64], m = vertices_left(t, ids, n, few, 64);
     if (dd_pick_simplex(t, t->xyz, few, m) == DD_OK) return DD_OK;
     dd_status s = DD_ERR_DIMENSION;
     if (m == 64) {                                   /* more are left: all of them */
-        uint32_t *left = dd_malloc((size_t)(t->nvert - n) * sizeof *left);
+        uint32_t *left = dd_malloc((size_t)(total - n) * sizeof *left);
         if (!left) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-        m = vertices_left(t, ids, n, left, t->nvert - (uint32_t)n);
+        m = vertices_left(t, ids, n, left, total - (uint32_t)n);
         if (dd_pick_simplex(t, t->xyz, left, m) == DD_OK) s = DD_OK;
         dd_mfree(left);
     }
@@ -209,71 +241,104 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n)
  * are the time of one deletion along the insertion order and of one
  * point of a rebuild, relative to each other, on uniform points: the
  * crossover, about a third of the vertices, is where `dtdel edit-bench`
- * (or a dd_delete_set of each fraction, timed) shows both courses equal. */
+ * (or a dd_delete_set of each fraction, timed) shows both courses equal.
+ * On a weighted t a deletion rebuilds the regular triangulation of the
+ * neighbours and the star's hidden points, so it weighs more against a
+ * point of the rebuild (SET_WDELETE_UNIT; `dtdel wedit-bench` times
+ * both courses); listed hidden points are only forgotten, so k counts
+ * the listed vertices and the rebuild the points left, hidden or not.  */
 #define SET_DELETE_UNIT 1.0
+#define SET_WDELETE_UNIT 1.0
 #define SET_BUILD_UNIT 0.55
 
-static int rebuild_is_cheaper(const dd_tri *t, size_t k)
+static int rebuild_is_cheaper(const dd_tri *t, size_t k, size_t left)
 {
 #ifdef DD_TEST_BUILD
     if (t->testctl[DD_TEST_SET_COURSE]) return t->testctl[DD_TEST_SET_COURSE] == 2;
 #endif
-    return (double)k * SET_DELETE_UNIT > (double)(t->nvert - k) * SET_BUILD_UNIT;
+    const double unit = t->wt ? SET_WDELETE_UNIT : SET_DELETE_UNIT;
+    return (double)k * unit > (double)left * SET_BUILD_UNIT;
 }
 
 /* Asks for the cells the next deletions start from, one and two ahead:
  * the first cell of the next one's star and its neighbours, and the first
  * cell of the one after (whose neighbours the next call asks for).  The
- * deletions in id order are near in space, not in memory.                */
+ * deletions in id order are near in space, not in memory.  A listed
+ * hidden point (no cell) asks for nothing.                                */
 static void prefetch_stars(const dd_tri *t, const uint32_t *next, size_t n)
 {
-    if (n > 1) __builtin_prefetch(dd_tv(t, t->vcell[next[1]]));
-    if (n > 0) {
+    if (n > 1 && t->vcell[next[1]] != DD_NONE) __builtin_prefetch(dd_tv(t, t->vcell[next[1]]));
+    if (n > 0 && t->vcell[next[0]] != DD_NONE) {
         const uint32_t *nb = dd_tn(t, t->vcell[next[0]]);
         for (int j = 0; j < 4; j++) __builtin_prefetch(dd_tv(t, nb[j] >> 2));
     }
 }
 
-/* A set of deletions.  The result, DT of the points left, does not depend
- * on the order (the perturbed DT is unique), so they go in vertex id
- * order: the insertion order, BRIO rounds along a Hilbert curve, so that
- * consecutive deletions work in nearby cells and points, in space and in
- * memory (faster than a random order: `build/dtdel seq-bench` times
- * both).  Checked before the first:
- * every index a vertex and listed once, and the points left at least 4
- * and not all in one plane; then no deletion of the sequence can be
- * refused (each leaves a superset of them).  An unforeseen failure (out
- * of memory) re-inserts those done, in reverse, which restores DT(S).   */
-static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+/* The vertex id of listed input index `input`: a vertex, or on a
+ * weighted t that keeps them a hidden point.                            */
+static dd_status resolve_listed(dd_tri *t, uint32_t input, uint32_t *id)
 {
-    const dd_variant *var;
-    if (t->wt) return refuse_weighted(t, "dd_delete_set");
-    dd_status s = resolve_variant(t, variant, &var);
-    if (s != DD_OK || n == 0) return s;
-    if (n > t->nvert)
-        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u vertices", n,
-                       t->nvert);
-    uint32_t *ids = dd_malloc(n * sizeof *ids);
-    if (!ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
-    for (size_t k = 0; k < n && s == DD_OK; k++) s = dd_del_resolve(t, vs[k], &ids[k]);
-    if (s == DD_OK) {
-        qsort(ids, n, sizeof *ids, cmp_u32);
-        for (size_t k = 1; k < n && s == DD_OK; k++)
-            if (ids[k] == ids[k - 1])
-                s = dd_fail(t, DD_ERR_ARG, "point %u is listed twice", t->v2in[ids[k]]);
+    const uint32_t h = hidden_id(t, input);
+    if (h == DD_NONE) return dd_del_resolve(t, input, id);
+    *id = h;
+    return DD_OK;
+}
+
+/* The set vs[0..n) checked (delete_set) into ids, sorted: every index a
+ * vertex (or a kept hidden point) listed once; the points left at least
+ * 4 and not all in one plane.  *k: how many of them are vertices.       */
+static dd_status check_set(dd_tri *t, const uint32_t *vs, size_t n, uint32_t *ids, size_t *k)
+{
+    const uint32_t total = t->nvert + (uint32_t)dd_hidden_count(t);
+    if (n > total)
+        return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "%zu points listed, the triangulation has %u", n, total);
+    dd_status s = DD_OK;
+    for (size_t j = 0; j < n && s == DD_OK; j++) s = resolve_listed(t, vs[j], &ids[j]);
+    if (s != DD_OK) return s;
+    qsort(ids, n, sizeof *ids, cmp_u32);
+    *k = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (j > 0 && ids[j] == ids[j - 1]) return dd_fail(t, DD_ERR_ARG, "point %u is listed twice", t->v2in[ids[j]]);
+        *k += t->vcell[ids[j]] != DD_NONE;
     }
-    if (s == DD_OK && t->nvert - n < 4)
-        s = dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
-                    t->nvert, t->nvert - (uint32_t)n);
-    if (s == DD_OK) s = check_left(t, ids, n);
-    if (s == DD_OK && rebuild_is_cheaper(t, n)) {
-        s = dd_rebuild_without(t, ids, n);
-        if (s == DD_OK) dd_note_all(t);
-        for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
-        if (s == DD_OK) (void)dd_grid_ready(t);
-        dd_mfree(ids);
-        return s;
-    }
+    if (total - n < 4)
+        return dd_fail(t, DD_ERR_DIMENSION, "deleting %zu of %u points would leave %u: at least 4 are needed", n,
+                       total, total - (uint32_t)n);
+    return check_left(t, ids, n, total);
+}
+
+/* The rebuild course: DT (RT on a weighted t) of the points left.
+ * DD_ERR_DUPLICATE (a weighted t with two equal weighted points left,
+ * nothing changed): the caller deletes one at a time.                   */
+static dd_status rebuild_set(dd_tri *t, const uint32_t *ids, size_t n)
+{
+    dd_status s = t->wt ? dd_rebuild_power_without(t, ids, n) : dd_rebuild_without(t, ids, n);
+    if (s == DD_OK) dd_note_all(t);
+    return s;
+}
+
+/* Puts a weighted t's listed hidden points first in ids (the vertices
+ * after them, still in id order): they are forgotten before any
+ * deletion, which could otherwise bring one back only to delete it.     */
+static void hidden_first(const dd_tri *t, uint32_t *ids, size_t n, uint32_t *tmp)
+{
+    size_t h = 0, m = 0;
+    for (size_t j = 0; j < n; j++)
+        if (dd_hidden_has(t, ids[j])) ids[h++] = ids[j];
+        else tmp[m++] = ids[j];
+    memcpy(ids + h, tmp, m * sizeof *tmp);
+}
+
+/* The one-at-a-time course, in ids' order (a kept hidden point is
+ * forgotten; a vertex deleted, and no deletion hides a point, so each
+ * listed vertex is one still).  An unforeseen failure (out of memory)
+ * puts back those done, in reverse, which restores the triangulation:
+ * DT(S) is unique, and so is the regular triangulation of the points
+ * kept; under DD_DISCARD_HIDDEN only vertices are listed, and a vertex
+ * put back hides none (each was a vertex with all of them).             */
+static dd_status delete_each(dd_tri *t, const uint32_t *ids, size_t n, const dd_variant *var)
+{
+    dd_status s = DD_OK;
     size_t done = 0;
     for (; done < n && s == DD_OK; done++) {
 #ifdef DD_TEST_BUILD
@@ -283,22 +348,53 @@ static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char 
         }
 #endif
         prefetch_stars(t, ids + done + 1, n - done - 1);
-        s = dd_del_vertex(t, ids[done], var);
+        uint32_t cell;
+        if (dd_hidden_has(t, ids[done])) dd_hidden_forget(t, ids[done], &cell);
+        else s = dd_del_vertex(t, ids[done], var);
     }
     if (s != DD_OK && done > 0) {
         done--;                         /* the one that failed is not done */
         char why[sizeof t->err];
         memcpy(why, t->err, sizeof why);
         int undone = 1;
-        while (done > 0 && undone) {
-            uint32_t v = ids[--done];
-            undone = dd_insert_vertex(t, v) == DD_OK;
-        }
+        while (done > 0 && undone) undone = put_back(t, ids[--done]) == DD_OK;
         memcpy(t->err, why, sizeof why);
         if (!undone)   /* a re-insertion failed too: not as it was (dtdel.h, NOMEM) */
             s = dd_fail(t, DD_ERR_INTERNAL, "deleting the set failed (%s) and could not be undone", why);
     }
-    for (size_t k = 0; s == DD_OK && k < n; k++) note_deleted(t, ids[k]);
+    return s;
+}
+
+/* A set of deletions.  The result, DT of the points left, does not depend
+ * on the order (the perturbed DT is unique; on a weighted t, the regular
+ * triangulation of the points left, and under DD_DISCARD_HIDDEN of the
+ * vertices left, none of which a removal hides), so they go in vertex id
+ * order: the insertion order, BRIO rounds along a Hilbert curve, so that
+ * consecutive deletions work in nearby cells and points, in space and in
+ * memory (faster than a random order: `build/dtdel seq-bench` times
+ * both).  Checked before the first (check_set); then no deletion of the
+ * sequence can be refused (each leaves a superset of the points left). */
+static dd_status delete_set(dd_tri *t, const uint32_t *vs, size_t n, const char *variant)
+{
+    const dd_variant *var;
+    dd_status s = resolve_variant(t, variant, &var);
+    if (s != DD_OK || n == 0) return s;
+    uint32_t *ids = dd_malloc((t->wt ? 2 : 1) * n * sizeof *ids);
+    if (!ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    size_t k = 0;
+    s = check_set(t, vs, n, ids, &k);
+    const size_t left = t->nvert + dd_hidden_count(t) - n;
+    int each = 1;
+    if (s == DD_OK && rebuild_is_cheaper(t, k, left)) {
+        s = rebuild_set(t, ids, n);
+        each = s == DD_ERR_DUPLICATE;
+        if (each) s = DD_OK;
+    }
+    if (s == DD_OK && each) {
+        if (t->wt) hidden_first(t, ids, n, ids + n);
+        s = delete_each(t, ids, n, var);
+    }
+    for (size_t j = 0; s == DD_OK && !t->wt && j < n; j++) note_deleted(t, ids[j]);
     if (s == DD_OK) (void)dd_grid_ready(t);
     dd_mfree(ids);
     return s;
@@ -430,7 +526,6 @@ void dd_last_delete_stats(const dd_tri *t, dd_delete_stats *st)
 
 static dd_status reinsert(dd_tri *t, uint32_t input)
 {
-    if (t->wt) return refuse_weighted(t, "dd_reinsert");
     if (input >= t->np)
         return dd_fail(t, DD_ERR_UNKNOWN_VERTEX, "no point %u (the input has %u points)", input, t->np);
     uint32_t v = t->in2v[input];
@@ -438,7 +533,9 @@ static dd_status reinsert(dd_tri *t, uint32_t input)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is a duplicate of point %u", input, t->v2in[v]);
     if (t->vcell[v] != DD_NONE)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
-    dd_status s = dd_insert_vertex(t, v);
+    if (dd_hidden_has(t, v))
+        return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already in the triangulation, hidden", input);
+    dd_status s = put_back(t, v);   /* weighted: it may end hidden, or forgotten */
     if (s == DD_OK) (void)dd_grid_ready(t);     /* the queries' starts (locate.c) */
     return s;
 }

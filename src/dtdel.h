@@ -269,7 +269,14 @@ static inline int dd_is_infinite(int32_t v) { return v < 0; }
  * is the default too; dd_variant_name lists them).  The result is DT(S minus v), identical to CGAL's.
  * Refused with DD_ERR_DIMENSION when fewer than 4 or only coplanar points
  * would remain; DD_ERR_UNKNOWN_VERTEX / DD_ERR_UNKNOWN_VARIANT for bad
- * names.  On any failure the triangulation is unchanged.                 */
+ * names.  On any failure the triangulation is unchanged.
+ * Weighted t: the result is CGAL's Regular_triangulation_3 after
+ * remove(), cells and hidden set: kept hidden points of v's star that are
+ * no longer hidden become vertices again (under DD_DISCARD_HIDDEN, the
+ * regular triangulation of the vertices left).  A kept hidden point v
+ * may be deleted too: it is forgotten, O(1) and no cell changes (CGAL
+ * has no call for it; the result is the regular triangulation of the
+ * points left, which it does not change).                               */
 dd_status dd_delete(dd_tri *t, uint32_t v);
 dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
 
@@ -280,7 +287,12 @@ dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
  * a random order).  All or nothing: DD_ERR_UNKNOWN_VERTEX for an index
  * that is no vertex, DD_ERR_ARG for one listed twice, DD_ERR_DIMENSION
  * when fewer than 4 or only coplanar points would be left, checked before
- * any deletion; on any failure the triangulation is unchanged.          */
+ * any deletion; on any failure the triangulation is unchanged.
+ * Weighted t: as n dd_delete calls (kept hidden points may be listed and
+ * count among the points left), the regular triangulation of the points
+ * left, every hidden point kept either a vertex or hidden, once; under
+ * DD_DISCARD_HIDDEN, of the vertices left.  Cost: the cheaper of the
+ * deletions one at a time and a rebuild of the points left.             */
 dd_status dd_delete_set(dd_tri *t, const uint32_t *vs, size_t n);
 dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char *variant);
 
@@ -291,8 +303,27 @@ dd_status dd_delete_set_with(dd_tri *t, const uint32_t *vs, size_t n, const char
  * nothing changes.  Moving v onto its own point changes nothing.
  * Cost: O(degree) when no cell changes (an exact relocation filter: the
  * star's cells stay positive and its facets locally Delaunay); else an
- * insertion walked from v's old star plus a deletion.                    */
+ * insertion walked from v's old star plus a deletion.
+ * Weighted t: dd_move_weighted with v's own weight.                     */
 dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
+/* Moves input point v of a weighted t to p with weight w (p may be v's
+ * own point: a re-weighting); v keeps its index.  The result is CGAL's
+ * Regular_triangulation_3 after removing v and inserting (p, w) (DESIGN
+ * 12: CGAL's move() refuses a point that ends hidden), cells and hidden
+ * set: v may end hidden (still DD_OK; under DD_DISCARD_HIDDEN it is then
+ * forgotten, neither vertex nor hidden), and it may hide others.  A kept
+ * hidden point v moves too (taken out, then (p, w) inserted).  (p, w)
+ * equal to v's changes nothing.  Failures, each changing nothing:
+ * DD_ERR_UNSUPPORTED on an unweighted t; DD_ERR_NAN / DD_ERR_INFINITE
+ * for a bad coordinate or weight; DD_ERR_UNKNOWN_VERTEX when v is
+ * neither a vertex nor a kept hidden point; DD_ERR_DUPLICATE when (p, w)
+ * is exactly another point's weighted point that is (or, v removed,
+ * becomes) a vertex; DD_ERR_DIMENSION when the points left without v
+ * would be fewer than 4 or coplanar; DD_ERR_NOMEM.
+ * Cost: O(degree) power tests when no cell and no hidden point's cell
+ * changes (the exact relocation filter); else a deletion of v plus an
+ * insertion walked from its old star.                                  */
+dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w);
 
 /* Inserts a new point; *index receives its input index.  As CGAL reuses
  * a removed vertex's storage, the index (and storage) of a deleted vertex
@@ -305,7 +336,12 @@ dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
  * failure nothing changes.  The walk starts near p (as dd_locate):
  * expected O(1) cells on evenly spread points, plus the O(degree) update. */
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index);
-/* Puts back input vertex v after dd_delete (same index, same point). */
+/* Puts back input vertex v after dd_delete (same index, same point).
+ * Weighted t: with its weight, by CGAL's insertion rule: it may end
+ * hidden (or, under DD_DISCARD_HIDDEN, forgotten; a point forgotten may
+ * be put back so too), and may hide others.  DD_ERR_DUPLICATE when v is
+ * a vertex or a kept hidden point already, or its weighted point is
+ * exactly a vertex's; DD_ERR_UNKNOWN_VERTEX for no input index.        */
 dd_status dd_reinsert(dd_tri *t, uint32_t v);
 
 /* ---- cell handles -------------------------------------------------------- */

@@ -476,9 +476,75 @@ def test_weighted():
         raises("weighted/weight of no point", "DD_ERR_ARG", t.weight, n + 5)
 
 
+def test_weighted_edits():
+    """Moves, re-weightings, set deletion and re-insertion of weighted
+    points, hidden points kept: the result is CGAL's regular triangulation
+    of the points as they are left (keep mode is that, whatever the order)."""
+    rng = np.random.default_rng(44)
+    n = 300
+    xyz = rng.random((n, 3))
+    w = rng.random(n) * 0.04
+    gone = set()
+
+    def same_as_cgal(t, tag):
+        sel = np.array([i for i in range(n) if i not in gone])
+        cells, hidden = cgal_weighted(xyz[sel], w[sel], False)
+        mapped = np.where(cells < 0, -1, sel[np.maximum(cells, 0)])
+        mapped = np.sort(mapped, axis=1)
+        mapped = mapped[np.lexsort(mapped.T[::-1])]
+        check(tag + " as CGAL's", np.array_equal(t.canonical(), mapped)
+              and np.array_equal(t.hidden(), np.sort(sel[hidden])),
+              "%d cells, CGAL %d" % (len(t.canonical()), len(mapped)))
+        t.check()
+
+    with Triangulation(xyz, weights=w) as t:
+        h = 0.15
+        for k in range(12):
+            v = int(rng.integers(n))
+            p = xyz[v] + (rng.random(3) - 0.5) * (h if k % 3 else 1e-3)
+            nw = w[v] * (4.0 if k % 4 == 1 else 1.0)
+            if k % 2:
+                t.move_weighted(v, p, nw)
+            else:
+                nw = w[v]
+                t.move(v, p)
+            xyz[v], w[v] = p, nw
+        same_as_cgal(t, "wedit/moves")
+        v = next(i for i in range(n) if t.is_vertex(i))
+        t.move_weighted(v, xyz[v], w[v] + 0.3)            # heavy: hides its neighbours
+        w[v] += 0.3
+        check("wedit/re-weighted up hides others", len(t.hidden()) > 0 and t.is_vertex(v))
+        t.move_weighted(v, xyz[v], w[v] - 1.0)            # light: hidden itself
+        w[v] -= 1.0
+        check("wedit/re-weighted down is hidden", t.is_hidden(v))
+        same_as_cgal(t, "wedit/re-weightings")
+        hp = int(t.hidden()[0])
+        p = xyz[hp] + 0.01
+        t.move_weighted(hp, p, w[hp])
+        xyz[hp] = p
+        same_as_cgal(t, "wedit/hidden point moved")
+        vs = [i for i in rng.permutation(n)[:60].tolist()]
+        t.delete_set(vs)
+        gone.update(vs)
+        check("wedit/set deleted", not any(t.is_vertex(i) or t.is_hidden(i) for i in vs))
+        same_as_cgal(t, "wedit/set")
+        for i in vs[:20]:
+            t.reinsert(i)
+            gone.discard(i)
+        same_as_cgal(t, "wedit/reinserted")
+        before = t.canonical()
+        v = next(i for i in range(n) if t.is_vertex(i))
+        raises("wedit/move nan weight", "DD_ERR_NAN", t.move_weighted, v, xyz[v], float("nan"))
+        raises("wedit/move inf weight", "DD_ERR_INFINITE", t.move_weighted, v, xyz[v], float("inf"))
+        check("wedit/refused moves change nothing", np.array_equal(t.canonical(), before))
+    with Triangulation(xyz) as u:
+        raises("wedit/move_weighted unweighted", "DD_ERR_UNSUPPORTED", u.move_weighted, 0, xyz[0], 0.1)
+
+
 def main():
     for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
-              test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted, test_install):
+              test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted,
+              test_weighted_edits, test_install):
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure

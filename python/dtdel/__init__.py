@@ -332,9 +332,17 @@ class Triangulation:
         self._check(lib.dd_reinsert(self._h, self._vid(v)))
 
     def move(self, v, p):
-        """Moves vertex v to p, keeping its index (dd_move)."""
+        """Moves vertex v to p, keeping its index (dd_move; on a weighted
+        triangulation v keeps its weight, and may be a hidden point)."""
         a = _point(p)
         self._check(lib.dd_move(self._h, self._vid(v), _dptr(a)))
+
+    def move_weighted(self, v, p, w):
+        """Moves point v of a weighted triangulation to p with weight w,
+        keeping its index; p may be v's own point (a re-weighting).  v may
+        end hidden, and may hide others (dd_move_weighted)."""
+        a = _point(p)
+        self._check(_need("dd_move_weighted")(self._h, self._vid(v), _dptr(a), float(w)))
 
     # ---- queries -------------------------------------------------------------
     def locate(self, p):

@@ -77,6 +77,7 @@ PROTOTYPES = {
     "dd_is_hidden": (c_int, [c_void_p, c_uint32]),
     "dd_hidden": (c_int, [c_void_p, POINTER(_p_uint32), POINTER(c_size_t)]),
     "dd_insert_weighted": (c_int, [c_void_p, _p_double, c_double, _p_uint32]),
+    "dd_move_weighted": (c_int, [c_void_p, c_uint32, _p_double, c_double]),
 }
 
 # dd_ names of dtdel.h that get no Python function of their own, and why.

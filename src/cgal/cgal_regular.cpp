@@ -380,3 +380,141 @@ extern "C" int dd_cgal_rt_remove(dd_cgal_rt *c, uint32_t input_index)
         return 1;
     }
 }
+
+/* ---- hidden points forgotten, moves (issue 44) ------------------------------ */
+
+namespace {
+
+/* The key of input index `index`, if keys lists it. */
+bool key_of_index(const std::map<Key, std::vector<uint32_t> > &keys, uint32_t index, Key &out)
+{
+    for (std::map<Key, std::vector<uint32_t> >::const_iterator it = keys.begin(); it != keys.end(); ++it)
+        if (std::find(it->second.begin(), it->second.end(), index) != it->second.end()) {
+            out = it->first;
+            return true;
+        }
+    return false;
+}
+
+/* Whether input index `index` is a vertex of r. */
+template <class Policy>
+bool is_vertex(const Rt_of<Policy> *r, uint32_t index)
+{
+    typedef typename Rt_of<Policy>::T T;
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it)
+        if (it->info() == index) return true;
+    return false;
+}
+
+/* Forgets the kept hidden point of input index `index`: one copy of its
+ * weighted point leaves the hidden list of the cell that keeps it, and
+ * the index leaves keys.  0 done, 1 when it is no kept hidden point.
+ * O(n): a reference.                                                    */
+template <class Policy>
+int forget_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index)
+{
+    typedef typename Rt_of<Policy>::T T;
+    Key k;
+    if (!key_of_index(keys, index, k) || is_vertex(r, index)) return 1;
+    for (typename T::All_cells_iterator it = r->rt.all_cells_begin(); it != r->rt.all_cells_end(); ++it)
+        for (typename T::Cell::Point_iterator h = it->hidden_points_begin(); h != it->hidden_points_end(); ++h)
+            if (key_of(*h) == k) {
+                it->unhide_point(h);
+                std::vector<uint32_t> &idx = keys[k];
+                idx.erase(std::remove(idx.begin(), idx.end(), index), idx.end());
+                return 0;
+            }
+    return 1;
+}
+
+/* (p, w) inserted as input index `index` (any index, not only the next
+ * one): as insert, keys kept in increasing order.  0, or 2 when (p, w)
+ * is a vertex's weighted point (nothing changed).                       */
+int insert_as(dd_cgal_rt *c, const Wpoint &p, uint32_t index)
+{
+    const Key k = key_of(p);
+    std::vector<uint32_t> &idx = c->keys[k];
+    idx.reserve(idx.size() + 1);
+    const int r = c->rt->insert(p, index);
+    if (r == 0)
+        idx.insert(std::upper_bound(idx.begin(), idx.end(), index), index);
+    else if (idx.empty())
+        c->keys.erase(k);
+    return r;
+}
+
+template <class Policy>
+int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w)
+{
+    Key old;
+    if (!key_of_index(c->keys, index, old)) return 1;
+    const Key now = {{p[0], p[1], p[2], w}};
+    if (now == old) return 0;
+    const bool vertex = is_vertex(r, index);
+    /* the weighted point of another vertex: refused before any change */
+    typename std::map<Key, std::vector<uint32_t> >::const_iterator same = c->keys.find(now);
+    if (same != c->keys.end())
+        for (std::size_t i = 0; i < same->second.size(); i++)
+            if (same->second[i] != index && is_vertex(r, same->second[i])) return 2;
+    const int gone = vertex ? remove_index(r, c->keys, index) : forget_index(r, c->keys, index);
+    if (gone != 0) return gone;
+    const int ins = insert_as(c, weighted_point(p, w), index);
+    if (ins == 2) {              /* a point the removal brought back: put v back */
+        const Wpoint back(Bare_point(old[0], old[1], old[2]), old[3]);
+        return insert_as(c, back, index) == 0 ? 2 : 1;
+    }
+    return ins;
+}
+
+} // namespace
+
+extern "C" int dd_cgal_rt_forget(dd_cgal_rt *c, uint32_t input_index)
+{
+    if (c == NULL)
+        return 1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return forget_index(k, c->keys, input_index);
+        return 1;
+    } catch (...) {
+        return 1;
+    }
+}
+
+extern "C" int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w)
+{
+    if (c == NULL || p == NULL || !finite_point(p, w))
+        return 1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return move_index(c, k, input_index, p, w);
+        if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
+            return move_index(c, d, input_index, p, w);
+        return 1;
+    } catch (...) {
+        return 1;
+    }
+}
+
+extern "C" int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, uint32_t index)
+{
+    if (c == NULL || p == NULL || index >= c->ninput || !finite_point(p, w))
+        return 1;
+    try {
+        Key k;
+        if (key_of_index(c->keys, index, k)) {
+            /* a vertex or a kept hidden point is there still; a point
+             * forgotten (discarding) is listed but gone                 */
+            Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get());
+            if (d == NULL || is_vertex(d, index))
+                return 1;
+            std::vector<uint32_t> &idx = c->keys[k];
+            idx.erase(std::remove(idx.begin(), idx.end(), index), idx.end());
+            if (idx.empty()) c->keys.erase(k);
+        }
+        return insert_as(c, weighted_point(p, w), index);
+    } catch (...) {
+        return 1;
+    }
+}

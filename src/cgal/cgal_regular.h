@@ -63,6 +63,30 @@ uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c);
  * the vertex is O(n).                                                   */
 int dd_cgal_rt_remove(dd_cgal_rt *c, uint32_t input_index);
 
+/* Forgets the kept hidden point of input index input_index (the
+ * reference of dd_delete on a hidden point): its weighted point leaves
+ * the hidden list of its cell; no cell changes.  0 done; 1 when it is no
+ * kept hidden point.  O(n).                                             */
+int dd_cgal_rt_forget(dd_cgal_rt *c, uint32_t input_index);
+
+/* The reference of a weighted move (DESIGN 12): the point of input index
+ * input_index (a vertex, or a kept hidden point) removed (remove(), or
+ * forgotten), then (p, w) inserted under the same index, which may end
+ * hidden (forgotten when discarding) and may hide others.  0 done (also
+ * when (p, w) is its own weighted point: nothing changes); 2 when (p, w)
+ * is exactly another point's weighted point that is a vertex, before or
+ * after the removal (nothing changes: CGAL's insert would return that
+ * vertex, and the index would be lost); 1 when the index is neither a
+ * vertex nor a kept hidden point, or on failure; 3 as remove.  O(n).   */
+int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w);
+
+/* (p, w) inserted again under input index `index`, one given before and
+ * removed or forgotten since (the reference of dd_reinsert): as
+ * dd_cgal_rt_insert otherwise.  0 done, 2 a vertex's weighted point
+ * (nothing changes), 1 when the index is in the triangulation or on
+ * failure.  O(n).                                                       */
+int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
+
 #ifdef __cplusplus
 }
 #endif

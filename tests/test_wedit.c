@@ -1,0 +1,508 @@
+/*
+ * test_wedit.c -- the edits of a regular (weighted Delaunay)
+ * triangulation beyond one deletion (issue 44), against CGAL's
+ * Regular_triangulation_3 (src/cgal/cgal_regular.h): dd_delete_set,
+ * dd_reinsert, dd_move and dd_move_weighted, and dd_delete of a kept
+ * hidden point, in both hidden modes, on every weighted set of
+ * testweighted.h (uniform weights hiding few to most points, the
+ * degenerate integer grid with duplicates and power ties, a molecule,
+ * protecting balls, the moment curve and a helix):
+ *  - sequences of set deletions (small and large fractions; in test
+ *    builds both courses forced), re-insertions of what was deleted, and
+ *    moves: small steps (the relocation filter's path, whose use is
+ *    checked), large ones, onto another vertex's position with another
+ *    weight, re-weightings up and down (v hidden, or hiding others),
+ *    moves of kept hidden points; after every step the cells and the
+ *    hidden set equal CGAL's (a move's reference: remove, then insert
+ *    under the same index, DESIGN 12) and dd_check passes;
+ *  - refusals (NaN or infinite weight or coordinate, unknown index,
+ *    another vertex's exact weighted point, an unweighted t) with
+ *    nothing changed;
+ *  - in test builds, every allocation of each call refused in turn:
+ *    DD_ERR_NOMEM with nothing changed, then the call equals CGAL.
+ * Argument "small": smaller sizes (the sanitizer build).
+ */
+#include "testlib.h"
+#include <math.h>
+#include "dtdel.h"
+#include "dtdel_stats.h"
+#include "cgal/cgal_regular.h"
+#include "testweighted.h"
+
+static int small;
+
+/* A triangulation and its reference, in one hidden mode. */
+typedef struct pair {
+    dd_tri *t;
+    dd_cgal_rt *c;
+    int keep;
+    double h;               /* the mean spacing of the set */
+    double *p, *w;          /* each input point as it is now (moves) */
+} pair;
+
+static int pair_make(pair *pr, const wset *s, int keep, char *why, size_t nwhy)
+{
+    char msg[256];
+    pr->keep = keep;
+    pr->t = NULL;
+    pr->c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
+    pr->h = pow((double)s->n, -1.0 / 3);
+    pr->p = malloc(3 * (size_t)s->n * sizeof *pr->p);
+    pr->w = malloc((size_t)s->n * sizeof *pr->w);
+    memcpy(pr->p, s->p, 3 * (size_t)s->n * sizeof *pr->p);
+    memcpy(pr->w, s->w, (size_t)s->n * sizeof *pr->w);
+    if (!pr->c) return snprintf(why, nwhy, "CGAL could not build"), 0;
+    if (dd_create_ex(&pr->t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) != DD_OK)
+        return snprintf(why, nwhy, "build: %.200s", msg), 0;
+    return same_as_cgal(pr->t, pr->c, why, nwhy);
+}
+
+static void pair_free(pair *pr)
+{
+    dd_free(pr->t);
+    dd_cgal_rt_free(pr->c);
+    free(pr->p), free(pr->w);
+    pr->t = NULL, pr->c = NULL, pr->p = pr->w = NULL;
+}
+
+static int present(const dd_tri *t, uint32_t i) { return dd_is_vertex(t, i) || dd_is_hidden(t, i); }
+
+/* A random input index with `want` (1 vertex, 2 hidden, 3 either), or
+ * UINT32_MAX.                                                          */
+static uint32_t pick(const dd_tri *t, tl_rng *r, int want)
+{
+    const uint32_t np = dd_num_input(t);
+    for (int tries = 0; tries < 20000; tries++) {
+        const uint32_t v = (uint32_t)tl_int(r, 0, np - 1);
+        if (((want & 1) && dd_is_vertex(t, v)) || ((want & 2) && dd_is_hidden(t, v))) return v;
+    }
+    return UINT32_MAX;
+}
+
+/* After a step: checked, and equal to CGAL; why prefixed by what. */
+static int agree(const pair *pr, const char *what, char *why, size_t nwhy)
+{
+    char w2[256] = "";
+    if (checked(pr->t, w2, sizeof w2) && same_as_cgal(pr->t, pr->c, w2, sizeof w2)) return 1;
+    snprintf(why, nwhy, "%.60s: %.180s", what, w2);
+    return 0;
+}
+
+/* ---- set deletions and re-insertions ------------------------------------------ */
+
+/* CGAL's reference of deleting index i: remove() a vertex, else forget. */
+static int cgal_delete(dd_cgal_rt *c, uint32_t i)
+{
+    const int r = dd_cgal_rt_remove(c, i);
+    return r == 1 ? dd_cgal_rt_forget(c, i) : r;
+}
+
+/* Deletes a random fraction f of the points present as one set (course:
+ * 0 the engine's choice, 1 one at a time, 2 rebuild; test builds), then
+ * re-inserts half of them, comparing after each step.  Lists the
+ * deleted indices in gone (appended).                                  */
+static int set_step(pair *pr, tl_rng *r, double f, int course, char *why, size_t nwhy)
+{
+    dd_tri *t = pr->t;
+    const uint32_t np = dd_num_input(t);
+    uint32_t *vs = malloc(np * sizeof *vs), n = 0;
+    for (uint32_t i = 0; i < np; i++)
+        if (present(t, i) && tl_unif(r) < f) vs[n++] = i;
+    for (uint32_t k = n; k > 1; k--) {                   /* any order */
+        const uint32_t j = (uint32_t)tl_int(r, 0, k - 1), x = vs[k - 1];
+        vs[k - 1] = vs[j], vs[j] = x;
+    }
+#ifdef DD_TEST_BUILD
+    dd_test_control(t, DD_TEST_SET_COURSE, course);
+#else
+    (void)course;
+#endif
+    dd_status s = dd_delete_set(t, vs, n);
+#ifdef DD_TEST_BUILD
+    dd_test_control(t, DD_TEST_SET_COURSE, 0);
+#endif
+    int ok = 1;
+    char what[96];
+    snprintf(what, sizeof what, "set of %u (f %g, course %d)", n, f, course);
+    if (s == DD_ERR_DIMENSION) {
+        free(vs);
+        return 1;                                        /* too few left: fine */
+    }
+    if (s != DD_OK) ok = 0, snprintf(why, nwhy, "%s: %s (%s)", what, dd_status_name(s), dd_errmsg(t));
+    for (uint32_t k = 0; k < n && ok; k++)
+        if (cgal_delete(pr->c, vs[k]) != 0) ok = 0, snprintf(why, nwhy, "%s: CGAL could not delete %u", what, vs[k]);
+    for (uint32_t k = 0; k < n && ok; k++)
+        if (present(t, vs[k])) ok = 0, snprintf(why, nwhy, "%s: %u still there", what, vs[k]);
+    if (ok) ok = agree(pr, what, why, nwhy);
+    /* half of them back, one at a time */
+    for (uint32_t k = 0; k < n && ok; k += 2) {
+        const double *p = pr->p + 3 * (size_t)vs[k], w = pr->w[vs[k]];
+        s = dd_reinsert(t, vs[k]);
+        const int cr = dd_cgal_rt_insert_as(pr->c, p, w, vs[k]);
+        snprintf(what, sizeof what, "reinsert %u", vs[k]);
+        if (s != DD_OK || cr != 0) {
+            ok = 0, snprintf(why, nwhy, "%s: %s (%s), CGAL %d", what, dd_status_name(s), dd_errmsg(t), cr);
+            break;
+        }
+        if (k % 8 == 0 || n < 40) ok = agree(pr, what, why, nwhy);
+    }
+    if (ok) ok = agree(pr, "after the re-insertions", why, nwhy);
+    free(vs);
+    return ok;
+}
+
+/* ---- moves ---------------------------------------------------------------------- */
+
+enum { MV_SMALL, MV_LARGE, MV_ONTO, MV_UP, MV_DOWN, MV_HIDDEN, MV_KINDS };
+static const char *const mv_name[MV_KINDS] = {"small", "large", "onto", "weight-up", "weight-down", "hidden"};
+
+/* A move of kind k for point v: the new point p and weight *w. */
+static void make_move(const pair *pr, tl_rng *r, int k, uint32_t v, double p[3], double *w)
+{
+    dd_tri *t = pr->t;
+    double x[3], wv;
+    memcpy(x, pr->p + 3 * (size_t)v, sizeof x);
+    wv = pr->w[v];
+    *w = wv;
+    const double h = pr->h, step = k == MV_SMALL ? 1e-3 * h : 0.7 * h;
+    for (int c = 0; c < 3; c++) p[c] = x[c] + step * (2 * tl_unif(r) - 1);
+    if (k == MV_ONTO) {                          /* another vertex's position */
+        const uint32_t u = pick(t, r, 1);
+        const double wu = pr->w[u];
+        memcpy(p, pr->p + 3 * (size_t)u, 3 * sizeof *p);
+        *w = wu + (tl_unif(r) < 0.5 ? -1 : 1) * (0.1 + tl_unif(r)) * h * h;
+    } else if (k == MV_UP || k == MV_DOWN) {     /* re-weighting in place */
+        memcpy(p, x, sizeof x);
+        const double d = (0.2 + 2 * tl_unif(r)) * h * h;
+        *w = k == MV_UP ? wv + d : wv - d;
+    } else if (k == MV_HIDDEN) {
+        *w = wv + (tl_unif(r) - 0.5) * h * h;
+    }
+}
+
+/* `count` moves of each kind in turn, each compared with CGAL's remove
+ * then insert.  *kept: moves the relocation filter kept.  1 when all
+ * agree, 0 on a difference, -1 when the reference cannot go on.       */
+static int move_steps(pair *pr, tl_rng *r, uint32_t count, uint64_t *kept, char *why, size_t nwhy)
+{
+    dd_tri *t = pr->t;
+    dd_counters c0, c1;
+    dd_get_counters(t, &c0);
+    int ok = 1;
+    for (uint32_t m = 0; m < count && ok; m++) {
+        const int k = (int)(m % MV_KINDS);
+        const uint32_t v = pick(t, r, k == MV_HIDDEN ? 2 : 1);
+        if (v == UINT32_MAX) continue;                 /* no hidden point */
+        double p[3], w;
+        make_move(pr, r, k, v, p, &w);
+        const dd_status s = m % 7 == 3 && k == MV_SMALL ? dd_move(t, v, p) : dd_move_weighted(t, v, p, w);
+        const int cr = dd_cgal_rt_move(pr->c, v, p, w);
+        char what[128];
+        snprintf(what, sizeof what, "move %u (%s) to (%g %g %g; %g)", v, mv_name[k], p[0], p[1], p[2], w);
+        if (s == DD_ERR_DUPLICATE && cr == 2) continue;    /* both refuse */
+        if (cr == 3 && (s == DD_OK || s == DD_ERR_DIMENSION)) return -1;  /* CGAL cannot remove v: the
+                                                   reference ends here (the filter may not need to) */
+        if (s != DD_OK || cr != 0) {
+            ok = 0, snprintf(why, nwhy, "%s: %s (%s), CGAL %d", what, dd_status_name(s), dd_errmsg(t), cr);
+            break;
+        }
+        memcpy(pr->p + 3 * (size_t)v, p, sizeof p);
+        pr->w[v] = w;
+        ok = agree(pr, what, why, nwhy);
+    }
+    dd_get_counters(t, &c1);
+    *kept += c1.moves_kept - c0.moves_kept;
+    return ok;
+}
+
+/* ---- one set in both modes ------------------------------------------------------ */
+
+static void edit_case(tl_state *st, const char *name, const wset *s, uint32_t nmoves)
+{
+    for (int keep = 1; keep >= 0; keep--) {
+        char tn[160], why[256] = "";
+        snprintf(tn, sizeof tn, "edit/%s/%s", name, keep ? "keep" : "discard");
+        pair pr;
+        int ok = pair_make(&pr, s, keep, why, sizeof why);
+        tl_rng r = {0xed17 + s->n + (uint64_t)keep};
+        uint64_t kept = 0;
+        size_t h0 = 0;
+        uint32_t *hl = NULL;
+        if (ok && dd_hidden(pr.t, &hl, &h0) != DD_OK) h0 = 0;
+        free(hl);
+        int go = 1;
+        if (ok && (ok = move_steps(&pr, &r, nmoves, &kept, why, sizeof why)) < 0) ok = 1, go = 0;
+        static const double fr[] = {0.03, 0.3, 0.6};
+        for (int round = 0; round < 3 && ok && go; round++) {
+            for (int course = 0; course <= 2 && ok; course++) {
+#ifndef DD_TEST_BUILD
+                if (course) continue;
+#endif
+                ok = set_step(&pr, &r, fr[round] * (course == 2 ? 0.5 : 1), course, why, sizeof why);
+            }
+            if (ok && (ok = move_steps(&pr, &r, nmoves / 3, &kept, why, sizeof why)) < 0) ok = 1, go = 0;
+        }
+        tl_check(st, ok, tn, "%s", why);
+        if (ok) fprintf(stderr, "  %s: %zu hidden at first, %llu moves kept by the filter\n", tn, h0,
+                        (unsigned long long)kept);
+        pair_free(&pr);
+    }
+}
+
+/* The relocation filter runs: tiny moves on a set with few hidden
+ * points are mostly kept in place.                                     */
+static void filter_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 300 : 1000, 0.01, 77);
+    char why[256] = "";
+    for (int keep = 1; keep >= 0; keep--) {
+        pair pr;
+        int ok = pair_make(&pr, &s, keep, why, sizeof why);
+        tl_rng r = {99};
+        uint64_t kept = 0;
+        uint32_t tried = 0;
+        dd_counters c0, c1;
+        if (ok) dd_get_counters(pr.t, &c0);
+        for (uint32_t m = 0; m < 60 && ok; m++) {
+            const uint32_t v = pick(pr.t, &r, 1);
+            double p[3], w;
+            make_move(&pr, &r, MV_SMALL, v, p, &w);
+            w *= 1.0 + 1e-6 * (tl_unif(&r) - 0.5);
+            const dd_status ds = dd_move_weighted(pr.t, v, p, w);
+            const int cr = dd_cgal_rt_move(pr.c, v, p, w);
+            tried++;
+            if (ds != DD_OK || cr != 0) ok = 0, snprintf(why, sizeof why, "move %u: %s, CGAL %d", v, dd_status_name(ds), cr);
+            else ok = agree(&pr, "small move", why, sizeof why);
+            memcpy(pr.p + 3 * (size_t)v, p, sizeof p);
+            pr.w[v] = w;
+        }
+        if (ok) dd_get_counters(pr.t, &c1), kept = c1.moves_kept - c0.moves_kept;
+        if (ok && kept * 2 < tried) ok = 0, snprintf(why, sizeof why, "the filter kept %llu of %u tiny moves",
+                                                   (unsigned long long)kept, tried);
+        tl_check(st, ok, keep ? "filter/keep" : "filter/discard", "%s", why);
+        pair_free(&pr);
+    }
+    ws_free(&s);
+}
+
+/* ---- refusals ---------------------------------------------------------------------- */
+
+static void refusals_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 200 : 500, 3, 9);
+    char why[256] = "";
+    pair pr;
+    if (!pair_make(&pr, &s, 1, why, sizeof why)) {
+        tl_check(st, 0, "wrefuse/setup", "%s", why);
+        ws_free(&s);
+        return;
+    }
+    dd_tri *t = pr.t;
+    tl_rng r = {5};
+    const uint32_t v = pick(t, &r, 1), u = pick(t, &r, 1), hp = pick(t, &r, 2);
+    double p[3], pu[3], wu, wv;
+    dd_point(t, v, p);
+    dd_weight(t, v, &wv);
+    dd_point(t, u, pu);
+    dd_weight(t, u, &wu);
+    const double bad[3] = {NAN, 0, 0}, inf[3] = {0, INFINITY, 0};
+    shot before = take_shot(t);
+    struct { const char *name; dd_status got, want; } cases[] = {
+        {"move-nan-weight", dd_move_weighted(t, v, p, NAN), DD_ERR_NAN},
+        {"move-inf-weight", dd_move_weighted(t, v, p, -INFINITY), DD_ERR_INFINITE},
+        {"move-nan-point", dd_move_weighted(t, v, bad, 0), DD_ERR_NAN},
+        {"move-inf-point", dd_move(t, v, inf), DD_ERR_INFINITE},
+        {"move-unknown", dd_move_weighted(t, s.n + 3, p, 0), DD_ERR_UNKNOWN_VERTEX},
+        {"move-onto-vertex", dd_move_weighted(t, v, pu, wu), DD_ERR_DUPLICATE},
+        {"move-own-point", dd_move_weighted(t, v, p, wv), DD_OK},
+        {"reinsert-vertex", dd_reinsert(t, v), DD_ERR_DUPLICATE},
+        {"reinsert-hidden", hp != UINT32_MAX ? dd_reinsert(t, hp) : DD_ERR_DUPLICATE, DD_ERR_DUPLICATE},
+        {"set-twice", dd_delete_set(t, (uint32_t[]){v, u, v}, 3), DD_ERR_ARG},
+        {"set-unknown", dd_delete_set(t, (uint32_t[]){v, s.n + 9}, 2), DD_ERR_UNKNOWN_VERTEX},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        char tn[160];
+        snprintf(tn, sizeof tn, "wrefuse/%s", cases[k].name);
+        tl_check(st, cases[k].got == cases[k].want && unchanged(t, &before) && (cases[k].want == DD_OK || dd_errmsg(t)[0]),
+                 tn, "status %s (want %s), errmsg '%s'", dd_status_name(cases[k].got), dd_status_name(cases[k].want),
+                 dd_errmsg(t));
+    }
+    tl_check(st, checked(t, why, sizeof why), "wrefuse/check-after", "%s", why);
+    /* a kept hidden point deleted: forgotten, no cell changes */
+    if (hp != UINT32_MAX) {
+        int32_t *c0 = NULL, *c1 = NULL;
+        size_t n0 = 0, n1 = 0;
+        dd_canonical(t, &c0, &n0);
+        const dd_status ds = dd_delete(t, hp);
+        dd_canonical(t, &c1, &n1);
+        const int ok = ds == DD_OK && !dd_is_hidden(t, hp) && dd_cgal_rt_forget(pr.c, hp) == 0 && n0 == n1 &&
+                       !memcmp(c0, c1, 4 * n0 * sizeof *c0) && agree(&pr, "forget", why, sizeof why);
+        tl_check(st, ok, "wdelete/hidden-point", "%s %s", dd_status_name(ds), why);
+        free(c0), free(c1);
+    }
+    tl_check(st, hp != UINT32_MAX, "wrefuse/has-hidden", "no hidden point to try");
+    /* an unweighted t refuses dd_move_weighted */
+    dd_tri *u0 = NULL;
+    if (dd_create(&u0, s.p, s.n, NULL, 0) == DD_OK) {
+        shot b0 = take_shot(u0);
+        const dd_status ds = dd_move_weighted(u0, 0, p, 1);
+        tl_check(st, ds == DD_ERR_UNSUPPORTED && unchanged(u0, &b0), "wrefuse/unweighted", "%s", dd_status_name(ds));
+        shot_free(&b0);
+        dd_free(u0);
+    }
+    shot_free(&before);
+    pair_free(&pr);
+    ws_free(&s);
+}
+
+/* ---- allocation failures --------------------------------------------------------------- */
+
+#ifdef DD_TEST_BUILD
+enum { OP_SET_EACH, OP_SET_REBUILD, OP_REINSERT, OP_MOVE_SMALL, OP_MOVE_FAR, OP_MOVE_HIDDEN, OP_REWEIGHT, NOPS };
+static const char *const op_name[NOPS] = {"set-each", "set-rebuild", "reinsert", "move-small", "move-far",
+                                          "move-hidden", "reweight"};
+
+typedef struct op_args {
+    uint32_t set[64], nset, v;
+    double p[3], w;
+} op_args;
+
+static dd_status run_op(dd_tri *t, int op, const op_args *a)
+{
+    switch (op) {
+    case OP_SET_EACH:
+    case OP_SET_REBUILD: {
+        dd_test_control(t, DD_TEST_SET_COURSE, op == OP_SET_EACH ? 1 : 2);
+        const dd_status s = dd_delete_set(t, a->set, a->nset);
+        dd_test_control(t, DD_TEST_SET_COURSE, 0);
+        return s;
+    }
+    case OP_REINSERT: return dd_reinsert(t, a->v);
+    default: return dd_move_weighted(t, a->v, a->p, a->w);
+    }
+}
+
+static void cgal_op(dd_cgal_rt *c, int op, const op_args *a)
+{
+    if (op == OP_SET_EACH || op == OP_SET_REBUILD)
+        for (uint32_t k = 0; k < a->nset; k++) cgal_delete(c, a->set[k]);
+    else if (op == OP_REINSERT)
+        dd_cgal_rt_insert_as(c, a->p, a->w, a->v);
+    else
+        dd_cgal_rt_move(c, a->v, a->p, a->w);
+}
+
+/* The triangulation an op starts from: the set built, and for a
+ * re-insertion its point deleted first (in CGAL too).                 */
+static dd_tri *start_of(const wset *s, int keep, int op, const op_args *a)
+{
+    dd_tri *t = NULL;
+    char msg[256];
+    dd_create_ex(&t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg);
+    if (op == OP_REINSERT) dd_delete(t, a->v);
+    return t;
+}
+
+static void fault_op(tl_state *st, const wset *s, int keep, int op)
+{
+    char tn[160], why[256] = "";
+    snprintf(tn, sizeof tn, "fault/%s/%s", op_name[op], keep ? "keep" : "discard");
+    op_args a = {0};
+    dd_tri *t = start_of(s, keep, -1, &a);
+    tl_rng r = {0xfa17 + (uint64_t)op};
+    pair tmp = {t, NULL, keep, pow((double)s->n, -1.0 / 3), s->p, s->w};
+    if (op == OP_SET_EACH || op == OP_SET_REBUILD) {
+        const uint32_t want = op == OP_SET_EACH ? 6 : 40;
+        while (a.nset < want) {
+            const uint32_t v = pick(t, &r, keep ? 3 : 1);
+            int seen = 0;
+            for (uint32_t k = 0; k < a.nset; k++) seen |= a.set[k] == v;
+            if (!seen) a.set[a.nset++] = v;
+        }
+    } else {
+        a.v = pick(t, &r, op == OP_MOVE_HIDDEN ? 2 : 1);
+        const int kind = op == OP_MOVE_SMALL ? MV_SMALL : op == OP_MOVE_FAR ? MV_LARGE : op == OP_REWEIGHT ? MV_UP : MV_HIDDEN;
+        if (a.v != UINT32_MAX) make_move(&tmp, &r, kind, a.v, a.p, &a.w);
+        if (op == OP_REINSERT) dd_point(t, a.v, a.p), dd_weight(t, a.v, &a.w);
+    }
+    dd_free(t);
+    if (op != OP_SET_EACH && op != OP_SET_REBUILD && a.v == UINT32_MAX) {
+        tl_check(st, !keep || op != OP_MOVE_HIDDEN, tn, "no point to use");
+        return;
+    }
+    dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
+    if (op == OP_REINSERT) dd_cgal_rt_remove(c, a.v);
+    cgal_op(c, op, &a);
+    long nomem = 0, bad = 0;
+    for (long k = 1; k < 100000; k++) {
+        t = start_of(s, keep, op, &a);
+        shot before = take_shot(t);
+        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+        const dd_status ds = run_op(t, op, &a);
+        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+        int ok = 1;
+        why[0] = 0;
+        if (ds == DD_ERR_NOMEM) {
+            nomem++;
+            ok = unchanged(t, &before) && checked(t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
+            if (ok && run_op(t, op, &a) != DD_OK) ok = 0, snprintf(why, sizeof why, "allocation %ld: retry failed", k);
+        } else if (ds != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s (%s)", k, dd_status_name(ds), dd_errmsg(t));
+        }
+        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        if (!ok && !bad++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
+        shot_free(&before);
+        dd_free(t);
+        if (left > 0) break;             /* the call made fewer than k */
+    }
+    tl_check(st, bad == 0, tn, "%ld bad of %ld refusals", bad, nomem);
+    fprintf(stderr, "  %s: %ld allocations refused in turn\n", tn, nomem);
+    dd_cgal_rt_free(c);
+}
+
+static void fault_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 80 : 150, 3, 21);
+    for (int keep = 1; keep >= 0; keep--)
+        for (int op = 0; op < NOPS; op++)
+            if (keep || op != OP_MOVE_HIDDEN) fault_op(st, &s, keep, op);
+    ws_free(&s);
+}
+#endif
+
+int main(int argc, char **argv)
+{
+    small = argc > 1 && !strcmp(argv[1], "small");
+    tl_state st = {0, 0};
+    const uint32_t n = small ? 250 : 1200, nm = small ? 30 : 120;
+    const double scales[] = {0.01, 1, 10};
+    for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
+        char name[64];
+        snprintf(name, sizeof name, "uniform-w%g", scales[k]);
+        wset s = gen_uniform(n, scales[k], 300 + k);
+        edit_case(&st, name, &s, nm);
+        ws_free(&s);
+    }
+    wset s = gen_grid(small ? 4 : 6, small ? 30 : 100, 1, 8);
+    edit_case(&st, "grid-dups", &s, nm);
+    ws_free(&s);
+    s = gen_molecule(small ? 5 : 8, 2);
+    edit_case(&st, "molecule", &s, nm);
+    ws_free(&s);
+    s = gen_protecting(small ? 30 : 80, small ? 100 : 400, 3);
+    edit_case(&st, "protecting", &s, nm);
+    ws_free(&s);
+    s = gen_curve(small ? 80 : 200, 0, 4);
+    edit_case(&st, "moment-curve", &s, nm);
+    ws_free(&s);
+    s = gen_curve(small ? 200 : 800, 1, 5);
+    edit_case(&st, "helix", &s, nm);
+    ws_free(&s);
+    filter_case(&st);
+    refusals_case(&st);
+#ifdef DD_TEST_BUILD
+    fault_case(&st);
+#endif
+    return tl_finish(&st);
+}
