@@ -266,10 +266,19 @@ clean:
 	rm -rf build python/dtdel/libdtdel.so python/dtdel/__pycache__
 
 # ---- soak: a million deletions checked against CGAL (not in make test) ------
-# SOAK_SCALE=0.01 make soak runs in about a minute; the workers (SOAK_JOBS,
+# and weighted deletions and moves against CGAL's regular triangulation.
+# SOAK_SCALE=0.01 make soak runs in a few minutes; the workers (SOAK_JOBS,
 # one per core) split the cases and the last line sums them.
 SOAK_SCALE ?= 1
 SOAK_JOBS  ?= 2
+# Two halves, one binary: tests/soak.c (unweighted cases, the workers) and
+# tests/soak_weighted.c (regular triangulations), sharing tests/soak.h.
+SOAK_SRC = tests/soak.c tests/soak_weighted.c
+$(B)/tests/soak: $(SOAK_SRC) tests/soak.h tests/testweighted.h tests/fuzz/canon.h $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a tests/testlib.h | $(DEPS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_R) -c tests/soak.c -o $@.o
+	$(CC) $(CFLAGS_R) -c tests/soak_weighted.c -o $@-weighted.o
+	$(CXX) $(CXXFLAGS_R) $@.o $@-weighted.o $(DATA_OBJ_B) $(SHIM_OBJ) $(B)/libdtdel-internal.a -o $@ $(LIBS)
 .PHONY: soak
 soak: deps $(B)/tests/soak
 	@$(B)/tests/soak --jobs $(SOAK_JOBS) --scale $(SOAK_SCALE)
@@ -293,10 +302,10 @@ $(LIB_OBJ_F): FUZZ_LIB_FLAGS = -O2 -fno-sanitize-coverage=trace-cmp
 $(F)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CFLAGS_F) $(FUZZ_LIB_FLAGS) -c $< -o $@
-$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h $(LIB_OBJ_F) $(DATA_OBJ_F) | $(DEPS_STAMP)
+$(F)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_entry.h tests/fuzz/canon.h $(LIB_OBJ_F) $(DATA_OBJ_F) | $(DEPS_STAMP)
 	$(FUZZ_CC) $(CFLAGS_F) -fsanitize=fuzzer $< $(LIB_OBJ_F) $(DATA_OBJ_F) -o $@ $(LIBS)
 fuzz-build: $(F)/fuzz_readers $(F)/fuzz_ops
 fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_CC=$(FUZZ_CC) sh scripts/fuzz.sh
 # the replay test includes the fuzz targets' entry points
-$(B)/tests/test_fuzz_replay $(A)/tests/test_fuzz_replay: tests/fuzz/fuzz_entry.h
+$(B)/tests/test_fuzz_replay $(A)/tests/test_fuzz_replay: tests/fuzz/fuzz_entry.h tests/fuzz/canon.h

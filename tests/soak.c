@@ -36,6 +36,9 @@
  * whole canonical form is compared with CGAL's and dd_check validates the
  * engine's triangulation.
  *
+ * The weighted cases (regular triangulations, both hidden modes, the
+ * same transforms) come after these in the numbering: soak_weighted.c.
+ *
  * --jobs J forks J workers that take the cases from a queue, the dearest
  * first; the parent waits for them and sums.  The last line is "soak:
  * N deletions, I insertions, V moves, M mismatches".  On a mismatch the
@@ -46,6 +49,7 @@
 #include "dtdel.h"
 #include "cgal/cgal_shim.h"
 #include "datasets/datasets.h"
+#include "soak.h"
 
 #include <errno.h>
 #include <float.h>
@@ -63,23 +67,30 @@
 #define SOAK_BASE_QUOTA 3900.0  /* deletions of one case at scale 1   */
 #define SOAK_CHECK_EVERY 1000   /* operations between full comparisons */
 #define SOAK_MAX_JOBS 16
-#define SOAK_MAX_VARIANTS 32
 
 /* ---- the cases ------------------------------------------------------------ */
 
 typedef enum { MODE_SEQ, MODE_DOWN, MODE_CHURN, NUM_MODES } soak_mode;
 static const char *const mode_names[NUM_MODES] = {"seq", "down", "churn"};
 
-typedef enum {
-    TF_NONE, TF_E16, TF_EM16, TF_E150, TF_EM150, TF_FAR, TF_E300, TF_EM300, TF_SUB, TF_MIXED, TF_SPAN, NUM_TF
-} soak_tf;
-static const char *const tf_names[NUM_TF] = {"x1",     "x1e16",     "x1e-16", "x1e150", "x1e-150", "far",
+const char *const soak_tf_names[NUM_TF] = {"x1",     "x1e16",     "x1e-16", "x1e150", "x1e-150", "far",
                                              "x1e300", "x1e-300", "x2^-1050", "mixed", "span"};
+
+/* The unweighted dataset a weighted one's points come from, for the
+ * sizes below: wmoment and whelix are the curves, wgrid a grid.        */
+static const char *shape(const char *name)
+{
+    static const char *const w[][2] = {{"wmoment", "moment"}, {"whelix", "helix"}, {"wgrid", "grid"}};
+    for (size_t i = 0; i < sizeof w / sizeof *w; i++)
+        if (!strcmp(name, w[i][0])) return w[i][1];
+    return name;
+}
 
 /* Largest set a case takes from a dataset: moment and helix have high
  * degrees (CGAL's remove() costs d^2 there), so their sets stay small.  */
 static uint32_t dataset_cap(const char *name)
 {
+    name = shape(name);
     if (!strcmp(name, "moment")) return 96;
     if (!strcmp(name, "helix")) return 2000;
     if (!strcmp(name, "cosphere")) return 6000;
@@ -90,6 +101,7 @@ static uint32_t dataset_cap(const char *name)
  * local check d^2 (d up to 95 and about 90 here), so they take fewer.  */
 static double dataset_weight(const char *name)
 {
+    name = shape(name);
     return !strcmp(name, "moment") || !strcmp(name, "helix") ? 0.35 : 1.0;
 }
 
@@ -97,19 +109,11 @@ static double dataset_weight(const char *name)
  * subsets stay degenerate.                                              */
 static uint32_t down_pool(const char *name)
 {
+    name = shape(name);
     if (!strcmp(name, "grid") || !strcmp(name, "grid-perturbed") || !strcmp(name, "layers")) return 64;
     if (!strcmp(name, "moment") || !strcmp(name, "cosphere")) return 60;
     return 400;
 }
-
-typedef struct soak_case {
-    int index;
-    const char *dataset;
-    soak_tf tf;
-    soak_mode mode;
-    uint64_t seed;
-    uint64_t quota;          /* deletions to reach */
-} soak_case;
 
 static size_t num_datasets(void)
 {
@@ -118,17 +122,21 @@ static size_t num_datasets(void)
     return n;
 }
 
-static size_t num_cases(void) { return num_datasets() * NUM_TF * NUM_MODES; }
+static size_t num_unweighted(void) { return num_datasets() * NUM_TF * NUM_MODES; }
+static size_t num_cases(void) { return num_unweighted() + soak_num_weighted(); }
 
 /* Case k: the dataset varies fastest, then the mode, then the transform,
  * so that a worker taking every J-th case still meets all of them.     */
 static soak_case make_case(size_t k, double scale, uint64_t seed)
 {
     size_t nd = num_datasets();
+    if (k >= num_unweighted()) return soak_weighted_case(k - num_unweighted(), (int)k, scale, seed);
     soak_case c;
+    memset(&c, 0, sizeof c);
     c.index = (int)k;
     c.dataset = dd_dataset_name(k % nd);
-    c.mode = (soak_mode)(k / nd % NUM_MODES);
+    c.mode = (int)(k / nd % NUM_MODES);
+    c.mode_name = mode_names[c.mode];
     c.tf = (soak_tf)(k / nd / NUM_MODES % NUM_TF);
     c.seed = seed * 1000003u + k;
     double q = SOAK_BASE_QUOTA * dataset_weight(c.dataset) * scale;
@@ -136,44 +144,7 @@ static soak_case make_case(size_t k, double scale, uint64_t seed)
     return c;
 }
 
-/* ---- a seeded generator (splitmix64) ---------------------------------------- */
-
-typedef struct rng { uint64_t s; } rng;
-
-static uint64_t next_u64(rng *r)
-{
-    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-static uint32_t below(rng *r, uint32_t m) { return (uint32_t)(next_u64(r) % m); }
-
 /* ---- the state of a worker ------------------------------------------------- */
-
-typedef struct stats {
-    uint64_t deletions, insertions, moves, mismatches, refusals, sets, checks;
-    uint64_t per_variant[SOAK_MAX_VARIANTS];
-} stats;
-
-typedef struct soak {
-    const char *variants[SOAK_MAX_VARIANTS];
-    size_t nvariants;
-    uint64_t turn;           /* next strategy: variants[turn % nvariants] */
-    stats st;
-    int quiet, worker;
-    double scale;            /* for the rerun hint */
-    uint64_t seed;
-    /* the real models, loaded once per worker */
-    const char *model_name[32];
-    double *model_xyz[32];
-    uint32_t model_n[32];
-    size_t nmodels;
-    /* the current case, for messages */
-    const soak_case *cs;
-    uint64_t round, step;
-} soak;
 
 static double now_s(void)
 {
@@ -183,13 +154,12 @@ static double now_s(void)
 }
 
 /* Reports a mismatch with everything needed to find it again. */
-__attribute__((format(printf, 2, 3)))
-static void mismatch(soak *s, const char *fmt, ...)
+void soak_mismatch(soak *s, const char *fmt, ...)
 {
     const soak_case *c = s->cs;
     s->st.mismatches++;
     printf("[w%d] MISMATCH case %d (dataset %s, transform %s, mode %s, seed %llu), round %llu, step %llu: ",
-           s->worker, c->index, c->dataset, tf_names[c->tf], mode_names[c->mode],
+           s->worker, c->index, c->dataset, soak_tf_names[c->tf], c->mode_name,
            (unsigned long long)c->seed, (unsigned long long)s->round, (unsigned long long)s->step);
     va_list ap;
     va_start(ap, fmt);
@@ -221,9 +191,11 @@ static int dataset_points(soak *s, const char *name, uint32_t n, uint64_t seed, 
     return 0;
 }
 
-/* Real models are read from the CGAL data archive once per worker. */
+/* Real models are read from the CGAL data archive once per worker; the
+ * weighted datasets are generated (dd_gen gives their points).          */
 static int is_model(const char *name)
 {
+    if (dd_dataset_is_weighted(name)) return 0;
     static const char *const synthetic[] = {"moment", "helix", "uniform", "sphere", "grid",
                                             "cosphere", "layers", "grid-perturbed", NULL};
     for (size_t i = 0; synthetic[i]; i++)
@@ -251,8 +223,24 @@ static int load_models(soak *s)
     return 0;
 }
 
-/* Applies the case's transform to n points in place. */
-static void transform(soak_tf tf, double *xyz, uint32_t n)
+/* w times f^2, as a squared length: +-DBL_MAX where that overflows. */
+static double scale_weight(double w, double f)
+{
+    const double x = w * f * f;
+    return w == 0 ? 0 : isfinite(x) ? x : copysign(DBL_MAX, w);
+}
+
+/* TF_SPAN moves the box's centre to 0 and its half-width (returned; 0
+ * for a single point) to 0.9 DBL_MAX.                                    */
+static double span_frame(const double *xyz, uint32_t n, double centre[3])
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, e = 0;
+    for (size_t i = 0; i < 3 * (size_t)n; i++) lo[i % 3] = fmin(lo[i % 3], xyz[i]), hi[i % 3] = fmax(hi[i % 3], xyz[i]);
+    for (int c = 0; c < 3; c++) e = fmax(e, 0.5 * (hi[c] - lo[c])), centre[c] = 0.5 * (lo[c] + hi[c]);
+    return e;
+}
+
+void soak_transform(soak_tf tf, double *xyz, double *w, uint32_t n)
 {
     double f = 1;
     switch (tf) {
@@ -266,16 +254,16 @@ static void transform(soak_tf tf, double *xyz, uint32_t n)
     case TF_SUB: f = 0x1p-1050; break;
     case TF_MIXED:
         for (size_t i = 0; i < 3 * (size_t)n; i++) xyz[i] *= i / 3 % 2 ? 1e300 : 1e-300;
+        for (size_t i = 0; w && i < n; i++) w[i] = scale_weight(w[i], i % 2 ? 1e300 : 1e-300);
         return;
-    case TF_SPAN: {                                 /* the box's centre to 0, its half-width to 0.9 DBL_MAX */
-        double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, e = 0;
-        for (size_t i = 0; i < 3 * (size_t)n; i++) lo[i % 3] = fmin(lo[i % 3], xyz[i]), hi[i % 3] = fmax(hi[i % 3], xyz[i]);
-        for (int c = 0; c < 3; c++) e = fmax(e, 0.5 * (hi[c] - lo[c]));
-        for (size_t i = 0; i < 3 * (size_t)n && e > 0; i++)
-            xyz[i] = (xyz[i] - 0.5 * (lo[i % 3] + hi[i % 3])) / e * (0.9 * DBL_MAX);
+    case TF_SPAN: {
+        double centre[3];
+        const double e = span_frame(xyz, n, centre);
+        for (size_t i = 0; i < 3 * (size_t)n && e > 0; i++) xyz[i] = (xyz[i] - centre[i % 3]) / e * (0.9 * DBL_MAX);
+        for (size_t i = 0; w && e > 0 && i < n; i++) w[i] = scale_weight(w[i], 0.9 * DBL_MAX / e);
         return;
     }
-    case TF_FAR: {
+    case TF_FAR: {                                  /* weights unchanged: a translation */
         double e = 0;
         for (size_t i = 0; i < 3 * (size_t)n; i++) e = fmax(e, fabs(xyz[i]));
         int ex;
@@ -288,10 +276,11 @@ static void transform(soak_tf tf, double *xyz, uint32_t n)
     default: return;
     }
     for (size_t i = 0; i < 3 * (size_t)n; i++) xyz[i] *= f;
+    for (size_t i = 0; w && i < n; i++) w[i] = scale_weight(w[i], f);
 }
 
-/* Shuffles the n points (Fisher-Yates). */
-static void shuffle_points(rng *r, double *xyz, uint32_t n)
+/* Shuffles the n points and their weights (Fisher-Yates). */
+void soak_shuffle(rng *r, double *xyz, double *w, uint32_t n)
 {
     for (uint32_t i = n; i > 1; i--) {
         uint32_t j = below(r, i);
@@ -299,6 +288,11 @@ static void shuffle_points(rng *r, double *xyz, uint32_t n)
         memcpy(t, xyz + 3 * (size_t)(i - 1), sizeof t);
         memcpy(xyz + 3 * (size_t)(i - 1), xyz + 3 * (size_t)j, sizeof t);
         memcpy(xyz + 3 * (size_t)j, t, sizeof t);
+        if (w) {
+            const double x = w[i - 1];
+            w[i - 1] = w[j];
+            w[j] = x;
+        }
     }
 }
 
@@ -374,14 +368,14 @@ static int pair_build(soak *s, pair *p, const double *xyz, uint32_t n)
     dd_status st = dd_create(&p->t, xyz, n, msg, sizeof msg);
     p->c = dd_cgal_build(xyz, n);
     if ((st == DD_OK) != (p->c != NULL)) {
-        mismatch(s, "building DT of %u points: engine %s (%s), CGAL %s", n, dd_status_name(st),
+        soak_mismatch(s, "building DT of %u points: engine %s (%s), CGAL %s", n, dd_status_name(st),
                  st == DD_OK ? "" : msg, p->c ? "built it" : "refused");
         pair_free(p);
         return -1;
     }
     if (st != DD_OK) return 1;
     if (pair_grow(p, n + 16)) {
-        mismatch(s, "out of memory");
+        soak_mismatch(s, "out of memory");
         return -1;
     }
     memcpy(p->xyz, xyz, 3 * (size_t)n * sizeof *xyz);
@@ -418,7 +412,7 @@ static int pair_full_check(soak *s, pair *p, const char *after)
     s->st.checks++;
     p->ops = 0;
     if (dd_canonical(p->t, &a, &na) != DD_OK || dd_cgal_canonical(p->c, &b, &nb)) {
-        mismatch(s, "canonical form failed after %s", after);
+        soak_mismatch(s, "canonical form failed after %s", after);
         free(a);
         free(b);
         return -1;
@@ -427,7 +421,7 @@ static int pair_full_check(soak *s, pair *p, const char *after)
     if (!ok) {
         char d[256];
         first_difference(a, na, b, nb, d, sizeof d);
-        mismatch(s, "whole triangulation differs from CGAL's after %s: %s", after, d);
+        soak_mismatch(s, "whole triangulation differs from CGAL's after %s: %s", after, d);
     }
     free(a);
     free(b);
@@ -435,7 +429,7 @@ static int pair_full_check(soak *s, pair *p, const char *after)
     char why[256];
     dd_status st = dd_check_msg(p->t, why, sizeof why);
     if (st != DD_OK) {
-        mismatch(s, "dd_check after %s: %s: %s", after, dd_status_name(st), why);
+        soak_mismatch(s, "dd_check after %s: %s: %s", after, dd_status_name(st), why);
         return -1;
     }
     return 0;
@@ -456,7 +450,7 @@ static int pair_local_check(soak *s, pair *p, const uint32_t *vs, size_t n, cons
             snprintf(d, sizeof d, "engine %s, CGAL %s", dd_status_name(st), rc ? "failed" : "ok");
         else
             first_difference(a, na, b, nb, d, sizeof d);
-        mismatch(s, "cells around the %zu vertices differ after %s: %s", n, after, d);
+        soak_mismatch(s, "cells around the %zu vertices differ after %s: %s", n, after, d);
     }
     free(a);
     free(b);
@@ -477,7 +471,7 @@ static int pair_delete(soak *s, pair *p, uint32_t v)
     size_t vi = s->turn % s->nvariants;
     uint32_t k = dd_neighbors(p->t, v, p->nb, p->nbcap);
     if (k > p->nbcap) {
-        mismatch(s, "vertex %u has %u neighbours, more than the %u vertices", v, k, p->nbcap);
+        soak_mismatch(s, "vertex %u has %u neighbours, more than the %u vertices", v, k, p->nbcap);
         return -1;
     }
     char what[96];
@@ -486,7 +480,7 @@ static int pair_delete(soak *s, pair *p, uint32_t v)
     int rc = dd_cgal_remove(p->c, v);
     if (st == DD_ERR_DIMENSION && rc) return 1;
     if (st != DD_OK || rc) {
-        mismatch(s, "%s: engine %s (%s), CGAL %s", what, dd_status_name(st), dd_errmsg(p->t),
+        soak_mismatch(s, "%s: engine %s (%s), CGAL %s", what, dd_status_name(st), dd_errmsg(p->t),
                  rc ? "refused" : "removed it");
         return -1;
     }
@@ -518,7 +512,7 @@ static int pair_delete_set(soak *s, pair *p, rng *r, uint32_t m)
     for (uint32_t i = 0; i < m; i++) {
         uint32_t k = dd_neighbors(p->t, vs[i], p->nb + nn, (uint32_t)(p->nbcap - nn));
         if (nn + k > p->nbcap) {
-            mismatch(s, "neighbour lists overflow");
+            soak_mismatch(s, "neighbour lists overflow");
             return -1;
         }
         nn += k;
@@ -534,12 +528,12 @@ static int pair_delete_set(soak *s, pair *p, rng *r, uint32_t m)
     snprintf(what, sizeof what, "deleting the set of %u vertices %u, %u, ... with %s", m, vs[0], vs[1], var);
     dd_status st = dd_delete_set_with(p->t, vs, m, var);
     if (st != DD_OK) {
-        mismatch(s, "%s: engine %s (%s)", what, dd_status_name(st), dd_errmsg(p->t));
+        soak_mismatch(s, "%s: engine %s (%s)", what, dd_status_name(st), dd_errmsg(p->t));
         return -1;
     }
     for (uint32_t i = 0; i < m; i++)
         if (dd_cgal_remove(p->c, vs[i])) {
-            mismatch(s, "%s: CGAL refused vertex %u", what, vs[i]);
+            soak_mismatch(s, "%s: CGAL refused vertex %u", what, vs[i]);
             return -1;
         }
     s->turn++;
@@ -564,12 +558,12 @@ static int pair_insert(soak *s, pair *p, const double q[3])
     int rc = dd_cgal_insert(p->c, q, st == DD_OK && fresh ? idx : next);
     if (st == DD_ERR_DUPLICATE && rc == 2) return 1;
     if (st != DD_OK || rc != 0 || !fresh) {
-        mismatch(s, "%s: engine %s (%s) index %u, CGAL %s", what, dd_status_name(st), dd_errmsg(p->t), idx,
+        soak_mismatch(s, "%s: engine %s (%s) index %u, CGAL %s", what, dd_status_name(st), dd_errmsg(p->t), idx,
                  rc == 2 ? "found it equal to a vertex" : rc ? "failed" : "inserted it");
         return -1;
     }
     if (pair_grow(p, p->nalive + 1 > idx + 1 ? p->nalive + 1 : idx + 1)) {
-        mismatch(s, "out of memory");
+        soak_mismatch(s, "out of memory");
         return -1;
     }
     memcpy(p->xyz + 3 * (size_t)idx, q, 3 * sizeof *q);
@@ -593,7 +587,7 @@ static int pair_move(soak *s, pair *p, uint32_t v, const double q[3])
     int rc = dd_cgal_move(p->c, v, q);
     if ((st == DD_ERR_DUPLICATE && rc == 2) || (st == DD_ERR_DIMENSION && rc == 3)) return 1;
     if (st != DD_OK || rc != 0 || k0 > p->nbcap / 2) {
-        mismatch(s, "%s: engine %s (%s), CGAL %s", what, dd_status_name(st), dd_errmsg(p->t),
+        soak_mismatch(s, "%s: engine %s (%s), CGAL %s", what, dd_status_name(st), dd_errmsg(p->t),
                  rc == 2 ? "found another vertex there" : rc == 3 ? "refused (coplanar)" : rc ? "failed" : "moved it");
         return -1;
     }
@@ -601,7 +595,7 @@ static int pair_move(soak *s, pair *p, uint32_t v, const double q[3])
     s->st.moves++;
     uint32_t k1 = dd_neighbors(p->t, v, p->nb + k0, p->nbcap / 2 - 1);
     if (k1 > p->nbcap / 2 - 1) {
-        mismatch(s, "%s: vertex %u has %u neighbours", what, v, k1);
+        soak_mismatch(s, "%s: vertex %u has %u neighbours", what, v, k1);
         return -1;
     }
     p->nb[k0 + k1] = v;
@@ -633,7 +627,7 @@ static void move_target(rng *r, const pair *p, uint32_t v, double h, const doubl
 
 /* Half the edge of the points' bounding box over the cube root of their
  * number: a step about the mean spacing.                                */
-static double mean_spacing(const double *xyz, uint32_t n)
+double soak_mean_spacing(const double *xyz, uint32_t n)
 {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, e = 0;
     for (uint32_t i = 0; i < n; i++)
@@ -682,12 +676,12 @@ static int run_seq(soak *s, const soak_case *c, rng *r)
         double *xyz;
         if (dataset_points(s, c->dataset, want, c->seed + s->round, &xyz, &np)) return -1;
         np = subset(r, xyz, np, want);
-        transform(c->tf, xyz, np);
+        soak_transform(c->tf, xyz, NULL, np);
         pair p;
         int b = pair_build(s, &p, xyz, np);
         free(xyz);
         if (b < 0) return -1;
-        if (b > 0) { mismatch(s, "the set of %u points was refused by both", np); return -1; }
+        if (b > 0) { soak_mismatch(s, "the set of %u points was refused by both", np); return -1; }
         uint64_t goal = p.nalive / 2;
         if (goal > c->quota - done) goal = c->quota - done;
         uint64_t start = s->st.deletions;
@@ -713,20 +707,20 @@ static int run_seq(soak *s, const soak_case *c, rng *r)
 static int run_down(soak *s, const soak_case *c, rng *r)
 {
     uint64_t done = 0, tries = 0;
-    double *pool;
+    double *reservoir;
     uint32_t npool;
-    if (dataset_points(s, c->dataset, down_pool(c->dataset), c->seed, &pool, &npool)) return -1;
-    transform(c->tf, pool, npool);
+    if (dataset_points(s, c->dataset, down_pool(c->dataset), c->seed, &reservoir, &npool)) return -1;
+    soak_transform(c->tf, reservoir, NULL, npool);
     double *xyz = malloc(3 * 40 * sizeof *xyz);
-    if (!xyz) { free(pool); return -1; }
+    if (!xyz) { free(reservoir); return -1; }
     while (done < c->quota && tries++ < 100 * c->quota) {
         uint32_t k = 5 + below(r, 36);
         if (k > npool) k = npool;
         for (uint32_t i = 0; i < k; i++)       /* with repetition: duplicates too */
-            memcpy(xyz + 3 * i, pool + 3 * (size_t)below(r, npool), 3 * sizeof *xyz);
+            memcpy(xyz + 3 * i, reservoir + 3 * (size_t)below(r, npool), 3 * sizeof *xyz);
         pair p;
         int b = pair_build(s, &p, xyz, k);
-        if (b < 0) { free(pool); free(xyz); return -1; }
+        if (b < 0) { free(reservoir); free(xyz); return -1; }
         if (b > 0) { s->round++; continue; }
         uint64_t start = s->st.deletions;
         s->step = 0;
@@ -741,19 +735,19 @@ static int run_down(soak *s, const soak_case *c, rng *r)
             }
             for (uint32_t i = 0; i < n && !gone; i++) {
                 int rc = pair_delete(s, &p, order[i]);
-                if (rc < 0) { pair_free(&p); free(pool); free(xyz); return -1; }
+                if (rc < 0) { pair_free(&p); free(reservoir); free(xyz); return -1; }
                 if (rc == 0) gone = 1;
                 else s->st.refusals++;
             }
             if (!gone) break;                    /* every deletion would drop the dimension */
             s->step++;
-            if (pair_full_check(s, &p, "a deletion")) { pair_free(&p); free(pool); free(xyz); return -1; }
+            if (pair_full_check(s, &p, "a deletion")) { pair_free(&p); free(reservoir); free(xyz); return -1; }
         }
         pair_free(&p);
         done += s->st.deletions - start;
         s->round++;
     }
-    free(pool);
+    free(reservoir);
     free(xyz);
     return 0;
 }
@@ -768,15 +762,15 @@ static int run_churn(soak *s, const soak_case *c, rng *r)
         uint32_t want = set_size(c, c->quota, 4), np;
         double *xyz;
         if (dataset_points(s, c->dataset, want, c->seed + s->round, &xyz, &np)) return -1;
-        shuffle_points(r, xyz, np);
+        soak_shuffle(r, xyz, NULL, np);
         np = np > want ? want : np;
-        transform(c->tf, xyz, np);
+        soak_transform(c->tf, xyz, NULL, np);
         uint32_t n0 = np - np / 3;               /* the rest is held back */
         pair p;
         int b = pair_build(s, &p, xyz, n0);
         if (b != 0) {
             free(xyz);
-            if (b > 0) mismatch(s, "the set of %u points was refused by both", n0);
+            if (b > 0) soak_mismatch(s, "the set of %u points was refused by both", n0);
             return -1;
         }
         double *gone = malloc(3 * (size_t)np * sizeof *gone);   /* deleted points */
@@ -784,7 +778,7 @@ static int run_churn(soak *s, const soak_case *c, rng *r)
         if (!gone) { pair_free(&p); free(xyz); return -1; }
         uint64_t goal = n0 / 2;
         if (goal > c->quota - done) goal = c->quota - done;
-        const double h = mean_spacing(xyz, n0);
+        const double h = soak_mean_spacing(xyz, n0);
         uint64_t start = s->st.deletions;
         for (s->step = 0; s->st.deletions - start < goal; s->step++) {
             int rc;
@@ -832,10 +826,20 @@ static int run_case(soak *s, const soak_case *c)
     s->step = 0;
     uint64_t d0 = s->st.deletions, i0 = s->st.insertions, m0 = s->st.moves;
     double t0 = now_s();
-    int rc = c->mode == MODE_SEQ ? run_seq(s, c, &r) : c->mode == MODE_DOWN ? run_down(s, c, &r) : run_churn(s, c, &r);
-    if (!s->quiet || rc)
+    uint64_t w0 = 0, w1 = 0;
+    for (int k = 0; k < NUM_WOPS; k++) w0 += s->st.wdone[k];
+    int rc = c->weighted             ? soak_weighted_run(s, c, &r)
+             : c->mode == MODE_SEQ  ? run_seq(s, c, &r)
+             : c->mode == MODE_DOWN ? run_down(s, c, &r)
+                                    : run_churn(s, c, &r);
+    for (int k = 0; k < NUM_WOPS; k++) w1 += s->st.wdone[k];
+    if ((!s->quiet || rc) && c->weighted)
+        printf("[w%d] case %3d %-14s %-8s %-13s %7llu weighted operations %6.1f s%s\n", s->worker, c->index,
+               c->dataset, soak_tf_names[c->tf], c->mode_name, (unsigned long long)(w1 - w0), now_s() - t0,
+               rc ? "  FAILED" : "");
+    else if (!s->quiet || rc)
         printf("[w%d] case %3d %-14s %-8s %-5s %7llu deletions %6llu insertions %6llu moves %6.1f s%s\n", s->worker,
-               c->index, c->dataset, tf_names[c->tf], mode_names[c->mode], (unsigned long long)(s->st.deletions - d0),
+               c->index, c->dataset, soak_tf_names[c->tf], c->mode_name, (unsigned long long)(s->st.deletions - d0),
                (unsigned long long)(s->st.insertions - i0), (unsigned long long)(s->st.moves - m0), now_s() - t0,
                rc ? "  FAILED" : "");
     fflush(stdout);
@@ -850,8 +854,9 @@ static int run_case(soak *s, const soak_case *c)
 static double case_cost(size_t k)
 {
     soak_case c = make_case(k, 1, 1);
+    if (c.weighted) return soak_weighted_cost(&c);
     double cost = (double)c.quota;
-    if (!strcmp(c.dataset, "moment") || !strcmp(c.dataset, "helix")) cost *= 15;
+    if (!strcmp(shape(c.dataset), "moment") || !strcmp(shape(c.dataset), "helix")) cost *= 15;
     if (c.tf == TF_E150 || c.tf == TF_EM150) cost *= 6;
     return cost;
 }
@@ -976,14 +981,11 @@ int main(int argc, char **argv)
     int got = 0;
     while (read(fds[0], &one, sizeof one) == (ssize_t)sizeof one) {
         got++;
-        tot.deletions += one.deletions;
-        tot.insertions += one.insertions;
-        tot.moves += one.moves;
-        tot.mismatches += one.mismatches;
-        tot.refusals += one.refusals;
-        tot.sets += one.sets;
-        tot.checks += one.checks;
-        for (size_t v = 0; v < SOAK_MAX_VARIANTS; v++) tot.per_variant[v] += one.per_variant[v];
+        uint64_t a[sizeof one / sizeof(uint64_t)], b[sizeof one / sizeof(uint64_t)];
+        memcpy(a, &tot, sizeof a);
+        memcpy(b, &one, sizeof b);
+        for (size_t i = 0; i < sizeof a / sizeof *a; i++) a[i] += b[i];
+        memcpy(&tot, a, sizeof a);
     }
     if (got != jobs) failed = 1;
     if (failed && tot.mismatches == 0) tot.mismatches = 1;
@@ -996,6 +998,7 @@ int main(int argc, char **argv)
            "checks, %.0f s, %.0f deletions/s\n",
            (unsigned long long)tot.sets, (unsigned long long)tot.refusals, (unsigned long long)tot.checks, secs,
            (double)tot.deletions / (secs > 0 ? secs : 1));
+    soak_weighted_report(&proto, &tot);
     printf("soak: %llu deletions, %llu insertions, %llu moves, %llu mismatches\n", (unsigned long long)tot.deletions,
            (unsigned long long)tot.insertions, (unsigned long long)tot.moves, (unsigned long long)tot.mismatches);
     return failed || tot.mismatches ? 1 : 0;

@@ -19,6 +19,17 @@
  *     dd_create from scratch of the vertices left (indices mapped back);
  *     a refused operation must leave the canonical form unchanged, and
  *     only the refusals the API documents are allowed.
+ *     An input whose first byte is FZ_WEIGHTED runs the same operations on
+ *     weighted points (issue 44): create makes a regular triangulation
+ *     (dd_create_ex, hidden points kept or DD_DISCARD_HIDDEN), insert is
+ *     dd_insert_weighted, move is dd_move or dd_move_weighted, each point
+ *     with a weight from fz_weight (any finite double among them).  The
+ *     reference is a dd_create_ex from scratch of the points left: with
+ *     hidden points kept, the vertices and the hidden points (the same
+ *     cells, the same hidden set but for exact copies of a point still
+ *     there); when discarding, the vertices (the same cells, nothing
+ *     hidden).  DD_ERR_UNSUPPORTED (an edit or a strategy not there yet
+ *     for weighted points) is an allowed refusal: nothing may change.
  *
  * Both return 0, or 1 after printing what broke to stderr (the drivers
  * abort then, so libFuzzer saves the input).  Header-only, all static:
@@ -31,6 +42,9 @@
 #include "dtdel_stats.h"
 #include "datasets/datasets.h"
 
+#include "canon.h"
+
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -90,6 +104,11 @@ static int dd_fuzz_readers(const uint8_t *data, size_t n)
 #define FZ_GRID 5          /* coordinates 0..4 */
 #define FZ_MAX_OPS 48
 #define FZ_MAX_POINTS 256
+#define FZ_WEIGHTED 0x57   /* first byte of a weighted session ('W') */
+
+/* dd_move_weighted comes with issue 44's edits; a library without it
+ * leaves this NULL, and the interpreter's weighted moves use dd_move.  */
+dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w) __attribute__((weak));
 
 typedef struct fz_in {
     const uint8_t *p;
@@ -129,6 +148,23 @@ static void fz_point(fz_in *in, int e, double q[3])
     for (int k = 0; k < 3; k++) q[k] = fz_coord(in, e);
 }
 
+/* A weight, scaled as a squared length of the grid: a byte b < 200 is
+ * b % 5 times 4^e (power ties among the grid's integer weights); b <
+ * 240 that minus 2 (negative weights too); b >= 240 any finite double,
+ * as fz_coord.  4^e saturates at DBL_MAX and rounds to 0 below the
+ * subnormals.                                                            */
+static double fz_weight(fz_in *in, int e)
+{
+    unsigned b = fz_byte(in);
+    if (b >= 240) {
+        in->at--;
+        return fz_coord(in, e);
+    }
+    const double k = b < 200 ? (double)(b % 5) : (double)(b % 5) - 2.0;
+    const double w = ldexp(k, 2 * e);
+    return isfinite(w) ? w : copysign(DBL_MAX, w);
+}
+
 /* The same point (-0.0 is 0.0, as for the engine). */
 static int fz_same(const double *a, const double *b)
 {
@@ -140,57 +176,83 @@ typedef struct fz_state {
     double xyz[3 * FZ_MAX_POINTS];   /* the point of each input index */
     uint32_t np;                     /* input indices so far */
     int scale;                       /* the scaled grid's exponent */
+    /* a weighted session */
+    int weighted, discard;
+    double w[FZ_MAX_POINTS];         /* the weight of each input index */
+    unsigned char gone[FZ_MAX_POINTS];   /* deleted (not hidden nor forgotten) */
 } fz_state;
 
-static int fz_cmp4(const void *a, const void *b)
+/* The points a build from scratch takes: the vertices, and with hidden
+ * points kept the hidden ones too.                                      */
+static int fz_alive(const fz_state *s, uint32_t i)
 {
-    const int32_t *x = a, *y = b;
-    for (int i = 0; i < 4; i++)
-        if (x[i] != y[i]) return x[i] < y[i] ? -1 : 1;
-    return 0;
+    return dd_is_vertex(s->t, i) || (s->weighted && !s->discard && dd_is_hidden(s->t, i));
 }
 
-/* The canonical form of a dd_create of the vertices of s->t from scratch,
- * its indices mapped back to s->t's; *out malloc'd.  0, or 1 on a bug.  */
-static int fz_scratch(const fz_state *s, int32_t **out, size_t *nout)
+/* The canonical form of a build from scratch of the points of s->t
+ * (fz_alive), its indices mapped back to s->t's; *out malloc'd; with
+ * hid not NULL (weighted), the hidden points' indices too, *hid malloc'd.
+ * 0, or 1 on a bug.                                                      */
+static int fz_scratch(const fz_state *s, int32_t **out, size_t *nout, uint32_t **hid, size_t *nhid)
 {
     uint32_t map[FZ_MAX_POINTS], m = 0;
-    double pts[3 * FZ_MAX_POINTS];
+    double pts[3 * FZ_MAX_POINTS], w[FZ_MAX_POINTS];
     for (uint32_t i = 0; i < s->np; i++)
-        if (dd_is_vertex(s->t, i)) {
+        if (fz_alive(s, i)) {
             map[m] = i;
             memcpy(pts + 3 * m, s->xyz + 3 * i, 3 * sizeof *pts);
+            w[m] = s->w[i];
             m++;
         }
     dd_tri *r = NULL;
     char msg[256];
-    dd_status st = dd_create(&r, pts, m, msg, sizeof msg);
+    dd_status st = dd_create_ex(&r, pts, s->weighted ? w : NULL, m, s->discard ? DD_DISCARD_HIDDEN : 0, msg, sizeof msg);
     if (st != DD_OK) {
-        fprintf(stderr, "fuzz ops: the %u vertices left do not build from scratch: %s\n", m, msg);
+        fprintf(stderr, "fuzz ops: the %u points left do not build from scratch: %s\n", m, msg);
         return 1;
     }
     int32_t *c = NULL;
     size_t nc = 0;
-    if (dd_canonical(r, &c, &nc) != DD_OK) {
+    if (dd_canonical(r, &c, &nc) != DD_OK || (hid && dd_hidden(r, hid, nhid) != DD_OK)) {
+        free(c);
         dd_free(r);
         return 1;
     }
     dd_free(r);
-    for (size_t i = 0; i < 4 * nc; i++)
-        if (c[i] >= 0) c[i] = (int32_t)map[c[i]];
-    for (size_t i = 0; i < nc; i++) {            /* sort each cell again */
-        int32_t *o = c + 4 * i;
-        for (int x = 1; x < 4; x++)
-            for (int y = x; y > 0 && o[y - 1] > o[y]; y--) {
-                int32_t tmp = o[y];
-                o[y] = o[y - 1];
-                o[y - 1] = tmp;
-            }
-    }
-    qsort(c, nc, 4 * sizeof *c, fz_cmp4);
+    canon_remap(c, nc, map);
+    if (hid) canon_remap_list(*hid, *nhid, map);
     *out = c;
     *nout = nc;
     return 0;
+}
+
+/* 1 if input i is an exact copy (point and weight) of another point
+ * left in s->t (fz_alive): which of equal copies stays hidden is not
+ * the build from scratch's to say.                                       */
+static int fz_has_twin(const fz_state *s, uint32_t i)
+{
+    for (uint32_t k = 0; k < s->np; k++)
+        if (k != i && fz_alive(s, k) && !memcmp(s->xyz + 3 * k, s->xyz + 3 * i, 3 * sizeof *s->xyz) && s->w[k] == s->w[i])
+            return 1;
+    return 0;
+}
+
+/* Weighted: the hidden sets of s->t and of the build from scratch are
+ * equal but for exact copies; discarding, both are empty.  0, or 1.    */
+static int fz_same_hidden(const fz_state *s, const uint32_t *hs, size_t nhs, const char *after)
+{
+    uint32_t *h = NULL;
+    size_t nh = 0;
+    if (dd_hidden(s->t, &h, &nh) != DD_OK) return 1;
+    int bad = s->discard && (nh || nhs);
+    for (size_t i = 0, j = 0; !bad && (i < nh || j < nhs);) {
+        if (i < nh && j < nhs && h[i] == hs[j]) i++, j++;
+        else if (j == nhs || (i < nh && h[i] < hs[j])) bad = !fz_has_twin(s, h[i++]);
+        else bad = !fz_has_twin(s, hs[j++]);
+    }
+    if (bad) fprintf(stderr, "fuzz ops: after %s: %zu hidden points, from scratch %zu or others\n", after, nh, nhs);
+    free(h);
+    return bad;
 }
 
 /* dd_check, then the canonical form against the one from scratch. */
@@ -203,8 +265,9 @@ static int fz_verify(const fz_state *s, const char *after)
         return 1;
     }
     int32_t *a = NULL, *b = NULL;
-    size_t na = 0, nb = 0;
-    if (dd_canonical(s->t, &a, &na) != DD_OK || fz_scratch(s, &b, &nb)) {
+    uint32_t *hs = NULL;
+    size_t na = 0, nb = 0, nhs = 0;
+    if (dd_canonical(s->t, &a, &na) != DD_OK || fz_scratch(s, &b, &nb, s->weighted ? &hs : NULL, &nhs)) {
         free(a);
         free(b);
         return 1;
@@ -213,17 +276,24 @@ static int fz_verify(const fz_state *s, const char *after)
     free(a);
     free(b);
     if (!same) fprintf(stderr, "fuzz ops: after %s: %zu cells, from scratch %zu or different cells\n", after, na, nb);
+    if (same && s->weighted) same = !fz_same_hidden(s, hs, nhs, after);
+    free(hs);
     return !same;
 }
 
+/* The canonical form's hash, with the hidden set and the index range. */
 static uint64_t fz_hash(dd_tri *t)
 {
     int32_t *a = NULL;
-    size_t na = 0;
+    uint32_t *hid = NULL;
+    size_t na = 0, nh = 0;
     if (dd_canonical(t, &a, &na) != DD_OK) return 0;
     uint64_t h = dd_canonical_hash(a, na);
     free(a);
-    return h;
+    if (dd_hidden(t, &hid, &nh) != DD_OK) return 0;
+    for (size_t i = 0; i < nh; i++) h = (h ^ hid[i]) * 0x100000001b3ull;
+    free(hid);
+    return (h ^ dd_num_input(t)) * 0x100000001b3ull;
 }
 
 /* A refused operation leaves the triangulation as it was. */
@@ -260,6 +330,125 @@ static const char *fz_variant(unsigned b)
     return dd_variant_name(b % nv);
 }
 
+/* ---- weighted sessions ---------------------------------------------------- */
+
+/* The vertex whose weighted point is exactly (q, w), or UINT32_MAX. */
+static uint32_t fz_weighted_twin(const fz_state *s, const double q[3], double w)
+{
+    for (uint32_t i = 0; i < s->np; i++)
+        if (dd_is_vertex(s->t, i) && fz_same(s->xyz + 3 * i, q) && s->w[i] == w) return i;
+    return UINT32_MAX;
+}
+
+/* create: a mode byte (bit 0: DD_DISCARD_HIDDEN), then 4 to 32 weighted
+ * points.  Refusals: fewer than 4 vertices, or all in a plane.          */
+static int fz_wcreate(fz_state *s, fz_in *in)
+{
+    const int discard = fz_byte(in) & 1;
+    uint32_t m = 4 + fz_byte(in) % 29;
+    double pts[3 * 32], w[32];
+    for (uint32_t i = 0; i < m; i++) {
+        fz_point(in, s->scale, pts + 3 * i);
+        w[i] = fz_weight(in, s->scale);
+    }
+    dd_tri *t = NULL;
+    char msg[256], what[96];
+    dd_status st = dd_create_ex(&t, pts, w, m, discard ? DD_DISCARD_HIDDEN : 0, msg, sizeof msg);
+    if (st != DD_OK) {
+        if (st == DD_ERR_TOO_FEW || st == DD_ERR_COLLINEAR || st == DD_ERR_COPLANAR || st == DD_ERR_DIMENSION) return 0;
+        fprintf(stderr, "fuzz ops: weighted create of %u points: %s: %s\n", m, dd_status_name(st), msg);
+        return 1;
+    }
+    dd_free(s->t);
+    s->t = t;
+    s->discard = discard;
+    memcpy(s->xyz, pts, 3 * m * sizeof *pts);
+    memcpy(s->w, w, m * sizeof *w);
+    memset(s->gone, 0, sizeof s->gone);
+    s->np = m;
+    snprintf(what, sizeof what, "weighted create of %u points (%s)", m, discard ? "discard" : "keep");
+    return fz_verify(s, what);
+}
+
+/* insert (dd_insert_weighted): a new index, or a deleted one reused;
+ * a vertex's exact weighted point names that vertex and changes nothing. */
+static int fz_winsert(fz_state *s, fz_in *in, uint64_t before)
+{
+    double q[3];
+    char what[128];
+    fz_point(in, s->scale, q);
+    const double w = fz_weight(in, s->scale);
+    if (s->np == FZ_MAX_POINTS) return 0;
+    const uint32_t twin = fz_weighted_twin(s, q, w);
+    uint32_t idx = UINT32_MAX;
+    snprintf(what, sizeof what, "weighted insert of (%g, %g, %g; %g)", q[0], q[1], q[2], w);
+    const dd_status st = dd_insert_weighted(s->t, q, w, &idx);
+    if (st == DD_OK && twin != UINT32_MAX && idx == twin) return fz_unchanged(s, before, what, st);
+    const int fresh = idx == s->np || (idx < s->np && s->gone[idx] && dd_alias(s->t, idx) == idx);
+    if (st == DD_OK && twin == UINT32_MAX && fresh) {
+        memcpy(s->xyz + 3 * idx, q, sizeof q);
+        s->w[idx] = w;
+        s->gone[idx] = 0;
+        if (idx == s->np) s->np++;
+        return fz_verify(s, what);
+    }
+    if (st == DD_ERR_DUPLICATE && twin != UINT32_MAX) return fz_unchanged(s, before, what, st);
+    fprintf(stderr, "fuzz ops: %s: %s (a vertex's weighted point: %d), index %u of %u: %s\n", what,
+            dd_status_name(st), twin != UINT32_MAX, idx, s->np, dd_errmsg(s->t));
+    return 1;
+}
+
+/* move: a byte picks dd_move (even) or dd_move_weighted (odd, when the
+ * library has it; else dd_move), then the point and the weight.  Onto
+ * another vertex's exact weighted point: DD_ERR_DUPLICATE.              */
+static int fz_wmove(fz_state *s, fz_in *in, uint64_t before)
+{
+    const uint32_t v = fz_vertex(s, fz_byte(in));
+    const int weighted = (fz_byte(in) & 1) && dd_move_weighted;
+    double q[3];
+    char what[128];
+    fz_point(in, s->scale, q);
+    double w = fz_weight(in, s->scale);
+    if (v == UINT32_MAX) return 0;
+    if (!weighted) w = s->w[v];
+    const uint32_t twin = fz_weighted_twin(s, q, w);
+    const int dup = twin != UINT32_MAX && twin != v;
+    snprintf(what, sizeof what, "%s of %u to (%g, %g, %g; %g)", weighted ? "move_weighted" : "move", v, q[0], q[1],
+             q[2], w);
+    const dd_status st = weighted ? dd_move_weighted(s->t, v, q, w) : dd_move(s->t, v, q);
+    if (st == DD_OK && !dup) {
+        memcpy(s->xyz + 3 * v, q, sizeof q);
+        s->w[v] = w;
+        return fz_verify(s, what);
+    }
+    if ((st == DD_ERR_DUPLICATE && dup) || st == DD_ERR_DIMENSION || st == DD_ERR_UNSUPPORTED)
+        return fz_unchanged(s, before, what, st);
+    fprintf(stderr, "fuzz ops: %s: %s (another vertex's weighted point: %d): %s\n", what, dd_status_name(st), dup,
+            dd_errmsg(s->t));
+    return 1;
+}
+
+/* reinsert: a deleted point (not a hidden or forgotten one), its weight. */
+static int fz_wreinsert(fz_state *s, fz_in *in, uint64_t before)
+{
+    uint32_t k = fz_byte(in), v = UINT32_MAX;
+    char what[96];
+    for (uint32_t i = 0; i < s->np && v == UINT32_MAX; i++)
+        if (s->gone[(k + i) % s->np]) v = (k + i) % s->np;
+    if (v == UINT32_MAX) return 0;
+    const int dup = fz_weighted_twin(s, s->xyz + 3 * v, s->w[v]) != UINT32_MAX;
+    snprintf(what, sizeof what, "weighted reinsert of %u", v);
+    const dd_status st = dd_reinsert(s->t, v);
+    if (st == DD_OK && !dup) {
+        s->gone[v] = 0;
+        return fz_verify(s, what);
+    }
+    if ((st == DD_ERR_DUPLICATE && dup) || st == DD_ERR_UNSUPPORTED) return fz_unchanged(s, before, what, st);
+    fprintf(stderr, "fuzz ops: %s: %s (a vertex's weighted point: %d): %s\n", what, dd_status_name(st), dup,
+            dd_errmsg(s->t));
+    return 1;
+}
+
 static int dd_fuzz_ops(const uint8_t *data, size_t n)
 {
     fz_in in = {data, n, 0};
@@ -267,11 +456,21 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
     if (!s) return 0;
     int bad = 0;
     char what[96];
+    if (n > 0 && data[0] == FZ_WEIGHTED) s->weighted = 1, in.at = 1;
     for (int op = 0; op < FZ_MAX_OPS && fz_more(&in) && !bad; op++) {
         unsigned code = fz_byte(&in) % 8;
         if (s->t == NULL) code = 0;                         /* nothing to work on yet */
         uint64_t before = s->t ? fz_hash(s->t) : 0;
         dd_status st;
+#ifdef FZ_TRACE      /* -DFZ_TRACE: each operation and the state after it */
+        if (s->t) fprintf(stderr, "fuzz ops: op %d code %u: %u vertices, %u inputs, last message '%s'\n", op, code,
+                          dd_num_vertices(s->t), dd_num_input(s->t), dd_errmsg(s->t));
+#endif
+        if (s->weighted && (code == 0 || code == 3 || code == 4 || code == 6)) {
+            bad = code == 0 ? fz_wcreate(s, &in) : code == 3 ? fz_winsert(s, &in, before)
+                : code == 4 ? fz_wmove(s, &in, before) : fz_wreinsert(s, &in, before);
+            continue;
+        }
         switch (code) {
         case 0: {                                           /* create */
             uint32_t m = 4 + fz_byte(&in) % 29;
@@ -298,8 +497,9 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             const char *var = fz_variant(fz_byte(&in));
             snprintf(what, sizeof what, "delete of %u with %s", v, var);
             st = dd_delete_with(s->t, v, var);
-            if (st == DD_OK) bad = fz_verify(s, what);
-            else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
+            if (st == DD_OK) s->gone[v] = 1, bad = fz_verify(s, what);
+            else if (st == DD_ERR_DIMENSION || (s->weighted && st == DD_ERR_UNSUPPORTED))
+                bad = fz_unchanged(s, before, what, st);
             else {
                 fprintf(stderr, "fuzz ops: %s: %s: %s\n", what, dd_status_name(st), dd_errmsg(s->t));
                 bad = 1;
@@ -359,8 +559,11 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             const char *var = fz_variant(fz_byte(&in));
             snprintf(what, sizeof what, "delete_set of %u vertices with %s", k, var);
             st = dd_delete_set_with(s->t, vs, k, var);
-            if (st == DD_OK) bad = fz_verify(s, what);
-            else if (st == DD_ERR_DIMENSION) bad = fz_unchanged(s, before, what, st);
+            if (st == DD_OK) {
+                for (uint32_t i = 0; i < k; i++) s->gone[vs[i]] = 1;
+                bad = fz_verify(s, what);
+            } else if (st == DD_ERR_DIMENSION || (s->weighted && st == DD_ERR_UNSUPPORTED))
+                bad = fz_unchanged(s, before, what, st);
             else {
                 fprintf(stderr, "fuzz ops: %s: %s: %s\n", what, dd_status_name(st), dd_errmsg(s->t));
                 bad = 1;
