@@ -282,7 +282,7 @@ static void refusals_case(tl_state *st)
     uint32_t set[2] = {v, v + 1 < s.n ? v + 1 : 0}, idx = 12345;
     struct { const char *name; dd_status got, want; } cases[] = {
         {"delete-grr-edge", dd_delete_with(t, v, "grr-edge"), DD_ERR_UNSUPPORTED},
-        {"delete-with", dd_delete_with(t, v, "gift-wrap"), DD_ERR_UNSUPPORTED},
+        {"delete-with", dd_delete_with(t, v, "dtq-only"), DD_ERR_UNSUPPORTED},
         {"delete-set", dd_delete_set(t, set, 2), DD_ERR_UNSUPPORTED},
         {"delete-set-with", dd_delete_set_with(t, set, 1, NULL), DD_ERR_UNSUPPORTED},
         {"reinsert-hidden", dd_reinsert(t, hp < s.n ? hp : v), DD_ERR_UNSUPPORTED},

@@ -12,6 +12,8 @@
  *    taken in turn (test builds: scalar, no single precision, spoiled
  *    single precision, narrower guesses), on the grid also with exact
  *    duplicates, and on protecting balls;
+ *  - the gift wrap's weighted filter bound (dd_lift_power_err) against
+ *    the exact power test;
  *  - zero weights: the same cells as the unweighted triangulation after
  *    every step, the wrap taking the same course (gift-wrap, auto);
  *  - the strategies that do not yet refuse with DD_ERR_UNSUPPORTED and a
@@ -29,8 +31,11 @@
 #include "dtdel_stats.h"
 #include "cgal/cgal_regular.h"
 #include "testweighted.h"
+#include "geom/lift_pass.h"
+#include "geom/power.h"
 
 static int small;
+static const double q_origin[3] = {0, 0, 0};
 
 static uint32_t random_vertex(const dd_tri *t, tl_rng *r)
 {
@@ -93,6 +98,74 @@ static void delete_all(tl_state *st, const char *name, const wset *s, uint32_t n
     for (int keep = 1; keep >= 0; keep--)
         for (size_t k = 0; k < sizeof supported / sizeof *supported; k++)
             delete_case(st, name, s, ndel, supported[k], keep);
+}
+
+/* ---- the weighted filter ------------------------------------------------------- */
+
+/* The wrap's weighted bound (geom/lift.h, dd_lift_power_err) is sound:
+ * frames of five weighted points lifted at a sixth (dd_lift_rows_power),
+ * the determinant evaluated as the wrap does (minors, cofactors, K . P);
+ * whenever it is beyond the bound its sign is minus dd_power_exact's.
+ * Frames: random, nearly on one power sphere (the fifth weight chosen
+ * to put it on the sphere of the first four, then rounded), weights far
+ * beyond m^2, tiny and huge magnitudes; and the bound is +inf where a
+ * weight difference overflows.                                          */
+static void power_bound_case(tl_state *st)
+{
+    dd_pred pr;
+    dd_pred_init(&pr);
+    tl_rng r = {0xb0b};
+    long certified = 0, wrong = 0, trials = small ? 20000 : 200000, infs = 0;
+    double col[4][8], *L[4] = {col[0], col[1], col[2], col[3]};
+    for (long k = 0; k < trials && !wrong; k++) {
+        const double sc = ldexp(1, (int)tl_int(&r, -60, 60)), wsc = sc * sc * ldexp(1, (int)tl_int(&r, -20, 40));
+        double q[3], p[5][3], w[5], qw = wsc * (tl_unif(&r) - 0.5);
+        for (int i = 0; i < 3; i++) q[i] = sc * (tl_unif(&r) - 0.5);
+        for (int j = 0; j < 5; j++) {
+            for (int i = 0; i < 3; i++) p[j][i] = q[i] + sc * (tl_unif(&r) - 0.5);
+            w[j] = wsc * (tl_unif(&r) - 0.5);
+        }
+        const double *pts[5] = {p[0], p[1], p[2], p[3], p[4]};
+        double W;
+        dd_lift_frame f = dd_lift_rows_power(L, pts, w, 5, q, qw, &W);
+        if (k % 2) {   /* the fifth nearly on the power sphere of the first four */
+            double B[4], C[4], X[4], P[4], m[6], K[4];
+            for (int i = 0; i < 4; i++) B[i] = L[i][1] - L[i][0], C[i] = L[i][2] - L[i][0], X[i] = L[i][3] - L[i][0];
+            for (int i = 0; i < 4; i++) P[i] = L[i][4] - L[i][0];
+            dd_lift_minors(m, B, C);
+            dd_lift_cofactors(K, X, m);
+            if (K[3] != 0) {
+                /* then moved by 2^-20 to 2^-50 of the lift's size: near the bound */
+                const double lift = f.m * f.m + fabs(L[3][4]);
+                w[4] += (K[0] * P[0] + K[1] * P[1] + K[2] * P[2] + K[3] * P[3]) / K[3] +
+                        (tl_unif(&r) - 0.5) * ldexp(lift, -(int)tl_int(&r, 20, 50));
+                f = dd_lift_rows_power(L, pts, w, 5, q, qw, &W);
+            }
+        }
+        const double err = dd_lift_power_err(f.m, W);
+        double B[4], C[4], X[4], P[4], m[6], K[4];
+        for (int i = 0; i < 4; i++) {
+            B[i] = L[i][1] - L[i][0], C[i] = L[i][2] - L[i][0], X[i] = L[i][3] - L[i][0], P[i] = L[i][4] - L[i][0];
+        }
+        dd_lift_minors(m, B, C);
+        dd_lift_cofactors(K, X, m);
+        const int s = dd_lift_sure(dd_lift_dot4(K, P), err);
+        if (!s) continue;
+        certified++;
+        const double wt[5] = {w[0], w[1], w[2], w[3], w[4]};
+        if (s != -dd_power_exact(&pr, p[0], p[1], p[2], p[3], p[4], wt)) wrong++;
+    }
+    const double big[3] = {1, 2, 3};
+    const double *one[1] = {big};
+    const double ww[1] = {1e308};
+    double W;
+    dd_lift_frame f = dd_lift_rows_power(L, one, ww, 1, q_origin, -1e308, &W);
+    infs = dd_lift_power_err(f.m, W) == 1.0 / 0.0;
+    tl_check(st, !wrong && certified > trials / 10 && infs, "filter/weighted-bound",
+             "%ld wrong of %ld certified (%ld frames); overflowed weights: bound %s", wrong, certified, trials,
+             infs ? "+inf" : "finite");
+    if (!wrong) fprintf(stderr, "  filter/weighted-bound: %ld of %ld frames certified, all right\n", certified, trials);
+    dd_pred_clear(&pr);
 }
 
 /* ---- zero weights ----------------------------------------------------------------- */
@@ -300,6 +373,7 @@ int main(int argc, char **argv)
     s = gen_curve(small ? 200 : 500, 1, 4);
     delete_all(&st, "helix", &s, nd);
     ws_free(&s);
+    power_bound_case(&st);
     refusals_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);

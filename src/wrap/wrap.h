@@ -7,7 +7,9 @@
  * The fill is exactly the one the other strategies build (the perturbed
  * DT(S \ q) inside the cavity): the wrap guesses it and keeps the guess
  * when it proves to be a triangulation of the cavity with every facet
- * locally Delaunay, and else finds it by certified scans.
+ * locally Delaunay, and else finds it by certified scans.  On a weighted
+ * t it is the perturbed regular fill, found in the lifted frame with the
+ * star's hidden points among the sites (docs/gift-wrap.md §13).
  */
 #ifndef DD_WRAP_H
 #define DD_WRAP_H
@@ -17,14 +19,17 @@
 /* Makes the fill of the cavity of d->q in the mesh (d->fill: over the
  * star's cells, then in new ones, glued to each other) and the sew's
  * matching (d->sew_out; d->fill_in_mesh); d->order holds d->nbr, in the
- * order that is the wrap's local numbering.  It declines (*declined = 1,
+ * order that is the wrap's local numbering (weighted: then d->hpts, the
+ * order rewritten so when there are hidden points).  It declines
+ * (*declined = 1,
  * DD_OK, the mesh as it was, d->fill empty) when:
  *  - from 40 neighbours on, its exact tests pass their budget, or every
  *    guess is refuted and the neighbours are not all on one sphere;
  *  - a flat hull case its checks do not settle;
  *  - from wide_below neighbours on, no narrow guess holds and the
  *    neighbours are not cospherical (the wide guess is not tried);
- *  - from DD_WRAP_CODE_LEN - 1 neighbours on (no facet keys).
+ *  - from DD_WRAP_CODE_LEN - 1 neighbours on (no facet keys);
+ *  - weighted: a flat hull facet with sites in its plane (§13).
  * (docs/gift-wrap.md §10.)  DD_ERR_INTERNAL, with a message and the mesh
  * as it was, if the fill does not close, which only a broken
  * triangulation causes; DD_ERR_NOMEM likewise.                          */
