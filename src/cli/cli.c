@@ -451,6 +451,13 @@ static const command commands[] = {
      "cells and hidden sets are compared (after each construction and at five\n"
      "checkpoints of the insertions); mismatches are printed, exit 1 on any.\n"
      "While the engine refuses weights, its figures read n/a.", cmd_regular_bench},
+    {"wedit-bench", "wedit-bench [N] [--set M] [--passes P] [--dataset NAME] [--seed S]",
+     "Weighted edits against CGAL's Regular_triangulation_3, hidden points\n"
+     "kept, each result compared: dd_delete_set of a random 10% and 90% of M\n"
+     "weighted points (default 200000) against CGAL's remove() one at a time;\n"
+     "every vertex of N points (default 100000) moved by 5% of the mean\n"
+     "spacing, P passes (default 2), then re-weighted by +-10%, against CGAL's\n"
+     "remove and insert.  NAME: a weighted dataset (default wuniform).", cmd_wedit_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",
