@@ -201,19 +201,19 @@ struct Bench : public Any {
         return rt.dimension() == 3 ? 0 : 3;
     }
 
-    /* The indices of the vertices inserting p (located in c, lt) hides;
-     * *hidden: p itself ends hidden; *dup: p is a vertex's weighted point. */
+    /* The indices of the vertices inserting p (located in c, lt, li)
+     * hides; *hidden: p ends hidden; *dup: p is a vertex's weighted point. */
     void what_insert_hides(const Wpoint &p, C c, typename T::Locate_type lt, int li, std::vector<uint32_t> &gone,
                            bool *hidden, bool *dup) const
     {
         gone.clear();
         *hidden = *dup = false;
-        if (lt == T::VERTEX) {
-            const V u = c->vertex(li);
-            const double wu = u->point().weight();
-            *dup = wu == p.weight();
-            *hidden = wu > p.weight();
-            if (wu < p.weight()) gone.push_back(u->info().i);
+        /* CGAL's insert_in_conflict: a vertex's exact weighted point is
+         * that vertex; otherwise, on a vertex's position too, the point
+         * is hidden unless in conflict with the cell located, and then
+         * hides the vertices inside its conflict zone.                   */
+        if (lt == T::VERTEX && c->vertex(li)->point().weight() == p.weight()) {
+            *dup = true;
             return;
         }
         if (rt.side_of_power_sphere(c, p, true) != CGAL::ON_BOUNDED_SIDE) {

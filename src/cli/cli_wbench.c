@@ -73,7 +73,6 @@ typedef struct wrun {
     FILE *csv;
     const char *open_ds;
     long mismatches;
-    int rebuilt_note;
 } wrun;
 
 /* The vertex under way: its degree, neighbours and, once the cgal row
@@ -186,14 +185,15 @@ static double kept_median(double *us, int reps)
 /* The cgal row of the vertex: CGAL's remove() timed, the compared
  * vertices (its former neighbours and what it released) and CGAL's
  * hashes taken after the first run, the vertex put back each time.
- * 0; 1 when CGAL refuses or fails (the vertex is skipped).            */
+ * 0; 1 when CGAL refuses (the vertex is skipped); -1 on a failure.    */
 static int cgal_row(wpair *p, wvertex *wv, double *med)
 {
     double us[MAX_REPS + 1], spent = 0;
     int reps = 0;
     while (reps < MAX_REPS + 1 && (reps == 0 || spent < rep_budget_s)) {
         double s;
-        if (dd_cgal_rb_remove(p->c, wv->v, &s)) return 1;
+        int rc = dd_cgal_rb_remove(p->c, wv->v, &s);
+        if (rc) return rc == 3 && reps == 0 ? 1 : -1;
         us[reps++] = 1e6 * s;
         spent += s;
         if (reps == 1) {
@@ -203,11 +203,11 @@ static int cgal_row(wpair *p, wvertex *wv, double *med)
             memcpy(wv->cmp + nn, r, nr * sizeof *r);
             wv->ncmp = (uint32_t)(nn + nr);
             qsort(wv->cmp, wv->ncmp, sizeof *wv->cmp, cmp_u32);
-            if (cgal_hashes(p->c, wv, &wv->cells_h, &wv->hidden_h)) return 1;
+            if (cgal_hashes(p->c, wv, &wv->cells_h, &wv->hidden_h)) return -1;
         }
         const uint32_t *nb;
         dd_cgal_rb_last_neighbors(p->c, &nb);
-        if (dd_cgal_rb_insert(p->c, wv->v, p->xyz + 3 * (size_t)wv->v, p->w[wv->v], nb[0], &s)) return 1;
+        if (dd_cgal_rb_insert(p->c, wv->v, p->xyz + 3 * (size_t)wv->v, p->w[wv->v], nb[0], &s)) return -1;
     }
     *med = kept_median(us, reps);
     return 0;
@@ -226,32 +226,16 @@ static int whole_equal(wpair *p, uint32_t v)
     return same;
 }
 
-/* Puts v back into our triangulation; while dd_reinsert refuses weighted
- * points, by building the triangulation again (slow, said once; the
- * engine rows then time one cold run each).                            */
-static int put_back(wrun *b, wpair *p, uint32_t v)
-{
-    dd_status s = dd_reinsert(p->t, v);
-    if (s != DD_ERR_UNSUPPORTED) return s != DD_OK;
-    if (!b->rebuilt_note++)
-        fprintf(stderr, "dtdel wbench: dd_reinsert refuses weighted points: rebuilding after each deletion\n");
-    char msg[256];
-    dd_free(p->t);
-    p->t = NULL;
-    return dd_create_ex(&p->t, p->xyz, p->w, p->np, p->discard ? DD_DISCARD_HIDDEN : 0, msg, sizeof msg) != DD_OK;
-}
-
 /* An engine row of the vertex.  0 with *med and *match; 1 when the
  * strategy refused weighted points (DD_ERR_UNSUPPORTED); -1 on another
  * failure (a mismatch, said on stderr).                                */
-static int engine_row(wrun *b, wpair *p, const wvertex *wv, const char *var, double *med, int *match,
+static int engine_row(wpair *p, const wvertex *wv, const char *var, double *med, int *match,
                       uint64_t *tets)
 {
     double us[MAX_REPS + 1], spent = 0;
     int reps = 0;
     *match = 0;
-    /* one cold run while each run costs a rebuild (put_back) */
-    while (reps < MAX_REPS + 1 && (reps == 0 || (spent < rep_budget_s && !b->rebuilt_note))) {
+    while (reps < MAX_REPS + 1 && (reps == 0 || spent < rep_budget_s)) {
         double t0 = now_seconds();
         dd_status s = dd_delete_with(p->t, wv->v, var);
         double t1 = now_seconds();
@@ -270,7 +254,7 @@ static int engine_row(wrun *b, wpair *p, const wvertex *wv, const char *var, dou
             *match = !our_hashes(p->t, wv, &ch, &hh) && ch == wv->cells_h && hh == wv->hidden_h;
             if (*match && wv->it == 0 && p->np <= FULL_COMPARE_MAX) *match = whole_equal(p, wv->v);
         }
-        if (put_back(b, p, wv->v)) {
+        if (dd_reinsert(p->t, wv->v) != DD_OK) {
             fprintf(stderr, "dtdel wbench: cannot put vertex %u back: %s\n", wv->v, dd_errmsg(p->t));
             return -1;
         }
@@ -294,13 +278,18 @@ static void vertex_rows(wrun *b, const wcase *c, wpair *p, wvertex *wv, unsigned
     wv->deg = dd_degree(p->t, wv->v);
     wv->hull = (uint32_t)dd_on_hull(p->t, wv->v);
     double med;
-    if (cgal_row(p, wv, &med)) return;                  /* CGAL refuses: skip the vertex */
+    int rc = cgal_row(p, wv, &med);
+    if (rc < 0) {
+        fprintf(stderr, "dtdel wbench: %s %u: the CGAL reference failed on vertex %u\n", c->dataset, p->np, wv->v);
+        b->mismatches++;
+    }
+    if (rc) return;                                     /* CGAL refuses: skip the vertex */
     csv_row(b, c, p, wv, "cgal", med, NULL, 1);
     for (size_t r = 0; r < b->nr; r++) {
         if (refused[r]) continue;
         int match;
         uint64_t tets = 0;
-        int rc = engine_row(b, p, wv, b->rows[r], &med, &match, &tets);
+        rc = engine_row(p, wv, b->rows[r], &med, &match, &tets);
         if (rc == 1) {
             refused[r] = 1;
             continue;

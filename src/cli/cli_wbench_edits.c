@@ -34,10 +34,6 @@
 
 #define CHECKPOINTS 5
 
-/* dd_move_weighted (issue 44) is being added to the library on another
- * branch; until it is there, the re-weighting rows read n/a.           */
-dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w) __attribute__((weak));
-
 typedef struct we_opts {
     uint64_t n, passes, m, seed;
     int discard;
@@ -82,8 +78,7 @@ static void edit_both(wpair *p, tally *s, uint32_t i, const double q[3], double 
     }
     if (s->refused == DD_OK) {
         double t0 = now_seconds();
-        dd_status st = same_weight ? dd_move(p->t, i, q)
-                     : dd_move_weighted ? dd_move_weighted(p->t, i, q, w) : DD_ERR_UNSUPPORTED;
+        dd_status st = same_weight ? dd_move(p->t, i, q) : dd_move_weighted(p->t, i, q, w);
         s->ours += now_seconds() - t0;
         if (st == DD_ERR_UNSUPPORTED) s->refused = st;
         else if (st != DD_OK) s->bad++;
