@@ -44,7 +44,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define WSOAK_BASE_QUOTA 520.0   /* deletions and moves of one case at scale 1 */
+#define WSOAK_BASE_QUOTA 540.0   /* deletions and moves of one case at scale 1 */
 
 const char *const soak_wop_names[NUM_WOPS] = {"deletions", "in sets", "reinsertions", "insertions",
                                               "moves", "weighted moves"};
@@ -238,6 +238,9 @@ static int wp_check(soak *s, wpair *p, const char *after)
     size_t na = 0, nb = 0, nha = 0, nhb = 0;
     char why[256] = "";
     s->st.wchecks++;
+#ifdef SOAK_TRACE             /* -DSOAK_TRACE: every operation checked */
+    printf("[w%d] %s\n", s->worker, after);
+#endif
     if (dd_canonical(p->t, &a, &na) != DD_OK || dd_cgal_rt_canonical(p->c, &b, &nb))
         snprintf(why, sizeof why, "no canonical form");
     else if (dd_hidden(p->t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(p->c, &hb, &nhb))

@@ -480,11 +480,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         if (s->t == NULL) code = 0;                         /* nothing to work on yet */
         uint64_t before = s->t ? fz_hash(s->t) : 0;
         dd_status st;
-#ifdef FZ_TRACE      /* -DFZ_TRACE: each operation and the state after it */
-        if (s->t) fprintf(stderr, "fuzz ops: op %d code %u: %u vertices, %u inputs, last message '%s'\n", op, code,
-                          dd_num_vertices(s->t), dd_num_input(s->t), dd_errmsg(s->t));
-#endif
-        if (s->weighted && (code == 0 || code == 3 || code == 4 || code == 6)) {
+        if (s->weighted && (code == 0 || code == 3 || code == 4 || code == 6)) {   /* their weighted forms */
             bad = code == 0 ? fz_wcreate(s, &in) : code == 3 ? fz_winsert(s, &in, before)
                 : code == 4 ? fz_wmove(s, &in, before) : fz_wreinsert(s, &in, before);
             continue;
