@@ -1,11 +1,13 @@
 /*
- * soak.c -- `make soak`: a million deletions, each checked against CGAL.
+ * soak.c -- `make soak`: a million deletions, each checked against CGAL,
+ * and (soak_weighted.c, numbered after these cases) weighted deletions
+ * and moves checked against CGAL's regular triangulation.
  *
  *   build/tests/soak [--scale F] [--jobs J] [--case K] [--seed S] [--quiet]
  *
  * Owns: the soak's case table and its driver.  Not part of `make test`
  * (it runs for tens of minutes at scale 1); SOAK_SCALE=F (or --scale)
- * multiplies the work, SOAK_SCALE=0.01 runs in about a minute.
+ * multiplies the work, SOAK_SCALE=0.01 runs in minutes.
  *
  * A case is a dataset (every dd_gen name, real models included), a
  * transform of its coordinates and a mode:
@@ -35,9 +37,6 @@
  * a case, the end of each round, and after every deletion of "down") the
  * whole canonical form is compared with CGAL's and dd_check validates the
  * engine's triangulation.
- *
- * The weighted cases (regular triangulations, both hidden modes, the
- * same transforms) come after these in the numbering: soak_weighted.c.
  *
  * --jobs J forks J workers that take the cases from a queue, the dearest
  * first; the parent waits for them and sums.  The last line is "soak:

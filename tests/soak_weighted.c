@@ -44,11 +44,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* dd_move_weighted comes with issue 44's edits; a library without it
- * leaves this NULL and its share of the operations is counted skipped. */
-dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w) __attribute__((weak));
-
-#define WSOAK_BASE_QUOTA 520.0   /* deletions and moves of one case at scale 1 */
+#define WSOAK_BASE_QUOTA 540.0   /* deletions and moves of one case at scale 1 */
 
 const char *const soak_wop_names[NUM_WOPS] = {"deletions", "in sets", "reinsertions", "insertions",
                                               "moves", "weighted moves"};
@@ -242,6 +238,9 @@ static int wp_check(soak *s, wpair *p, const char *after)
     size_t na = 0, nb = 0, nha = 0, nhb = 0;
     char why[256] = "";
     s->st.wchecks++;
+#ifdef SOAK_TRACE             /* -DSOAK_TRACE: every operation checked */
+    printf("[w%d] %s\n", s->worker, after);
+#endif
     if (dd_canonical(p->t, &a, &na) != DD_OK || dd_cgal_rt_canonical(p->c, &b, &nb))
         snprintf(why, sizeof why, "no canonical form");
     else if (dd_hidden(p->t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(p->c, &hb, &nhb))
@@ -346,12 +345,16 @@ static int wp_delete(soak *s, wpair *p, uint32_t v)
 /* Deletes 2 to 8 vertices as a set with the next strategy. */
 static int wp_delete_set(soak *s, wpair *p, rng *r)
 {
-    uint32_t vs[8], m = 2 + below(r, 7), k = 0;
+    uint32_t vs[8], m = 2 + below(r, 7), k = 0, kv = 0;
+    unsigned char hidden[8];
     for (uint32_t i = 0; i < 4 * m && k < m; i++) {
-        const uint32_t v = wp_vertex(p, r);
+        const uint32_t v = i == 0 && below(r, 3) == 0 ? wp_hidden(p, r) : wp_vertex(p, r);
         int again = v == UINT32_MAX;
         for (uint32_t j = 0; j < k; j++) again |= vs[j] == v;
-        if (!again) vs[k++] = v;
+        if (again) continue;
+        hidden[k] = !dd_is_vertex(p->t, v);
+        kv += !hidden[k];
+        vs[k++] = v;
     }
     size_t vi = 0;
     const char *var = NULL;
@@ -365,19 +368,24 @@ static int wp_delete_set(soak *s, wpair *p, rng *r)
     }
     if (st == DD_ERR_UNSUPPORTED) return 0;
     char what[160];
-    snprintf(what, sizeof what, "deleting the set of %u vertices %u, %u, ... with %s", k, vs[0], vs[1], var);
+    snprintf(what, sizeof what, "deleting the set of %u points %u%s, %u, ... with %s", k, vs[0],
+             hidden[0] ? " (hidden)" : "", vs[1], var);
     if (st != DD_OK) {
         soak_mismatch(s, "%s: engine %s (%s)", what, dd_status_name(st), dd_errmsg(p->t));
         return -1;
     }
-    for (uint32_t i = 0; i < k; i++)
-        if (dd_cgal_rt_remove(p->c, p->e2cg[vs[i]])) {
-            soak_mismatch(s, "%s: CGAL refused vertex %u", what, vs[i]);
-            return -1;
-        }
+    /* CGAL: the hidden points forgotten first, then the vertices removed */
+    for (int pass = 1; pass >= 0; pass--)
+        for (uint32_t i = 0; i < k; i++)
+            if (hidden[i] == pass && (pass ? dd_cgal_rt_forget(p->c, p->e2cg[vs[i]])
+                                           : dd_cgal_rt_remove(p->c, p->e2cg[vs[i]]))) {
+                soak_mismatch(s, "%s: CGAL refused point %u", what, vs[i]);
+                return -1;
+            }
     s->st.wdone[WOP_SET] += k;
     s->st.wvariant[vi] += k;
-    if (dd_num_vertices(p->t) + k > nv) s->st.wreleased += dd_num_vertices(p->t) + k - nv;
+    s->st.whidden_ops += k - kv;
+    if (dd_num_vertices(p->t) + kv > nv) s->st.wreleased += dd_num_vertices(p->t) + kv - nv;
     for (uint32_t i = 0; i < k; i++) p->gone[p->ngone++] = vs[i];
     return wp_check(s, p, what);
 }
@@ -447,31 +455,22 @@ static int wp_reinsert(soak *s, wpair *p, rng *r)
     return wp_check(s, p, what);
 }
 
-/* Moves vertex v to (q, w): dd_move_weighted, or dd_move when w is v's
- * weight and `plain`.  The reference: CGAL's remove(), then insert(); when
- * the insertion finds (q, w) at another vertex, both refuse and CGAL's
- * side gets v back.                                                      */
+/* Moves point v (a vertex, or a kept hidden point) to (q, w):
+ * dd_move_weighted, or dd_move when w is v's weight and `plain`.  The
+ * reference: dd_cgal_rt_move (CGAL's remove() or the hidden point
+ * forgotten, then insert() under the same index).  Onto another point's
+ * exact weighted point that is or becomes a vertex both refuse.        */
 static int wp_move(soak *s, wpair *p, uint32_t v, const double q[3], double w, int plain)
 {
     const soak_wop op = plain ? WOP_MOVE : WOP_MOVE_WEIGHTED;
-    char what[240];
-    snprintf(what, sizeof what, "%s %u from (%.17g, %.17g, %.17g; %.17g) to (%.17g, %.17g, %.17g; %.17g)",
-             plain ? "moving" : "moving with its weight", v, p->xyz[3 * (size_t)v], p->xyz[3 * (size_t)v + 1],
-             p->xyz[3 * (size_t)v + 2], p->w[v], q[0], q[1], q[2], w);
-    dd_status st = DD_ERR_UNSUPPORTED;
-    if (plain) st = dd_move(p->t, v, q);
-    else if (dd_move_weighted) st = dd_move_weighted(p->t, v, q, w);
+    char what[320];
+    snprintf(what, sizeof what, "%s %s %u from (%.17g, %.17g, %.17g; %.17g) to (%.17g, %.17g, %.17g; %.17g)",
+             plain ? "moving" : "moving with its weight", dd_is_vertex(p->t, v) ? "vertex" : "hidden point", v,
+             p->xyz[3 * (size_t)v], p->xyz[3 * (size_t)v + 1], p->xyz[3 * (size_t)v + 2], p->w[v], q[0], q[1], q[2],
+             w);
+    const dd_status st = plain ? dd_move(p->t, v, q) : dd_move_weighted(p->t, v, q, w);
     if (is_skip(s, st, op, SIZE_MAX)) return 0;
-    if (wp_room(p, v)) return -1;
-    double old[3];
-    const double wold = p->w[v];
-    memcpy(old, p->xyz + 3 * (size_t)v, sizeof old);
-    int rc = dd_cgal_rt_remove(p->c, p->e2cg[v]);
-    if (rc == 0) rc = cgal_insert_as(p, v, q, w);
-    if (rc == 2 && cgal_insert_as(p, v, old, wold)) {
-        soak_mismatch(s, "%s: CGAL cannot put the vertex back", what);
-        return -1;
-    }
+    const int rc = dd_cgal_rt_move(p->c, p->e2cg[v], q, w);
     if (st == DD_ERR_DUPLICATE && rc == 2) {
         s->st.wrefused[op]++;
         return wp_check(s, p, what);
@@ -480,7 +479,28 @@ static int wp_move(soak *s, wpair *p, uint32_t v, const double q[3], double w, i
         soak_mismatch(s, "%s: engine %s (%s), CGAL %d", what, dd_status_name(st), dd_errmsg(p->t), rc);
         return -1;
     }
+    memcpy(p->xyz + 3 * (size_t)v, q, 3 * sizeof *q);
+    p->w[v] = w;
     s->st.wdone[op]++;
+    return wp_check(s, p, what);
+}
+
+/* Deletes a kept hidden point: forgotten, no cell changes (CGAL's side:
+ * dd_cgal_rt_forget).                                                   */
+static int wp_forget(soak *s, wpair *p, uint32_t v)
+{
+    char what[96];
+    snprintf(what, sizeof what, "deleting hidden point %u", v);
+    const dd_status st = dd_delete(p->t, v);
+    if (is_skip(s, st, WOP_DELETE, SIZE_MAX)) return 0;
+    const int rc = dd_cgal_rt_forget(p->c, p->e2cg[v]);
+    if (st != DD_OK || rc) {
+        soak_mismatch(s, "%s: engine %s (%s), CGAL %d", what, dd_status_name(st), dd_errmsg(p->t), rc);
+        return -1;
+    }
+    s->st.wdone[WOP_DELETE]++;
+    s->st.whidden_ops++;
+    p->gone[p->ngone++] = v;
     return wp_check(s, p, what);
 }
 
@@ -564,18 +584,23 @@ static int one_op(soak *s, const soak_case *c, wpair *p, rng *r, const double *s
     const uint32_t coin = below(r, 100), v = wp_vertex(p, r);
     double q[3], w;
     if (v == UINT32_MAX) return 0;
+    const uint32_t hp = coin % 10 == 0 && !c->discard ? wp_hidden(p, r) : UINT32_MAX;
     if (c->mode == WMODE_SEQ) {
+        if (coin < 55 && hp != UINT32_MAX) return wp_forget(s, p, hp);
         if (coin < 55) return wp_delete(s, p, v);
         if (coin < 65) return wp_delete_set(s, p, r);
         if (coin < 80) return wp_reinsert(s, p, r);
     } else {
+        const uint32_t u = hp != UINT32_MAX ? hp : v;     /* a hidden point now and then */
         if (coin < 35) {
-            move_point(r, p, v, q);
-            return wp_move(s, p, v, q, p->w[v], 1);
+            move_point(r, p, u, q);
+            if (u != v) s->st.whidden_ops++;
+            return wp_move(s, p, u, q, p->w[u], 1);
         }
         if (coin < 75) {
-            move_weighted_target(r, p, v, q, &w);
-            return wp_move(s, p, v, q, w, 0);
+            move_weighted_target(r, p, u, q, &w);
+            if (u != v) s->st.whidden_ops++;
+            return wp_move(s, p, u, q, w, 0);
         }
         if (coin < 88) return wp_delete(s, p, v);
         if (coin < 94) return wp_reinsert(s, p, r);
@@ -643,15 +668,14 @@ void soak_weighted_report(const soak *proto, const stats *tot)
     printf("soak: weighted, skipped (DD_ERR_UNSUPPORTED):");
     for (int k = 0; k < NUM_WOPS; k++)
         printf(" %llu %s%s", (unsigned long long)tot->wskipped[k], soak_wop_names[k], k + 1 < NUM_WOPS ? "," : "\n");
-    if (!dd_move_weighted) printf("soak: weighted, dd_move_weighted is not in the library: its moves skipped\n");
     printf("soak: weighted, strategies (deleted/skipped):");
     for (size_t v = 0; v < proto->nvariants; v++)
         printf(" %s %llu/%llu%s", proto->variants[v], (unsigned long long)tot->wvariant[v],
                (unsigned long long)tot->wvariant_skipped[v], v + 1 < proto->nvariants ? "," : "\n");
     printf("soak: weighted, %llu deletions and moves, %llu operations in all, %llu refused alike, %llu skipped, "
-           "%llu hidden points came back, %llu whole comparisons with CGAL\n",
+           "%llu hidden points came back, %llu deletions and moves of hidden points, %llu whole comparisons with CGAL\n",
            (unsigned long long)(tot->wdone[WOP_DELETE] + tot->wdone[WOP_SET] + tot->wdone[WOP_MOVE] +
                                 tot->wdone[WOP_MOVE_WEIGHTED]),
            (unsigned long long)done, (unsigned long long)refused, (unsigned long long)skipped,
-           (unsigned long long)tot->wreleased, (unsigned long long)tot->wchecks);
+           (unsigned long long)tot->wreleased, (unsigned long long)tot->whidden_ops, (unsigned long long)tot->wchecks);
 }

@@ -23,7 +23,9 @@
  *     weighted points (issue 44): create makes a regular triangulation
  *     (dd_create_ex, hidden points kept or DD_DISCARD_HIDDEN), insert is
  *     dd_insert_weighted, move is dd_move or dd_move_weighted, each point
- *     with a weight from fz_weight (any finite double among them).  The
+ *     with a weight from fz_weight (any finite double among them); with
+ *     hidden points kept, deletions, sets and moves may name hidden
+ *     points too (fz_target).  The
  *     reference is a dd_create_ex from scratch of the points left: with
  *     hidden points kept, the vertices and the hidden points (the same
  *     cells, the same hidden set but for exact copies of a point still
@@ -105,10 +107,6 @@ static int dd_fuzz_readers(const uint8_t *data, size_t n)
 #define FZ_MAX_OPS 48
 #define FZ_MAX_POINTS 256
 #define FZ_WEIGHTED 0x57   /* first byte of a weighted session ('W') */
-
-/* dd_move_weighted comes with issue 44's edits; a library without it
- * leaves this NULL, and the interpreter's weighted moves use dd_move.  */
-dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w) __attribute__((weak));
 
 typedef struct fz_in {
     const uint8_t *p;
@@ -323,6 +321,20 @@ static uint32_t fz_vertex(const fz_state *s, unsigned k)
     return UINT32_MAX;
 }
 
+/* What a byte names in a weighted session: with hidden points kept and
+ * the top bit set, the k-th kept hidden point (k the low bits), if any;
+ * else the vertex fz_vertex names.                                      */
+static uint32_t fz_target(const fz_state *s, unsigned b)
+{
+    if (s->weighted && !s->discard && (b & 0x80)) {
+        uint32_t nh = 0, k = b & 0x7f;
+        for (uint32_t i = 0; i < s->np; i++) nh += (uint32_t)dd_is_hidden(s->t, i);
+        for (uint32_t i = 0; i < s->np && nh > 0; i++)
+            if (dd_is_hidden(s->t, i) && k-- % nh == 0) return i;
+    }
+    return fz_vertex(s, b);
+}
+
 static const char *fz_variant(unsigned b)
 {
     size_t nv = 0;
@@ -398,32 +410,38 @@ static int fz_winsert(fz_state *s, fz_in *in, uint64_t before)
     return 1;
 }
 
-/* move: a byte picks dd_move (even) or dd_move_weighted (odd, when the
- * library has it; else dd_move), then the point and the weight.  Onto
- * another vertex's exact weighted point: DD_ERR_DUPLICATE.              */
+/* move of a vertex or a kept hidden point (fz_target): a byte picks
+ * dd_move (even) or dd_move_weighted (odd), then the point and the
+ * weight.  Onto another point's exact weighted point that is, or becomes
+ * with v gone, a vertex: DD_ERR_DUPLICATE, so only that may refuse.    */
 static int fz_wmove(fz_state *s, fz_in *in, uint64_t before)
 {
-    const uint32_t v = fz_vertex(s, fz_byte(in));
-    const int weighted = (fz_byte(in) & 1) && dd_move_weighted;
+    const uint32_t v = fz_target(s, fz_byte(in));
+    const int weighted = fz_byte(in) & 1;
     double q[3];
     char what[128];
     fz_point(in, s->scale, q);
     double w = fz_weight(in, s->scale);
     if (v == UINT32_MAX) return 0;
     if (!weighted) w = s->w[v];
-    const uint32_t twin = fz_weighted_twin(s, q, w);
-    const int dup = twin != UINT32_MAX && twin != v;
+    int vtwin = 0, htwin = 0;                       /* another vertex's or point's exact copy */
+    for (uint32_t i = 0; i < s->np; i++)
+        if (i != v && fz_alive(s, i) && fz_same(s->xyz + 3 * i, q) && s->w[i] == w) {
+            if (dd_is_vertex(s->t, i)) vtwin = 1;
+            else htwin = 1;
+        }
+    const int dup = vtwin || htwin;
     snprintf(what, sizeof what, "%s of %u to (%g, %g, %g; %g)", weighted ? "move_weighted" : "move", v, q[0], q[1],
              q[2], w);
     const dd_status st = weighted ? dd_move_weighted(s->t, v, q, w) : dd_move(s->t, v, q);
-    if (st == DD_OK && !dup) {
+    if (st == DD_OK && !vtwin) {
         memcpy(s->xyz + 3 * v, q, sizeof q);
         s->w[v] = w;
         return fz_verify(s, what);
     }
     if ((st == DD_ERR_DUPLICATE && dup) || st == DD_ERR_DIMENSION || st == DD_ERR_UNSUPPORTED)
         return fz_unchanged(s, before, what, st);
-    fprintf(stderr, "fuzz ops: %s: %s (another vertex's weighted point: %d): %s\n", what, dd_status_name(st), dup,
+    fprintf(stderr, "fuzz ops: %s: %s (another point's weighted point: %d): %s\n", what, dd_status_name(st), dup,
             dd_errmsg(s->t));
     return 1;
 }
@@ -462,11 +480,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         if (s->t == NULL) code = 0;                         /* nothing to work on yet */
         uint64_t before = s->t ? fz_hash(s->t) : 0;
         dd_status st;
-#ifdef FZ_TRACE      /* -DFZ_TRACE: each operation and the state after it */
-        if (s->t) fprintf(stderr, "fuzz ops: op %d code %u: %u vertices, %u inputs, last message '%s'\n", op, code,
-                          dd_num_vertices(s->t), dd_num_input(s->t), dd_errmsg(s->t));
-#endif
-        if (s->weighted && (code == 0 || code == 3 || code == 4 || code == 6)) {
+        if (s->weighted && (code == 0 || code == 3 || code == 4 || code == 6)) {   /* their weighted forms */
             bad = code == 0 ? fz_wcreate(s, &in) : code == 3 ? fz_winsert(s, &in, before)
                 : code == 4 ? fz_wmove(s, &in, before) : fz_wreinsert(s, &in, before);
             continue;
@@ -493,7 +507,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
             break;
         }
         case 1: case 2: {                                   /* delete */
-            uint32_t v = fz_vertex(s, fz_byte(&in));
+            uint32_t v = fz_target(s, fz_byte(&in));
             const char *var = fz_variant(fz_byte(&in));
             snprintf(what, sizeof what, "delete of %u with %s", v, var);
             st = dd_delete_with(s->t, v, var);
@@ -552,7 +566,7 @@ static int dd_fuzz_ops(const uint8_t *data, size_t n)
         case 5: {                                           /* delete_set */
             uint32_t m = 1 + fz_byte(&in) % 6, vs[6], k = 0;
             for (uint32_t i = 0; i < m; i++) {
-                uint32_t v = fz_vertex(s, fz_byte(&in)), again = 0;
+                uint32_t v = fz_target(s, fz_byte(&in)), again = 0;
                 for (uint32_t j = 0; j < k; j++) again |= vs[j] == v;
                 if (!again && v != UINT32_MAX) vs[k++] = v;
             }
