@@ -248,7 +248,7 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n, uint32_t t
  * both courses); listed hidden points are only forgotten, so k counts
  * the listed vertices and the rebuild the points left, hidden or not.  */
 #define SET_DELETE_UNIT 1.0
-#define SET_WDELETE_UNIT 1.0
+#define SET_WDELETE_UNIT 5.0
 #define SET_BUILD_UNIT 0.55
 
 static int rebuild_is_cheaper(const dd_tri *t, size_t k, size_t left)

@@ -405,5 +405,25 @@ else
         "$DTDEL" $2 "$tmp/dup.xyzw" >"$tmp/b" 2>/dev/null
         [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b" && ! grep -qwE "7|8" "$tmp/a" && echo "ok cli/$1-exact-duplicates" ||
             echo "FAIL cli/$1-exact-duplicates: $(tr '\n' ' ' <"$tmp/a" | head -c 200)"
+    done    # weighted moves (issue 44): keep mode is the regular triangulation of
+    # the moved points, so CGAL's of the file with the point replaced; a
+    # move without --weight keeps the weight; a bad weight or --weight on
+    # unweighted points is refused
+    for spec in "5 0.5,0.5,0.5 0.001" "9 0.31,0.62,0.4 0.3" "12 0.2,0.2,0.2 -1"; do
+        set -- $spec
+        "$DTDEL" move "$tmp/wuniform.xyzw" --vertex $1 --to $2 --weight $3 >"$tmp/a" 2>"$tmp/err"; ra=$?
+        awk -v n=$(($1 + 1)) -v x="$(echo $2 | tr , ' ') $3" 'NR == n { $0 = x } { print }' "$tmp/wuniform.xyzw" >"$tmp/wm.xyzw"
+        "$DTDEL" cgal-tets "$tmp/wm.xyzw" >"$tmp/b" 2>/dev/null
+        [ $ra -eq 0 ] && cmp -s "$tmp/a" "$tmp/b" && echo "ok cli/move-weighted-$1" ||
+            echo "FAIL cli/move-weighted-$1: exit $ra: $(head -c 200 "$tmp/err")"
     done
+    w7=$(awk 'NR == 8 { print $4 }' "$tmp/wuniform.xyzw")
+    "$DTDEL" move "$tmp/wuniform.xyzw" --vertex 7 --to 0.4,0.4,0.6 >"$tmp/a" 2>"$tmp/err"; ra=$?
+    awk -v x="0.4 0.4 0.6 $w7" 'NR == 8 { $0 = x } { print }' "$tmp/wuniform.xyzw" >"$tmp/wm.xyzw"
+    "$DTDEL" cgal-tets "$tmp/wm.xyzw" >"$tmp/b" 2>/dev/null
+    [ $ra -eq 0 ] && cmp -s "$tmp/a" "$tmp/b" && echo "ok cli/move-keeps-weight" ||
+        echo "FAIL cli/move-keeps-weight: exit $ra: $(head -c 200 "$tmp/err")"
+    expect move-nan-weight 1 "weight is NaN" "$DTDEL" move "$tmp/wuniform.xyzw" --vertex 5 --to 0.5,0.5,0.5 --weight nan
+    expect move-weight-unweighted 1 "needs weighted points" "$DTDEL" move "$tmp/g5.xyz" --vertex 7 --to 2.5,2,1 --weight 1
+    expect move-weight-usage 2 "expects a number" "$DTDEL" move "$tmp/wuniform.xyzw" --vertex 5 --to 0.5,0.5,0.5 --weight x
 fi

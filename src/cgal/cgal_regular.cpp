@@ -518,3 +518,145 @@ extern "C" int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, 
         return 1;
     }
 }
+
+/* ---- timed references for the edit bench (issue 44) ------------------------- */
+
+#include <chrono>
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/* Every vertex's info set again from keys (after removals brought hidden
+ * points back as vertices without one).                                */
+template <class Policy>
+int reset_infos(Rt_of<Policy> *r, const std::map<Key, std::vector<uint32_t> > &keys)
+{
+    typedef typename Rt_of<Policy>::T T;
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it) {
+        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key_of(it->point()));
+        if (k == keys.end() || k->second.empty()) return 1;
+        if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
+            it->info() = k->second.front();
+    }
+    r->hint = r->rt.finite_vertices_begin();
+    return 0;
+}
+
+template <class Policy>
+double remove_set_timed(dd_cgal_rt *c, Rt_of<Policy> *r, const uint32_t *idx, size_t n)
+{
+    typedef typename Rt_of<Policy>::T T;
+    std::vector<typename T::Vertex_handle> h(c->ninput);
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it)
+        h[it->info()] = it;
+    std::vector<typename T::Vertex_handle> gone;
+    for (size_t k = 0; k < n; k++) {
+        if (idx[k] >= c->ninput || h[idx[k]] == typename T::Vertex_handle()) return -1;
+        gone.push_back(h[idx[k]]);
+        std::vector<uint32_t> &l = c->keys[key_of(h[idx[k]]->point())];
+        l.erase(std::remove(l.begin(), l.end(), idx[k]), l.end());
+    }
+    const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+    for (size_t k = 0; k < gone.size(); k++) r->rt.remove(gone[k]);
+    const double s = seconds_since(t0);
+    return reset_infos(r, c->keys) ? -1 : s;
+}
+
+/* The handle of each vertex by input index, infos set again first. */
+template <class Policy>
+int index_handles(Rt_of<Policy> *r, const std::map<Key, std::vector<uint32_t> > &keys,
+                  std::vector<typename Rt_of<Policy>::T::Vertex_handle> &h)
+{
+    typedef typename Rt_of<Policy>::T T;
+    if (reset_infos(r, keys)) return 1;
+    std::fill(h.begin(), h.end(), typename T::Vertex_handle());
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it)
+        h[it->info()] = it;
+    return 0;
+}
+
+/* Each listed point removed (a kept hidden point forgotten), then its
+ * new weighted point inserted (the move reference, DESIGN 12), only
+ * CGAL's remove() and insert() timed.  When a move changes which points
+ * are vertices (points brought back, hidden or swallowed), the handles
+ * are found again, untimed.                                            */
+template <class Policy>
+double moves_timed(dd_cgal_rt *c, Rt_of<Policy> *r, const uint32_t *idx, const double *p, const double *w, size_t n)
+{
+    typedef typename Rt_of<Policy>::T T;
+    std::vector<typename T::Vertex_handle> h(c->ninput);
+    if (index_handles(r, c->keys, h)) return -1;
+    double s = 0;
+    for (size_t k = 0; k < n; k++) {
+        const typename T::Vertex_handle v = h[idx[k]];
+        const Wpoint q = weighted_point(p + 3 * k, w[k]);
+        const std::size_t nv = r->rt.number_of_vertices();
+        typename T::Vertex_handle nvh;
+        if (v == typename T::Vertex_handle()) {          /* hidden: forgotten, then inserted */
+            if (forget_index(r, c->keys, idx[k])) return -1;
+            const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+            nvh = r->rt.insert(q, r->hint->cell());
+            s += seconds_since(t0);
+        } else {
+            std::vector<uint32_t> &l = c->keys[key_of(v->point())];
+            l.erase(std::remove(l.begin(), l.end(), idx[k]), l.end());
+            const typename T::Cell_handle near = v->cell();
+            const typename T::Vertex_handle any = near->vertex(near->index(v) == 0 ? 1 : 0);
+            const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+            r->rt.remove(v);
+            nvh = r->rt.insert(q, any->cell());
+            s += seconds_since(t0);
+        }
+        std::vector<uint32_t> &m = c->keys[key_of(q)];
+        m.insert(std::upper_bound(m.begin(), m.end(), idx[k]), idx[k]);
+        if (nvh != typename T::Vertex_handle()) {
+            nvh->info() = idx[k];
+            h[idx[k]] = nvh;
+            r->hint = nvh;
+        } else {
+            h[idx[k]] = typename T::Vertex_handle();
+        }
+        const std::size_t want = nv + (v == typename T::Vertex_handle() ? 1 : 0);
+        if (nvh == typename T::Vertex_handle() || r->rt.number_of_vertices() != want)
+            if (index_handles(r, c->keys, h)) return -1;
+    }
+    r->hint = r->rt.finite_vertices_begin();
+    return s;
+}
+
+} // namespace
+
+extern "C" double dd_cgal_rt_time_remove_set(dd_cgal_rt *c, const uint32_t *idx, size_t n)
+{
+    if (c == NULL) return -1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return remove_set_timed(c, k, idx, n);
+        if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
+            return remove_set_timed(c, d, idx, n);
+        return -1;
+    } catch (...) {
+        return -1;
+    }
+}
+
+extern "C" double dd_cgal_rt_time_moves(dd_cgal_rt *c, const uint32_t *idx, const double *p, const double *w, size_t n)
+{
+    if (c == NULL) return -1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return moves_timed(c, k, idx, p, w, n);
+        if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
+            return moves_timed(c, d, idx, p, w, n);
+        return -1;
+    } catch (...) {
+        return -1;
+    }
+}

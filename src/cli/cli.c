@@ -415,10 +415,12 @@ static const command commands[] = {
      "d', the input indices of a cell whose closure holds it (-1: the infinite\n"
      "vertex, for a point outside the hull: a hull facet it sees), then\n"
      "'nearest: v', a vertex nearest to it.  Exact.", cmd_locate},
-    {"move", "move FILE --vertex I --to X,Y,Z",
+    {"move", "move FILE --vertex I --to X,Y,Z [--weight W] [--discard-hidden]",
      "Moves vertex I to (X, Y, Z) and writes the canonical form of the new\n"
      "triangulation (as delete does); exit 1 if the point is another\n"
-     "vertex's or the move would leave only coplanar points.", cmd_move},
+     "vertex's or the move would leave only coplanar points.  Weighted\n"
+     "points (.xyzw, ...): I keeps its weight, or takes W (dd_move_weighted:\n"
+     "it may end hidden, and may hide others; a hidden point I moves too).", cmd_move},
     {"edit-bench", "edit-bench [N] [--passes P] [--set M] [--seed S]",
      "Against CGAL, each result compared: smoothing, every vertex of N\n"
      "uniform points (default 100000) moved by a random step of 5% of the\n"
@@ -449,6 +451,13 @@ static const command commands[] = {
      "cells and hidden sets are compared (after each construction and at five\n"
      "checkpoints of the insertions); mismatches are printed, exit 1 on any.\n"
      "While the engine refuses weights, its figures read n/a.", cmd_regular_bench},
+    {"wedit-bench", "wedit-bench [N] [--set M] [--passes P] [--dataset NAME] [--seed S]",
+     "Weighted edits against CGAL's Regular_triangulation_3, hidden points\n"
+     "kept, each result compared: dd_delete_set of a random 10% and 90% of M\n"
+     "weighted points (default 200000) against CGAL's remove() one at a time;\n"
+     "every vertex of N points (default 100000) moved by 5% of the mean\n"
+     "spacing, P passes (default 2), then re-weighted by +-10%, against CGAL's\n"
+     "remove and insert.  NAME: a weighted dataset (default wuniform).", cmd_wedit_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",

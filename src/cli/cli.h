@@ -126,6 +126,7 @@ int cmd_refine_bench(int argc, char **argv);
 int cmd_hidden(int argc, char **argv);
 int cmd_cgal_hidden(int argc, char **argv);
 int cmd_regular_bench(int argc, char **argv);
+int cmd_wedit_bench(int argc, char **argv);
 
 
 #endif

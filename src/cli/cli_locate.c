@@ -59,10 +59,13 @@ int cmd_locate(int argc, char **argv)
 int cmd_move(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("move");
-    const char *file = NULL, *vs = NULL, *to = NULL;
+    const char *file = NULL, *vs = NULL, *to = NULL, *ws = NULL;
+    unsigned flags = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--vertex") && i + 1 < argc) vs = argv[++i];
         else if (!strcmp(argv[i], "--to") && i + 1 < argc) to = argv[++i];
+        else if (!strcmp(argv[i], "--weight") && i + 1 < argc) ws = argv[++i];
+        else if (!strcmp(argv[i], "--discard-hidden")) flags |= DD_DISCARD_HIDDEN;
         else if (argv[i][0] != '-' && !file) file = argv[i];
         else return usage_error("move", "unexpected argument '%s'", argv[i]);
     }
@@ -76,13 +79,20 @@ int cmd_move(int argc, char **argv)
     for (int c = 0; c < 3; c++, tok = strtok_r(NULL, ",", &save))
         if (!tok || parse_coord(tok, &p[c])) return usage_error("move", "--to expects X,Y,Z, got '%s'", to);
     if (tok) return usage_error("move", "--to expects X,Y,Z, got '%s'", to);
+    double w = 0;
+    if (ws && parse_coord(ws, &w)) return usage_error("move", "--weight expects a number, got '%s'", ws);
     dd_tri *t;
-    int rc = build_file("move", file, &t);
+    int rc = build_weighted_file("move", file, flags, &t);
     if (rc) return rc;
+    if (ws && !dd_is_weighted(t)) {
+        fprintf(stderr, "dtdel move: --weight needs weighted points (%s has none)\n", file);
+        dd_free(t);
+        return EXIT_INPUT;
+    }
     int32_t *tets = NULL;
     size_t n = 0;
     dd_status s;
-    if ((s = dd_move(t, (uint32_t)v, p)) != DD_OK) {
+    if ((s = ws ? dd_move_weighted(t, (uint32_t)v, p, w) : dd_move(t, (uint32_t)v, p)) != DD_OK) {
         fprintf(stderr, "dtdel move: cannot move vertex %llu: %s\n", (unsigned long long)v, dd_errmsg(t));
         rc = EXIT_INPUT;
     } else if (dd_canonical(t, &tets, &n) != DD_OK) {
