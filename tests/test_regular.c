@@ -274,19 +274,9 @@ static void refusals_case(tl_state *st)
         return;
     }
     shot before = take_shot(t);
-    uint32_t v = 0;
-    while (!dd_is_vertex(t, v)) v++;
-    uint32_t hp = 0;
-    while (hp < s.n && !dd_is_hidden(t, hp)) hp++;
     const double p[3] = {0.5, 0.5, 0.5}, nanp[3] = {0.5, NAN, 0.5}, infp[3] = {INFINITY, 0.5, 0.5};
-    uint32_t set[2] = {v, v + 1 < s.n ? v + 1 : 0}, idx = 12345;
+    uint32_t idx = 12345;
     struct { const char *name; dd_status got, want; } cases[] = {
-        {"delete-grr-edge", dd_delete_with(t, v, "grr-edge"), DD_ERR_UNSUPPORTED},
-        {"delete-with", dd_delete_with(t, v, "dtq-only"), DD_ERR_UNSUPPORTED},
-        {"delete-set", dd_delete_set(t, set, 2), DD_ERR_UNSUPPORTED},
-        {"delete-set-with", dd_delete_set_with(t, set, 1, NULL), DD_ERR_UNSUPPORTED},
-        {"reinsert-hidden", dd_reinsert(t, hp < s.n ? hp : v), DD_ERR_UNSUPPORTED},
-        {"move", dd_move(t, v, p), DD_ERR_UNSUPPORTED},
         {"insert-nan-weight", dd_insert_weighted(t, p, NAN, &idx), DD_ERR_NAN},
         {"insert-inf-weight", dd_insert_weighted(t, p, INFINITY, &idx), DD_ERR_INFINITE},
         {"insert-minus-inf-weight", dd_insert_weighted(t, p, -INFINITY, &idx), DD_ERR_INFINITE},

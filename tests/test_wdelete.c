@@ -220,8 +220,6 @@ static void zero_weights_case(tl_state *st, const char *name, const wset *s0, ui
 
 static void refusals_case(tl_state *st)
 {
-    static const char *const refused[] = {"grr-edge", "grr-neighbor", "grr-hashing", "grr-brio",
-                                          "guide-only", "dtq-only"};
     wset s = gen_uniform(small ? 200 : 500, 3, 9);
     char msg[256], why[256] = "";
     dd_tri *t = NULL;
@@ -233,20 +231,7 @@ static void refusals_case(tl_state *st)
     shot before = take_shot(t);
     uint32_t v = 0;
     while (!dd_is_vertex(t, v)) v++;
-    uint32_t hp = 0;
-    while (hp < s.n && !dd_is_hidden(t, hp)) hp++;
-    for (size_t k = 0; k < sizeof refused / sizeof *refused; k++) {
-        char tn[160];
-        snprintf(tn, sizeof tn, "refuse/weighted/%s", refused[k]);
-        const dd_status ds = dd_delete_with(t, v, refused[k]);
-        tl_check(st, ds == DD_ERR_UNSUPPORTED && unchanged(t, &before) && strstr(dd_errmsg(t), refused[k]), tn,
-                 "status %s, errmsg '%s'", dd_status_name(ds), dd_errmsg(t));
-    }
-    uint32_t set[2] = {v, v + 1 < s.n ? v + 1 : 0};
     struct { const char *name; dd_status got, want; } cases[] = {
-        {"delete-set", dd_delete_set(t, set, 2), DD_ERR_UNSUPPORTED},
-        {"reinsert", dd_reinsert(t, v), DD_ERR_UNSUPPORTED},
-        {"delete-hidden-point", hp < s.n ? dd_delete(t, hp) : DD_ERR_UNKNOWN_VERTEX, DD_ERR_UNKNOWN_VERTEX},
         {"delete-unknown", dd_delete(t, s.n + 5), DD_ERR_UNKNOWN_VERTEX},
         {"delete-unknown-variant", dd_delete_with(t, v, "no-such"), DD_ERR_UNKNOWN_VARIANT},
     };
@@ -257,7 +242,6 @@ static void refusals_case(tl_state *st)
                  "status %s (want %s), errmsg '%s'", dd_status_name(cases[k].got), dd_status_name(cases[k].want),
                  dd_errmsg(t));
     }
-    tl_check(st, hp < s.n, "refuse/weighted/has-hidden", "no hidden point to try");
     tl_check(st, checked(t, why, sizeof why), "refuse/weighted/check-after", "%s", why);
     shot_free(&before);
     dd_free(t);

@@ -15,8 +15,7 @@
  *     for this order; the result is the same, the perturbed DT is unique.
  * On a weighted triangulation: gift wrapping in the lifted frame, the
  * star's hidden points among the sites (docs/gift-wrap.md §13), and where
- * it declines sew-full's fill (the full regular triangulation of the
- * neighbours and the star's hidden points).
+ * it declines the same conflict DTs with the power test (qdt.h).
  * The crossovers are measured by `make bench` (results/summary.md: the
  * gift-wrap, grr-neighbor and auto rows by degree), or on the curves
  * alone by `build/dtdel bench --dataset moment` (or helix); the cells
@@ -37,24 +36,12 @@
 /* Below the crossover every neighbour set fits the compact structure. */
 _Static_assert(AUTO_GRR_FROM_DEGREE <= DD_QS_MAXV + 1, "auto: degree crossover above the compact DT's size");
 
-static uint32_t mindeg_sample(dd_grr *g, uint32_t *guide)
-{
-    uint32_t u = dd_grr_sample_mindeg(g);
-    *guide = dd_grr_lowest_neighbour(g, u);
-    return u;
-}
-
-static const dd_grr_policy mindeg_policy = {mindeg_sample, 0, 0};
-
 /* Steps 2 and 3: the fill by a conflict DT, for a cavity the wrap
  * declined.                                                          */
 static dd_status fill_conflict_dt(dd_del *d)
 {
-    if (d->degree >= AUTO_GRR_FROM_DEGREE) return dd_grr_construct(d, &mindeg_policy);
-    dd_qs_order_nearest(d);
-    dd_status s = dd_del_pick_base(d, d->order.a, d->order.n);
-    if (s != DD_OK) return s;
-    return dd_qs_fill(d);
+    if (d->degree >= AUTO_GRR_FROM_DEGREE || d->order.n > DD_QS_MAXV) return dd_grr_fill_mindeg(d);
+    return dd_qs_fill_nearest(d);
 }
 
 dd_status dd_auto_wrap_first(dd_del *d, uint32_t wide_below)
@@ -70,22 +57,9 @@ static dd_status auto_fill(dd_del *d)
     return dd_auto_wrap_first(d, AUTO_WIDE_BELOW_DEGREE);
 }
 
-dd_status dd_auto_wrap_first_weighted(dd_del *d, uint32_t wide_below)
-{
-    int declined;
-    dd_status s = dd_wrap_fill(d, wide_below, &declined);
-    if (s != DD_OK || !declined) return s;
-    return dd_full_fill_power(d);
-}
-
-static dd_status auto_fill_weighted(dd_del *d)
-{
-    return dd_auto_wrap_first_weighted(d, AUTO_WIDE_BELOW_DEGREE);
-}
-
 const dd_variant dd_variant_auto = {
     "auto",
-    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first; on weighted points gift wrapping in the lifted frame, where it declines sew-full's regular fill",
+    "default: gift wrapping (narrow guesses where the link has a hub, the wide one below degree 600); where it declines, below 40 the compact conflict DT, nearest first, else GRR, least link degree first; on weighted points the same courses in the lifted frame, with the star's hidden points as sites",
     auto_fill,
-    auto_fill_weighted,
+    auto_fill,
 };

@@ -10,11 +10,9 @@
 /* Gift wrapping (wrap.h; wide_below as in dd_wrap_fill), or where it
  * declines, auto's conflict DT: below degree 40 the compact one,
  * nearest neighbours first; from 40 on, GRR with the link vertex of
- * least degree deleted first (grr-neighbor's guides).                 */
+ * least degree deleted first (grr-neighbor's guides).  On a weighted
+ * t (fill_weighted) the same courses, the star's hidden points among
+ * the sites.                                                          */
 dd_status dd_auto_wrap_first(dd_del *d, uint32_t wide_below);
-/* The same on a weighted t (fill_weighted): gift wrapping in the lifted
- * frame, or where it declines sew-full's regular fill
- * (dd_full_fill_power).                                                */
-dd_status dd_auto_wrap_first_weighted(dd_del *d, uint32_t wide_below);
 
 #endif

@@ -9,22 +9,16 @@
  */
 #include "auto.h"
 
-/* auto's own choice, with the wide guess at every degree. */
+/* auto's own choice, with the wide guess at every degree; on a weighted
+ * t the same courses in the lifted frame.                            */
 static dd_status gift_wrap_fill(dd_del *d)
 {
     return dd_auto_wrap_first(d, UINT32_MAX);
 }
 
-/* On a weighted t: auto's weighted choice, with the wide guess at every
- * degree.                                                               */
-static dd_status gift_wrap_fill_weighted(dd_del *d)
-{
-    return dd_auto_wrap_first_weighted(d, UINT32_MAX);
-}
-
 const dd_variant dd_variant_gift_wrap = {
     "gift-wrap",
-    "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it; weighted: in the lifted frame, the star's hidden points as sites, else sew-full's fill)",
+    "the fill found cell by cell from the link by gift wrapping (nearly degenerate from degree 40: as auto without it; weighted: in the lifted frame, the star's hidden points as sites)",
     gift_wrap_fill,
-    gift_wrap_fill_weighted,
+    gift_wrap_fill,
 };

@@ -166,7 +166,7 @@ dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint3
         if (s != DD_OK) return s;
         take_lists(h, cells, n);
     }
-    *pts = h->taken.a + before;
+    *pts = h->taken.n > before ? h->taken.a + before : NULL;   /* no pointer arithmetic on NULL */
     *npts = h->taken.n - before;
     return DD_OK;
 }
