@@ -19,7 +19,7 @@
 #   (2d. weighted points, hidden points kept (issue 44): $DTDEL wbench ->
 #        OUT/weighted/<dataset>.csv and OUT/wdelete.txt, the per-degree
 #        deletion tables against CGAL's regular remove(); $DTDEL
-#        wedit-bench -> OUT/wedits.txt, the re-weighting, move and set
+#        wedits-bench -> OUT/wedits.txt, the re-weighting, move and set
 #        deletion passes; summarize takes the CSVs after --weighted)
 # DTDEL, DTDEL_COUNT and SUMMARIZE name the binaries (default build/dtdel,
 # build/count/dtdel and build/summarize).  BENCH_SIZES=tiny runs the
@@ -122,7 +122,7 @@ cat $out/wdelete.txt
 nwe=100000 mwe=200000
 [ "$mode" = quick ] && nwe=20000 mwe=40000
 [ "${BENCH_SIZES:-}" = tiny ] && nwe=1000 mwe=2000
-"$DTDEL" wedit-bench "$nwe" --set "$mwe" >$out/wedits.txt || rc=$?
+"$DTDEL" wedits-bench "$nwe" --set "$mwe" >$out/wedits.txt || rc=$?
 cat $out/wedits.txt
 csvs=$(ls $out/*.csv)
 wcsvs=$(ls $out/weighted/*.csv 2>/dev/null || true)

@@ -1345,7 +1345,7 @@ static void readme_queries(const ctx *c, FILE *out)
     fputs(churn, out);
 }
 
-/* ---- weighted points (dtdel wbench, wedit-bench; issue 44) ------------------ */
+/* ---- weighted points (dtdel wbench, wedits-bench; issue 44) ------------------ */
 
 /* The weighted deletion rows and their targets (issue 44): the ratio of
  * CGAL's regular remove() to the default strategy's, over the rows.     */
@@ -1374,7 +1374,7 @@ static long long after_semicolon(const char *line, const char *words)
 }
 
 /* One row of the edits' table from a line of wedits.txt (dtdel
- * wedit-bench), if it is one: our µs and CGAL's, their ratio (n/a while
+ * wedits-bench), if it is one: our µs and CGAL's, their ratio (n/a while
  * the engine refuses the call), the target.                            */
 static void weighted_edit_row(const char *line, FILE *out)
 {

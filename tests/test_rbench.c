@@ -72,8 +72,8 @@ static int same_as_scratch(const dd_cgal_rb *c, const double *p, const double *w
     }
     for (size_t k = 0; ok && k < nhb; k++) hb[k] = live[hb[k]];
     if (ok) {
-        qsort(tb, nb, 4 * sizeof *tb, cmp_cell);
-        qsort(hb, nhb, sizeof *hb, cmp_u32);
+        if (nb) qsort(tb, nb, 4 * sizeof *tb, cmp_cell);
+        if (nhb) qsort(hb, nhb, sizeof *hb, cmp_u32);
         if (na != nb || memcmp(ta, tb, 4 * na * sizeof *ta))
             ok = 0, snprintf(why, nwhy, "cells differ (%zu against %zu)", na, nb);
         else if (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))

@@ -461,7 +461,7 @@ static const command commands[] = {
      "DIR (default results/weighted), as dtdel bench writes them.  A\n"
      "strategy refusing weighted points prints n/a.  --mode tiny: a few\n"
      "deletions on small sets, for tests.  Exit 1 on any mismatch.", cmd_wbench},
-    {"wedit-bench", "wedit-bench [N] [--passes P] [--set M] [--seed S] [--discard-hidden]",
+    {"wedits-bench", "wedits-bench [N] [--passes P] [--set M] [--seed S] [--discard-hidden]",
      "Weighted edits against CGAL's Regular_triangulation_3, hidden points\n"
      "kept (--discard-hidden: forgotten): every vertex of N wuniform weighted\n"
      "points (default 100000) re-weighted by a random factor in [0.9, 1.1)\n"
@@ -472,7 +472,7 @@ static const command commands[] = {
      "of the vertices of M wuniform weighted points (default 200000) against\n"
      "CGAL's remove() one by one.  Results compared whole (cells and hidden\n"
      "set) at five checkpoints a pass; exit 1 on a mismatch.  Calls the\n"
-     "engine refuses read n/a.", cmd_wedit_bench},
+     "engine refuses read n/a.", cmd_wedits_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"
      "two CGAL rows.", cmd_variants},
     {"bench", "bench [--mode quick|full] [--scale F] [--reps R] [--bucket-min M] [--out DIR] [--phases DIR] [--dataset NAME] [--seed S]",

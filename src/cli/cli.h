@@ -127,7 +127,7 @@ int cmd_hidden(int argc, char **argv);
 int cmd_cgal_hidden(int argc, char **argv);
 int cmd_regular_bench(int argc, char **argv);
 int cmd_wbench(int argc, char **argv);
-int cmd_wedit_bench(int argc, char **argv);
+int cmd_wedits_bench(int argc, char **argv);
 
 
 #endif

@@ -1,5 +1,5 @@
 /*
- * cli_wbench_edits.c -- `dtdel wedit-bench`: the weighted edits mesh
+ * cli_wbench_edits.c -- `dtdel wedits-bench`: the weighted edits mesh
  * generators run most, against CGAL's Regular_triangulation_3 in the same
  * run (issue 44, DESIGN 10 and 12), in one hidden mode (the bench's:
  * kept; --discard-hidden for the other).  What make bench writes to
@@ -48,9 +48,9 @@ static int parse_opts(int argc, char **argv, we_opts *o)
         if (!strcmp(argv[i], "--discard-hidden")) o->discard = 1;
         else args[k++] = argv[i];
     const num_opt opts[] = {{NULL, &o->n}, {"--passes", &o->passes}, {"--set", &o->m}, {"--seed", &o->seed}};
-    int rc = parse_num_opts("wedit-bench", k, args, opts, (int)(sizeof opts / sizeof *opts));
+    int rc = parse_num_opts("wedits-bench", k, args, opts, (int)(sizeof opts / sizeof *opts));
     if (rc) return rc;
-    if (o->n < 64 || o->m < 64) return usage_error("wedit-bench", "N and --set must be at least %s", "64");
+    if (o->n < 64 || o->m < 64) return usage_error("wedits-bench", "N and --set must be at least %s", "64");
     return 0;
 }
 
@@ -107,7 +107,7 @@ static void print_tally(const tally *s, const char *theirs_name, int checks)
 static int reweighting(const we_opts *o)
 {
     wpair p;
-    if (wpair_build("wedit-bench", "wuniform", (uint32_t)o->n, o->seed, o->discard, &p)) return 1;
+    if (wpair_build("wedits-bench", "wuniform", (uint32_t)o->n, o->seed, o->discard, &p)) return 1;
     tally s = {0};
     uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
     for (uint32_t k = 0; k < CHECKPOINTS; k++) {
@@ -129,7 +129,7 @@ static int reweighting(const we_opts *o)
 static int moves(const we_opts *o)
 {
     wpair p;
-    if (wpair_build("wedit-bench", "wuniform", (uint32_t)o->n, o->seed + 1, o->discard, &p)) return 1;
+    if (wpair_build("wedits-bench", "wuniform", (uint32_t)o->n, o->seed + 1, o->discard, &p)) return 1;
     double *cur = dd_malloc(3 * (size_t)p.np * sizeof *cur);
     if (!cur) { wpair_free(&p); return 1; }
     memcpy(cur, p.xyz, 3 * (size_t)p.np * sizeof *cur);
@@ -165,7 +165,7 @@ static int moves(const we_opts *o)
 static int set_deletion(const we_opts *o, double fraction)
 {
     wpair p;
-    if (wpair_build("wedit-bench", "wuniform", (uint32_t)o->m, o->seed + 3, o->discard, &p)) return 1;
+    if (wpair_build("wedits-bench", "wuniform", (uint32_t)o->m, o->seed + 3, o->discard, &p)) return 1;
     uint32_t *vs = dd_malloc((size_t)p.np * sizeof *vs), k = 0;
     if (!vs) { wpair_free(&p); return 1; }
     uint64_t x = o->seed * 0x2545F4914F6CDD1Dull | 1;
@@ -199,9 +199,9 @@ static int set_deletion(const we_opts *o, double fraction)
     return bad ? 1 : 0;
 }
 
-int cmd_wedit_bench(int argc, char **argv)
+int cmd_wedits_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("wedit-bench");
+    if (wants_help(argc, argv)) return print_help("wedits-bench");
     we_opts o;
     int rc = parse_opts(argc, argv, &o);
     if (rc) return rc;
