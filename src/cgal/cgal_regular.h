@@ -87,18 +87,6 @@ int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double p[3], doub
  * failure.  O(n).                                                       */
 int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
 
-/* The edit bench's timed references (issue 44), each returning the
- * seconds of CGAL's own calls alone (finding the handles and keeping
- * the index map are not timed), or -1 on failure:
- *  - remove_set: remove() of each listed vertex, in the order given;
- *  - moves: for each k, point idx[k] removed (a vertex) or forgotten (a
- *    kept hidden point) and (p[3k..], w[k]) inserted under its index,
- *    hinted by a neighbour (the move reference, DESIGN 12); when a move
- *    changes which points are vertices, the handles are found again
- *    (O(n), untimed).                                                 */
-double dd_cgal_rt_time_remove_set(dd_cgal_rt *c, const uint32_t *idx, size_t n);
-double dd_cgal_rt_time_moves(dd_cgal_rt *c, const uint32_t *idx, const double *p, const double *w, size_t n);
-
 #ifdef __cplusplus
 }
 #endif
