@@ -244,7 +244,7 @@ static dd_status check_left(dd_tri *t, const uint32_t *ids, size_t n, uint32_t t
  * (or a dd_delete_set of each fraction, timed) shows both courses equal.
  * On a weighted t a deletion rebuilds the regular triangulation of the
  * neighbours and the star's hidden points, so it weighs more against a
- * point of the rebuild (SET_WDELETE_UNIT; `dtdel wedit-bench` times
+ * point of the rebuild (SET_WDELETE_UNIT; `dtdel wedits-bench` times
  * both courses); listed hidden points are only forgotten, so k counts
  * the listed vertices and the rebuild the points left, hidden or not.  */
 #define SET_DELETE_UNIT 1.0
