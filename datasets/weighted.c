@@ -191,10 +191,19 @@ static dd_status gen_wgrid(uint32_t n, uint64_t seed, double alpha, double *xyz,
     return DD_OK;
 }
 
-/* A curve dataset (moment, helix) with weight 2 u d^2, u uniform in
+/* A curve dataset (moment, helix) with weight 2 u d^2 / n, u uniform in
  * [0, 1) and d the distance to the nearer neighbour along the curve.
  * Both curves are in convex position, so no point is hidden; the weights
- * change the cells.                                                      */
+ * change the cells.  Why d^2 / n and not d^2: the curves owe their high
+ * degrees to spheres that pass close to many other points, and those
+ * margins shrink as the curve gets denser (on the helix, with about
+ * sqrt(n) points per turn, they are of the order of the rise per point,
+ * d / sqrt(n), squared).  Weights of the order of d^2 outweigh them and
+ * leave the curves with the low degrees of any dense sample, which
+ * wuniform already covers; weights of the order of d^2 / n make the
+ * heavier points take neighbours from the lighter ones (stars and cells
+ * differ from the unweighted curve's) while the stars keep most of the
+ * curve's high degree.                                                   */
 static dd_status curve_weights(const char *curve, uint32_t n, uint64_t seed, double *xyz, double *w, char *msg,
                                size_t msglen)
 {
@@ -211,7 +220,7 @@ static dd_status curve_weights(const char *curve, uint32_t n, uint64_t seed, dou
             for (int k = 0; k < 3; k++) e += (p[k] - q[k]) * (p[k] - q[k]);
             d2 = fmin(d2, e);
         }
-        w[i] = isinf(d2) ? 0 : 2 * d2 * next_unit(&g);
+        w[i] = isinf(d2) ? 0 : 2 * d2 * next_unit(&g) / (double)n;
     }
     return DD_OK;
 }
