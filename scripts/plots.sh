@@ -1,7 +1,7 @@
 #!/bin/sh
 # plots.sh [OUTDIR] -- the benchmark's PNG plots (DESIGN 10), drawn by gnuplot
 # from OUTDIR/plotdata/, which build/summarize writes (see the top of
-# scripts/summarize.c for the data files).  OUTDIR defaults to results.
+# scripts/summarize/main.c for the data files).  OUTDIR defaults to results.
 #
 # Per dataset D listed in plotdata/datasets.txt:
 #   D-time.png    median time per deletion vs degree, log-log, IQR bars
