@@ -7,8 +7,8 @@
  *
  * The CSVs after --weighted are those of dtdel wbench (weighted points,
  * issue 44): their datasets get their sections like any other, but are
- * pooled apart ("All weighted datasets", not in "All datasets" nor in
- * its plot), and the weighted rows (write_weighted) go into summary.md
+ * pooled apart ("All weighted datasets", not in "All unweighted
+ * datasets" nor in its plot), and the weighted rows (write_weighted) go into summary.md
  * and readme-table.md with the lines of OUTDIR/wedits.txt.
  *
  * Input.  Each CSV starts with exactly this header line:
@@ -48,11 +48,12 @@
  * when that bucket has cgal rows.  vs insert = variant median / insert
  * median in the same bucket of the same dataset, for engine deletion
  * variants only (2.00: deleting costs twice re-inserting; the target is at
- * most 2).  Phase and tets medians ignore empty fields.  "All datasets"
- * pools the rows of every dataset per bucket and variant and applies the
- * same definitions to the pool, except that a variant's cgal and insert
- * references are pooled only over the datasets in which the variant has
- * rows in that bucket.
+ * most 2).  Phase and tets medians ignore empty fields.  "All unweighted
+ * datasets" pools the rows of every unweighted dataset per bucket and
+ * variant and applies the same definitions to the pool, except that a
+ * variant's cgal and insert references are pooled only over the datasets
+ * in which the variant has rows in that bucket ("All weighted datasets"
+ * likewise for the weighted ones).
  *
  * Output, all under OUTDIR:
  *   summary.md              meta.txt's lines, then per dataset: time table
@@ -60,7 +61,8 @@
  *                           re-insertion" (per bucket with insert rows:
  *                           insert's median µs and each engine deletion
  *                           variant's vs insert, "×2.31"), phase split,
- *                           tets created; then all datasets pooled.
+ *                           tets created; then the unweighted datasets
+ *                           pooled, then the weighted ones.
  *   plotdata/datasets.txt   the datasets of this run, one per line.
  *   plotdata/D.dat          per dataset D: one gnuplot index block per
  *                           variant, in column order; each line
@@ -75,8 +77,8 @@
  *   plotdata/D.variants     the variant of each block, one per line.
  *   plotdata/D.phases       per variant with phase times: variant, median
  *                           link, locate, conflict, sew, us (all rows).
- *   plotdata/all-datasets.* the same three files for the pooled rows (the
- *                           paper's time-vs-degree figure); "all-datasets"
+ *   plotdata/all-datasets.* the same three files for the unweighted pool
+ *                           (the paper's time-vs-degree figure); "all-datasets"
  *                           is therefore reserved as a dataset name.
  *   readme-table.md         README.md's results table (scripts/bench.sh
  *                           puts it between the README's bench-table

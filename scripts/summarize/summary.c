@@ -1,9 +1,10 @@
 /*
  * summary.c -- OUTDIR/summary.md and OUTDIR/plotdata/: per dataset the
  * time table, mismatches, deletion vs re-insertion, phase split and tets
- * created, then the unweighted datasets pooled ("All datasets"), then the
- * weighted pool (weighted.c); the gnuplot data of each dataset and of the
- * unweighted pool; write_all drives every output, readme-table.md too.
+ * created, then the unweighted datasets pooled ("All unweighted
+ * datasets"), then the weighted pool (weighted.c); the gnuplot data of
+ * each dataset and of the unweighted pool; write_all drives every
+ * output, readme-table.md too.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -307,11 +308,24 @@ static int close_out(ctx *c, FILE *f, const char *name, const char *suffix)
     return 0;
 }
 
-static void write_title(const ctx *c, const table *t, const char *name, FILE *f)
+/* How many datasets have rows in the pool (or dataset) ds. */
+static size_t count_datasets(const ctx *c, size_t ds)
+{
+    size_t n = 0;
+    for (size_t d = 0; d < c->datasets.n; d++)
+        for (size_t i = 0; i < c->nrows; i++)
+            if (c->rows[i].ds == d && in_group(c, &c->rows[i], ds)) { n++; break; }
+    return n;
+}
+
+/* "# title: NAME (n = sizes), K deletions"; the unweighted pool says how
+ * many datasets it holds instead of sizes. */
+static void write_title(const ctx *c, const table *t, size_t ds, const char *name, FILE *f)
 {
     fprintf(f, "# title: %s", name);
-    if (!strcmp(name, ALL_NAME)) {
-        fprintf(f, ", %zu dataset%s", c->datasets.n, c->datasets.n == 1 ? "" : "s");
+    if (ds == POOL_PLAIN) {
+        size_t n = count_datasets(c, ds);
+        fprintf(f, ", %zu unweighted dataset%s", n, n == 1 ? "" : "s");
     } else if (t->nsizes) {
         fprintf(f, " (n = ");
         for (size_t i = 0; i < t->nsizes; i++) fprintf(f, "%s%lld", i ? ", " : "", t->sizes[i]);
@@ -325,7 +339,7 @@ static int write_plotdata(ctx *c, const table *t, size_t ds, const char *name)
 {
     FILE *dat = open_out(c, name, ".dat");
     if (!dat) return -1;
-    write_title(c, t, name, dat);
+    write_title(c, t, ds, name, dat);
     fprintf(dat, "# columns: 1 bucket_center 2 median_us 3 q1_us 4 q3_us 5 ratio_to_cgal "
                  "6 median_tets 7 median_link_us 8 median_locate_us 9 median_conflict_us "
                  "10 median_sew_us 11 bucket_lo 12 bucket_hi 13 rows 14 mismatches\n"
@@ -388,7 +402,7 @@ int write_all(ctx *c)
     fprintf(md, "# Vertex deletion benchmark: dtdel variants against CGAL\n\n");
     write_meta(c, md);
     table all;
-    if (build_table(c, (size_t)-1, &all)) { fclose(md); fclose(list); return -1; }
+    if (build_table(c, POOL_PLAIN, &all)) { fclose(md); fclose(list); return -1; }
     size_t mism = 0;
     for (size_t i = 0; i < c->nrows; i++) mism += !c->rows[i].match;
     if (mism)
@@ -424,17 +438,19 @@ int write_all(ctx *c)
         free_table(&t);
     }
     if (!st) {
-        fprintf(md, "## All datasets\n\nRows of every dataset pooled per bucket and variant "
-                    "(a variant's ratio uses only the cgal rows, and its cost relative to "
+        fprintf(md, "## All unweighted datasets\n\nRows of every unweighted dataset (dtdel bench: "
+                    "Delaunay triangulations; the weighted ones are pooled apart below) pooled "
+                    "per bucket and variant (a variant's ratio uses only the cgal rows, and its "
+                    "cost relative to "
                     "insert only the insert rows, of the datasets in which it has rows in that "
                     "bucket); %zu deletions, %zu rows.\n\n",
                 all.total_deletions, all.rows);
         write_time_table(c, &all, md);
-        write_mismatches(c, &all, (size_t)-1, md);
+        write_mismatches(c, &all, POOL_PLAIN, md);
         write_insert_table(c, &all, md);
-        st = write_phases(c, &all, (size_t)-1, md, NULL);
+        st = write_phases(c, &all, POOL_PLAIN, md, NULL);
         if (!st) write_tets_table(c, &all, md);
-        if (!st) st = write_plotdata(c, &all, (size_t)-1, ALL_NAME);
+        if (!st) st = write_plotdata(c, &all, POOL_PLAIN, ALL_NAME);
     }
     free_table(&all);
     if (!st) st = write_weighted_pool(c, md);
