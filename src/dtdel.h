@@ -14,7 +14,8 @@
  * dd_locate, dd_nearest_vertex, dd_canonical, dd_local_canonical,
  * dd_check, dd_check_msg, the cell handles' calls (dd_cell_end,
  * dd_cell_alive, dd_cell, dd_locate_from, dd_created_cells), dd_write,
- * dd_version and every counter or getter (dd_num_*, dd_alias,
+ * dd_version, the weighted reads (dd_is_weighted, dd_weight, dd_is_hidden,
+ * dd_hidden) and every counter or getter (dd_num_*, dd_alias,
  * dd_is_vertex, dd_memory_bytes, dd_errmsg, and dtdel_stats.h's
  * dd_last_delete_stats and dd_get_counters).  Their scratch belongs to the
  * call, not to the triangulation, so any number of threads may call them
