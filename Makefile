@@ -193,12 +193,15 @@ $(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.
 	$(CXX) $(CXXFLAGS_R) $^ -o $@ $(LIBS)
 
 # ---- bench summary and plots ----------------------------------------------------
-$(B)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
+# scripts/summarize/: one program, its files compiled together
+SUM_SRC = $(sort $(wildcard scripts/summarize/*.c))
+SUM_DEPS = $(SUM_SRC) scripts/summarize/summarize.h src/cli/buckets.h
+$(B)/summarize: $(SUM_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_R) $< -o $@ -lm
-$(A)/summarize: scripts/summarize.c src/cli/buckets.h | $(DEPS_STAMP)
+	$(CC) $(CFLAGS_R) $(SUM_SRC) -o $@ -lm
+$(A)/summarize: $(SUM_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_A) $< -o $@ -lm
+	$(CC) $(CFLAGS_A) $(SUM_SRC) -o $@ -lm
 
 # ---- tests --------------------------------------------------------------------
 # Both suites run, and the threaded test under ThreadSanitizer; the

@@ -36,6 +36,18 @@ out=results
 only=
 [ "${BENCH_SIZES:-}" = tiny ] && only="--dataset uniform"
 set -e
+# by_mode FULL QUICK TINY: this run's size (BENCH_SIZES=tiny before the mode)
+by_mode() {
+    if [ "${BENCH_SIZES:-}" = tiny ]; then echo "$3"
+    elif [ "$mode" = quick ]; then echo "$2"
+    else echo "$1"; fi
+}
+# run FILE CMD...: CMD's output into $out/FILE, then shown; a failure sets rc
+run() {
+    f=$1; shift
+    "$@" >"$out/$f" || rc=$?
+    cat "$out/$f"
+}
 mkdir -p "$out/phases"
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 {
@@ -62,9 +74,7 @@ for ds in uniform sphere bunny; do
     "$DTDEL" bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out $out/cold || rc=$?
 done
 "$SUMMARIZE" $out/cold $out/cold/*.csv
-n=1000000 nh=16000
-[ "$mode" = quick ] && n=200000 nh=4000
-[ "${BENCH_SIZES:-}" = tiny ] && n=2000 nh=500
+n=$(by_mode 1000000 200000 2000) nh=$(by_mode 16000 4000 500)
 "$DTDEL" build-bench "$n" --reps 5 >$out/build.txt || rc=$?
 # and on a curve, where point location is most of the work
 echo >>$out/build.txt
@@ -72,58 +82,38 @@ echo >>$out/build.txt
 cat $out/build.txt
 # whole workloads: a random sequence of deletions, no repetition, cold
 # caches (seq-bench), on uniform points and on the degenerate grid
-ns=1000000 ng=27000
-[ "$mode" = quick ] && ns=200000 ng=8000
-[ "${BENCH_SIZES:-}" = tiny ] && ns=2000 ng=1000
+ns=$(by_mode 1000000 200000 2000) ng=$(by_mode 27000 8000 1000)
 "$DTDEL" seq-bench "$ns" --fraction 0.1 >$out/sequence.txt || rc=$?
 echo >>$out/sequence.txt
 "$DTDEL" seq-bench "$ng" --dataset grid --fraction 0.5 >>$out/sequence.txt || rc=$?
 cat $out/sequence.txt
 # insertion of new points, location and nearest-vertex queries against
 # CGAL (with and without Fast_location), and memory under churn
-nq=200000 kq=50000 lq=100000
-[ "$mode" = quick ] && nq=50000 kq=10000 lq=20000
-[ "${BENCH_SIZES:-}" = tiny ] && nq=2000 kq=500 lq=1000
-"$DTDEL" query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq" >$out/queries.txt || rc=$?
-cat $out/queries.txt
+nq=$(by_mode 200000 50000 2000) kq=$(by_mode 50000 10000 500) lq=$(by_mode 100000 20000 1000)
+run queries.txt "$DTDEL" query-bench "$nq" --inserts "$kq" --queries "$kq" --live "$lq"
 # moves (smoothing) against move_if_no_collision, set deletion against
 # remove(first, last)
-ne=100000 me=200000
-[ "$mode" = quick ] && ne=20000 me=40000
-[ "${BENCH_SIZES:-}" = tiny ] && ne=1000 me=2000
-"$DTDEL" edit-bench "$ne" --set "$me" >$out/edits.txt || rc=$?
-cat $out/edits.txt
+ne=$(by_mode 100000 20000 1000) me=$(by_mode 200000 40000 2000)
+run edits.txt "$DTDEL" edit-bench "$ne" --set "$me"
 # refinement: the circumcentre of the largest cell inserted, again and
 # again, our queue fed by dd_created_cells, CGAL's by find_conflicts and
 # insert_in_hole; both must end in the same triangulation
-nr=100000 kr=100000
-[ "$mode" = quick ] && nr=20000 kr=20000
-[ "${BENCH_SIZES:-}" = tiny ] && nr=1000 kr=1000
-"$DTDEL" refine-bench "$nr" --inserts "$kr" >$out/refine.txt || rc=$?
-cat $out/refine.txt
+nr=$(by_mode 100000 20000 1000)
+run refine.txt "$DTDEL" refine-bench "$nr" --inserts "$nr"
 # regular triangulations (weighted points, hidden points kept): the
 # construction and the insertion of new weighted points against CGAL's
 # Regular_triangulation_3; cells and hidden sets must agree
-nw=1000000 nw0=200000 mw=50000
-[ "$mode" = quick ] && nw=200000 nw0=50000 mw=10000
-[ "${BENCH_SIZES:-}" = tiny ] && nw=2000 nw0=1000 mw=500
-"$DTDEL" regular-bench "$nw" --base "$nw0" --inserts "$mw" >$out/regular.txt || rc=$?
-cat $out/regular.txt
+nw=$(by_mode 1000000 200000 2000) nw0=$(by_mode 200000 50000 1000) mw=$(by_mode 50000 10000 500)
+run regular.txt "$DTDEL" regular-bench "$nw" --base "$nw0" --inserts "$mw"
 # weighted points (regular triangulations, hidden points kept, the bench's
 # mode): every deletion strategy against CGAL's Regular_triangulation_3
 # remove() per degree, then the re-weighting pass, the move pass and the
 # set deletions; results compared with CGAL's, cells and hidden sets
-wmode=$mode
-[ "${BENCH_SIZES:-}" = tiny ] && wmode=tiny
 mkdir -p $out/weighted
 rm -f $out/weighted/*.csv
-"$DTDEL" wbench --mode "$wmode" --scale "$scale" --out $out/weighted >$out/wdelete.txt || rc=$?
-cat $out/wdelete.txt
-nwe=100000 mwe=200000
-[ "$mode" = quick ] && nwe=20000 mwe=40000
-[ "${BENCH_SIZES:-}" = tiny ] && nwe=1000 mwe=2000
-"$DTDEL" wedits-bench "$nwe" --set "$mwe" >$out/wedits.txt || rc=$?
-cat $out/wedits.txt
+run wdelete.txt "$DTDEL" wbench --mode "$(by_mode full quick tiny)" --scale "$scale" --out $out/weighted
+nwe=$(by_mode 100000 20000 1000) mwe=$(by_mode 200000 40000 2000)
+run wedits.txt "$DTDEL" wedits-bench "$nwe" --set "$mwe"
 csvs=$(ls $out/*.csv)
 wcsvs=$(ls $out/weighted/*.csv 2>/dev/null || true)
 "$SUMMARIZE" "$out" $csvs ${wcsvs:+--weighted $wcsvs}

@@ -1,14 +1,14 @@
 #!/bin/sh
 # plots.sh [OUTDIR] -- the benchmark's PNG plots (DESIGN 10), drawn by gnuplot
 # from OUTDIR/plotdata/, which build/summarize writes (see the top of
-# scripts/summarize.c for the data files).  OUTDIR defaults to results.
+# scripts/summarize/main.c for the data files).  OUTDIR defaults to results.
 #
 # Per dataset D listed in plotdata/datasets.txt:
 #   D-time.png    median time per deletion vs degree, log-log, IQR bars
 #   D-ratio.png   cgal median / variant median vs degree, log-log, line at 1
 #   D-phases.png  stacked median phase times per variant
 #   D-tets.png    median tetrahedra created vs degree, log-log
-# and time-vs-degree.png, the paper's figure: every dataset pooled.
+# and time-vs-degree.png, the paper's figure: every unweighted dataset pooled.
 # A plot with nothing to show (no cgal rows for the ratio, no phase times,
 # no tets counts) is skipped with a note and any older copy removed.  Every
 # plot carries machine, compiler, flags, CGAL version and date from
@@ -259,7 +259,7 @@ done <"$pd/datasets.txt"
 
 if [ -f "$pd/all-datasets.dat" ]; then
     sub=$(sed -n 's/^# title: all-datasets, //p' "$pd/all-datasets.dat" | head -n 1)
-    time_plot all-datasets "$out/time-vs-degree.png" "Deletion time vs degree, all datasets pooled" "$sub"
+    time_plot all-datasets "$out/time-vs-degree.png" "Deletion time vs degree, unweighted datasets pooled" "$sub"
 else
     echo "plots: $pd/all-datasets.dat missing" >&2; failed=1
 fi

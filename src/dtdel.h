@@ -14,7 +14,8 @@
  * dd_locate, dd_nearest_vertex, dd_canonical, dd_local_canonical,
  * dd_check, dd_check_msg, the cell handles' calls (dd_cell_end,
  * dd_cell_alive, dd_cell, dd_locate_from, dd_created_cells), dd_write,
- * dd_version and every counter or getter (dd_num_*, dd_alias,
+ * dd_version, the weighted reads (dd_is_weighted, dd_weight, dd_is_hidden,
+ * dd_hidden) and every counter or getter (dd_num_*, dd_alias,
  * dd_is_vertex, dd_memory_bytes, dd_errmsg, and dtdel_stats.h's
  * dd_last_delete_stats and dd_get_counters).  Their scratch belongs to the
  * call, not to the triangulation, so any number of threads may call them
@@ -41,8 +42,10 @@
  *        failure the triangulation is left exactly as it was, and out-
  *        parameters are unspecified unless the call says otherwise;
  *      a count (dd_num_*, dd_degree, dd_neighbors, dd_incident_cells)
- *        cannot fail: 0 for an index that names no vertex;
- *      a yes/no (dd_is_vertex, dd_on_hull) is 1 or 0, 0 for a bad index;
+ *        has no status: 0 for an index that names no vertex, and 0
+ *        too when one that allocates runs out of memory (see Memory);
+ *      a yes/no (dd_is_vertex, dd_on_hull, dd_is_hidden) is 1 or 0, 0 for
+ *        a bad index (dd_on_hull: and on running out of memory);
  *      a name (dd_status_name, dd_variant_name, dd_version, dd_errmsg) is
  *        a string the library owns; dd_variant_name is NULL past the end;
  *      dd_alias answers UINT32_MAX for an index out of range.
@@ -65,8 +68,11 @@
  *    edit that succeeded may have lost dd_created_cells' list (that call
  *    then answers DD_ERR_NOMEM) or not remade its location grid
  *    (queries walk longer); the counts and yes/no answers that allocate
- *    (dd_degree, dd_neighbors, dd_incident_cells, dd_on_hull) cannot
- *    report it and answer 0;
+ *    (dd_degree, dd_neighbors, dd_incident_cells, dd_on_hull: the star
+ *    of the vertex, on the heap) cannot report it and answer 0, the
+ *    answer for no vertex (a caller that must tell the two apart asks
+ *    dd_is_vertex, which allocates nothing; a vertex has degree >= 4 and
+ *    at least 4 incident cells);
  *    and an edit undone by a compensating edit (dd_delete_set failing in
  *    its one-at-a-time course, dd_move's temporary insertion) needs
  *    memory for the undo: if that fails too (memory still short), the
@@ -200,8 +206,13 @@ size_t dd_num_finite_tets(const dd_tri *t);
 uint32_t dd_alias(const dd_tri *t, uint32_t i);
 /* 1 if input index i is a vertex of the triangulation now.               */
 int dd_is_vertex(const dd_tri *t, uint32_t i);
-/* Number of vertices adjacent to v (the infinite vertex counts as one).  */
+/* Number of vertices adjacent to v (the infinite vertex counts as one);
+ * 0 if v is not a vertex.  O(cells of v's star), which it collects in
+ * memory of its own: out of memory it answers 0 (no status to say so).  */
 uint32_t dd_degree(const dd_tri *t, uint32_t v);
+/* 1 if vertex v is on the convex hull (adjacent to the infinite vertex);
+ * 0 if not, or v is not a vertex.  O(cells of v's star), collected in
+ * memory of its own: out of memory it answers 0 (no status to say so).  */
 int dd_on_hull(const dd_tri *t, uint32_t v);
 
 /* Canonical form: each cell as its four vertex indices sorted ascending,
@@ -210,7 +221,8 @@ int dd_on_hull(const dd_tri *t, uint32_t v);
 dd_status dd_canonical(const dd_tri *t, int32_t **tets, size_t *ntets);
 /* The input indices of v's finite neighbours: at most max written to
  * out; returns their full number (more than max: out was too short), 0
- * if v is not a vertex.                                                  */
+ * if v is not a vertex.  O(cells of v's star), collected in memory of
+ * its own: out of memory it answers 0 (no status to say so).            */
 uint32_t dd_neighbors(const dd_tri *t, uint32_t v, uint32_t *out, uint32_t max);
 /* Canonical form (as dd_canonical) of the cells incident to any of the
  * input vertices vs[0..n): what deleting their common neighbour changes. */
@@ -243,7 +255,8 @@ dd_status dd_cells(const dd_tri *t, int32_t **verts, int32_t **nbrs, size_t *nce
 /* The cells incident to input vertex v, as their four vertices (input
  * indices, -1 = infinite): at most max written to out; returns their full
  * number (more than max: out was too short), 0 if v is not a vertex.
- * O(number of cells).                                                    */
+ * O(number of those cells), collected in memory of its own: out of
+ * memory it answers 0 (no status to say so).                             */
 uint32_t dd_incident_cells(const dd_tri *t, uint32_t v, int32_t (*out)[4], uint32_t max);
 /* The four vertices (input indices, -1 = infinite) of a cell whose
  * closure holds p, or, when p is outside the convex hull, of an infinite
@@ -255,9 +268,11 @@ uint32_t dd_incident_cells(const dd_tri *t, uint32_t v, int32_t (*out)[4], uint3
  * and remade by the edits as the size doubles or halves).               */
 dd_status dd_locate(const dd_tri *t, const double p[3], int32_t cell[4]);
 /* In *v, the input index of a vertex nearest to p in Euclidean distance
- * (any one of ties), exact.  DD_ERR_NAN / DD_ERR_INFINITE for a bad p,
- * DD_ERR_NOMEM.  dd_locate's cost, then a greedy descent over Delaunay
- * edges: O(degree) a step, a few steps.                                  */
+ * (any one of ties), exact; on a weighted t, of least power distance
+ * |p - x|^2 - w(x) (hidden points are no vertices, so never answered).
+ * DD_ERR_NAN / DD_ERR_INFINITE for a bad p, DD_ERR_NOMEM.  dd_locate's
+ * cost, then a greedy descent over the edges: O(degree) a step, a few
+ * steps.                                                                 */
 dd_status dd_nearest_vertex(const dd_tri *t, const double p[3], uint32_t *v);
 /* 1 if the vertex index v is the infinite vertex (-1 in the arrays). */
 static inline int dd_is_infinite(int32_t v) { return v < 0; }

@@ -155,6 +155,14 @@ if [ "$nblank" -eq 4 ]; then ok block-separators; else
 has phases-file "$pd/toy.phases" "grr-edge 4 NaN 2 1.5 16"
 if [ "$(tr '\n' ' ' <"$pd/datasets.txt")" = "toy other edges " ]; then ok datasets-list; else
     bad datasets-list "got $(tr '\n' ' ' <"$pd/datasets.txt")"; fi
+# The pool of the unweighted datasets says so; with edges given after
+# --weighted it pools two datasets (toy, other) and edges is pooled apart.
+has pooled-heading "$md" "## All unweighted datasets"
+has pooled-title "$pd/all-datasets.dat" "# title: all-datasets, 3 unweighted datasets, 13 deletions"
+mkdir "$tmp/outw"
+expect runs-weighted 0 "" "$SUM" "$tmp/outw" "$tmp/toy.csv" "$tmp/other.csv" --weighted "$tmp/edges.csv"
+has pooled-title-weighted "$tmp/outw/plotdata/all-datasets.dat" "# title: all-datasets, 2 unweighted datasets, 8 deletions"
+has pooled-weighted-heading "$tmp/outw/summary.md" "## All weighted datasets"
 
 # Malformed input: exit 1, FILE:LINE and what is wrong.
 printf '%s\ntoy,10,1,5,0,cgal,1,,,,,,1\ntoy,10,2,5,0,cgal,1,,,,,1\n' "$H" >"$tmp/fields.csv"

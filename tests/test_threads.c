@@ -5,16 +5,23 @@
  *
  * Datasets: uniform points, an integer grid (degenerate: cospherical
  * cells, queries on vertices, edges and facets), points on a sphere and
- * integer points on a sphere (every vertex on the hull).  Before the
- * threads start, each triangulation has had vertices deleted and new
- * points inserted (dead cells, reused indices, a deletion context), so
+ * integer points on a sphere (every vertex on the hull); and weighted
+ * (regular triangulations, hidden points kept): uniform points with
+ * weights up to three squared spacings (many hidden) and the grid with
+ * integer weights 0..2 (power ties), where the weighted reads
+ * (dd_is_weighted, dd_weight, dd_is_hidden, dd_hidden, and dd_locate,
+ * dd_nearest_vertex by power distance) meet the hidden-point lists.
+ * Before the threads start, each triangulation has had vertices deleted
+ * and new points inserted (dead cells, reused indices, a deletion
+ * context; on the weighted ones, weighted insertions, some hidden), so
  * the reads meet the state that edits leave.
  *
  * Each item of the work (a query point and a vertex) gets one 64-bit
  * digest of every answer about it; each thread walks all items from its
  * own offset, so the threads are at different items and at the same
  * ones in turn.  The whole-triangulation calls (dd_canonical, dd_cells,
- * dd_check, the counters and getters) run once a round in every thread.
+ * dd_check, dd_hidden, dd_created_cells, the counters and getters) run
+ * once a round in every thread.
  * Afterwards the triangulation must be as before: canonical form,
  * counters and dd_errmsg unchanged.
  *
@@ -68,6 +75,14 @@ static uint64_t item_digest(const dd_tri *t, const work *w, uint32_t i)
     uint32_t nv = UINT32_MAX;
     h = mix(h, (uint32_t)dd_nearest_vertex(t, p, &nv));
     h = mix(h, nv);
+    dd_cell_id hc = -1, nbc[4];
+    int32_t cv[4];
+    s = dd_locate_from(t, p, -1, &hc);
+    h = mix(h, (uint32_t)s);
+    if (s == DD_OK) {
+        h = mix(mix(h, (uint32_t)dd_cell_alive(t, hc)), (uint32_t)dd_cell(t, hc, cv, nbc));
+        for (int k = 0; k < 4; k++) h = mix(mix(h, (uint32_t)cv[k]), (uint32_t)nbc[k]);
+    }
 
     const uint32_t v = i % w->nin;
     double x[3] = {0, 0, 0};
@@ -75,6 +90,11 @@ static uint64_t item_digest(const dd_tri *t, const work *w, uint32_t i)
     for (int c = 0; c < 3; c++) h = mix_d(h, x[c]);
     h = mix(h, dd_alias(t, v));
     h = mix(h, (uint32_t)dd_is_vertex(t, v));
+    double wv = NAN;
+    h = mix(h, (uint32_t)dd_weight(t, v, &wv));
+    h = mix_d(h, wv);
+    h = mix(h, (uint32_t)dd_weight(t, w->nin + v, &wv));       /* past the input: DD_ERR_ARG */
+    h = mix(h, (uint32_t)dd_is_hidden(t, v));
     h = mix(h, dd_degree(t, v));
     h = mix(h, (uint32_t)dd_on_hull(t, v));
     uint32_t nbr[64];
@@ -112,6 +132,15 @@ static uint64_t whole_digest(const dd_tri *t)
     for (size_t k = 0; s == DD_OK && k < 4 * na; k++) h = mix(mix(h, (uint32_t)a[k]), (uint32_t)nb[k]);
     free(a);
     free(nb);
+    uint32_t *hid = NULL;
+    s = dd_hidden(t, &hid, &na);
+    h = mix(mix(h, (uint32_t)s), (uint32_t)dd_is_weighted(t));
+    for (size_t k = 0; s == DD_OK && k < na; k++) h = mix(h, hid[k]);
+    free(hid);
+    const dd_cell_id *made = NULL;
+    s = dd_created_cells(t, &made, &na);
+    h = mix(mix(h, (uint32_t)s), (uint32_t)dd_cell_end(t));
+    for (size_t k = 0; s == DD_OK && k < na; k++) h = mix(h, (uint32_t)made[k]);
     char msg[200];
     h = mix(h, (uint32_t)dd_check_msg(t, msg, sizeof msg));
     h = mix(h, (uint32_t)dd_check(t));
@@ -187,7 +216,20 @@ static double *make_queries(tl_rng *r, const double *pts, uint32_t n, uint32_t n
     return q;
 }
 
-static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int rounds)
+/* Weights for the weighted sets: on the grid integers 0..2 (power ties),
+ * elsewhere uniform up to three squared mean spacings (many hidden).   */
+static double *make_weights(tl_rng *r, const char *name, uint32_t n)
+{
+    double *w = malloc((size_t)n * sizeof *w);
+    const double h = pow((double)n, -1.0 / 3);
+    for (uint32_t i = 0; i < n; i++)
+        w[i] = !strcmp(name, "grid") ? (double)tl_int(r, 0, 2) : 3 * h * h * tl_unif(r);
+    return w;
+}
+
+/* The reads of every thread against one thread's, on dataset `name`
+ * (weighted: with weights, hidden points kept).                         */
+static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int rounds, int weighted)
 {
     char msg[256], tn[128];
     double *pts = NULL;
@@ -196,27 +238,35 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
         tl_check(st, 0, name, "dd_gen: %s", msg);
         return;
     }
+    tl_rng r = {0x5EEDull + n};
+    double *wt = weighted ? make_weights(&r, name, np) : NULL;
     dd_tri *t = NULL;
-    dd_status s = dd_create(&t, pts, np, msg, sizeof msg);
-    snprintf(tn, sizeof tn, "threads/%s/created", name);
+    dd_status s = dd_create_ex(&t, pts, wt, np, 0, msg, sizeof msg);
+    const char *set = name;
+    char wname[64];
+    if (weighted) snprintf(wname, sizeof wname, "weighted-%s", name), set = wname;
+    snprintf(tn, sizeof tn, "threads/%s/created", set);
     tl_check(st, s == DD_OK, tn, "dd_create: %s", msg);
     if (s != DD_OK) {
         free(pts);
+        free(wt);
         return;
     }
     /* edits before the reads: deletions, a new point in a deleted slot,
-     * new points past the input; a refused insertion sets dd_errmsg     */
-    tl_rng r = {0x5EEDull + n};
+     * new points past the input (weighted ones on a weighted t, some
+     * hidden); a refused insertion sets dd_errmsg                       */
     for (uint32_t k = 0; k < np / 20; k++) (void)dd_delete(t, (uint32_t)tl_int(&r, 0, np - 1));
     for (uint32_t k = 0; k < 10; k++) {
         uint32_t idx;
         const uint32_t a = (uint32_t)tl_int(&r, 0, np - 1), b = (uint32_t)tl_int(&r, 0, np - 1);
         const double p[3] = {0.3 * pts[3 * a] + 0.7 * pts[3 * b], 0.3 * pts[3 * a + 1] + 0.7 * pts[3 * b + 1],
                              0.3 * pts[3 * a + 2] + 0.7 * pts[3 * b + 2]};
-        (void)dd_insert(t, p, &idx);
+        if (weighted) (void)dd_insert_weighted(t, p, wt[a], &idx);
+        else (void)dd_insert(t, p, &idx);
     }
     uint32_t idx;
-    (void)dd_insert(t, pts, &idx);      /* refused if point 0 is a vertex: a message */
+    if (weighted) (void)dd_insert_weighted(t, pts, NAN, &idx);   /* refused: a message */
+    else (void)dd_insert(t, pts, &idx);      /* refused if point 0 is a vertex: a message */
 
     work w = {t, make_queries(&r, pts, np, nq), nq, dd_num_input(t), rounds};
     /* one thread alone first */
@@ -246,7 +296,7 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
         for (uint32_t i = 0; i < nq; i++) bad_items += jobs[k].items[i] != ref[i];
         bad_whole += jobs[k].whole != whole || jobs[k].later_differs;
     }
-    snprintf(tn, sizeof tn, "threads/%s/same-answers", name);
+    snprintf(tn, sizeof tn, "threads/%s/same-answers", set);
     tl_check(st, started == NTHREADS && bad_items == 0 && bad_whole == 0, tn,
              "%d threads started; %ld of %ld item answers and %ld whole answers differ from one thread's",
              started, bad_items, (long)started * nq, bad_whole);
@@ -256,7 +306,7 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
     (void)dd_canonical(t, &after, &nafter);
     dd_counters c1;
     dd_get_counters(t, &c1);
-    snprintf(tn, sizeof tn, "threads/%s/unchanged", name);
+    snprintf(tn, sizeof tn, "threads/%s/unchanged", set);
     tl_check(st, nafter == nbefore && !memcmp(before, after, 4 * nafter * sizeof *after) &&
                      !memcmp(&c0, &c1, sizeof c0) && !strcmp(err0, dd_errmsg(t)),
              tn, "the reads changed the triangulation, its counters (walk steps %llu, then %llu) or its message",
@@ -275,16 +325,29 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
         const uint32_t nc = dd_incident_cells(t, v, NULL, 0);
         bad_star += deg < 4 || deg != nn + (uint32_t)dd_on_hull(t, v) || nc != 2 * deg - 4;
     }
-    snprintf(tn, sizeof tn, "threads/%s/stars", name);
+    snprintf(tn, sizeof tn, "threads/%s/stars", set);
     tl_check(st, bad_star == 0, tn, "%ld vertices with a wrong degree, neighbour or cell count", bad_star);
     int32_t cell[4];
     uint32_t nv = UINT32_MAX;
-    snprintf(tn, sizeof tn, "threads/%s/statuses", name);
+    snprintf(tn, sizeof tn, "threads/%s/statuses", set);
     tl_check(st, dd_locate(t, w.q, cell) == DD_ERR_NAN && dd_nearest_vertex(t, w.q, &nv) == DD_ERR_NAN &&
                      dd_locate(t, w.q + 3, cell) == DD_OK && dd_nearest_vertex(t, w.q + 3, &nv) == DD_OK &&
                      nv < dd_num_input(t) &&
                      dd_check(t) == DD_OK,
              tn, "%s", "NaN not refused, or a query not answered, or the check failed");
+
+    if (weighted) {         /* the hidden-point reads had hidden points to meet */
+        uint32_t *hid = NULL;
+        size_t nh = 0, agree = 0, flagged = 0;
+        const dd_status hs = dd_hidden(t, &hid, &nh);
+        for (size_t k = 0; hs == DD_OK && k < nh; k++) agree += (size_t)dd_is_hidden(t, hid[k]);
+        for (uint32_t i = 0; i < dd_num_input(t); i++) flagged += (size_t)dd_is_hidden(t, i);
+        free(hid);
+        snprintf(tn, sizeof tn, "threads/%s/hidden", set);
+        tl_check(st, dd_is_weighted(t) && hs == DD_OK && nh > 0 && agree == nh && flagged == nh, tn,
+                 "%s: %zu hidden listed, %zu of them dd_is_hidden, %zu flagged", dd_status_name(hs), nh, agree,
+                 flagged);
+    }
 
     for (int k = 0; k < started; k++) free(jobs[k].items);
     free(before);
@@ -292,6 +355,7 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
     free(ref);
     free((void *)w.q);
     free(pts);
+    free(wt);
     dd_free(t);
 }
 
@@ -301,9 +365,11 @@ int main(int argc, char **argv)
     const int small = argc > 1 && !strcmp(argv[1], "small");
     const uint32_t n = small ? 400 : 3000, nq = small ? 300 : 2000;
     const int rounds = small ? 1 : 2;
-    run_set(&st, "uniform", n, nq, rounds);
-    run_set(&st, "grid", small ? 343 : 2744, nq, rounds);
-    run_set(&st, "sphere", n, nq, rounds);
-    run_set(&st, "cosphere", n, nq, rounds);
+    run_set(&st, "uniform", n, nq, rounds, 0);
+    run_set(&st, "grid", small ? 343 : 2744, nq, rounds, 0);
+    run_set(&st, "sphere", n, nq, rounds, 0);
+    run_set(&st, "cosphere", n, nq, rounds, 0);
+    run_set(&st, "uniform", n, nq, rounds, 1);
+    run_set(&st, "grid", small ? 343 : 2744, nq, rounds, 1);
     return tl_finish(&st);
 }

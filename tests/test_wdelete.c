@@ -37,34 +37,22 @@
 static int small;
 static const double q_origin[3] = {0, 0, 0};
 
-static uint32_t random_vertex(const dd_tri *t, tl_rng *r)
-{
-    const uint32_t np = dd_num_input(t);
-    for (int tries = 0; tries < 100000; tries++) {
-        const uint32_t v = (uint32_t)tl_int(r, 0, np - 1);
-        if (dd_is_vertex(t, v)) return v;
-    }
-    return UINT32_MAX;
-}
-
 /* Builds s in one hidden mode here and in CGAL, then deletes `ndel`
  * random vertices with strategy `variant` (NULL: dd_delete, the
  * default), comparing with CGAL's remove() and checking after every
  * step.  Counts the hidden points that came back.                      */
 static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t ndel, const char *variant, int keep)
 {
-    char tn[200], why[256] = "", msg[256];
+    char tn[200], why[256] = "";
     snprintf(tn, sizeof tn, "delete/%s/%s/%s", name, variant ? variant : "default", keep ? "keep" : "discard");
-    dd_tri *t = NULL;
-    dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
-    int ok = c && dd_create_ex(&t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
-    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
-    if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+    dd_tri *t;
+    dd_cgal_rt *c;
+    int ok = ws_build(s, keep, &t, &c, why, sizeof why);
     tl_rng r = {0x5eed + s->n + (uint64_t)keep};
     uint32_t done = 0, back = 0;
     tl_courses cs = tl_courses_all();               /* the wrap's courses, in turn (test builds) */
     for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
-        const uint32_t v = random_vertex(t, &r);
+        const uint32_t v = ws_random_vertex(t, &r);
         const uint32_t nv = dd_num_vertices(t);
         tl_course_next(&cs, t);
         const dd_status ds = variant ? dd_delete_with(t, v, variant) : dd_delete(t, v);
@@ -75,13 +63,7 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
         }
         back += dd_num_vertices(t) + 1 - nv;
         done++;
-        ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why) && !dd_is_vertex(t, v) &&
-             !dd_is_hidden(t, v);
-        if (!ok) {
-            char w2[256];
-            snprintf(w2, sizeof w2, "after deleting %u (step %u): %.200s", v, k, why);
-            memcpy(why, w2, sizeof why);
-        }
+        ok = ws_deleted_ok(t, c, v, k, why, sizeof why);
     }
     if (ok && done == 0) ok = 0, snprintf(why, sizeof why, "nothing deleted");
     tl_check(st, ok, tn, "%s", why);
@@ -187,7 +169,7 @@ static void zero_weights_case(tl_state *st, const char *name, const wset *s0, ui
     tl_rng r = {0x2e70 + s0->n};
     uint32_t done = 0;
     for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
-        const uint32_t v = random_vertex(t, &r);
+        const uint32_t v = ws_random_vertex(t, &r);
         const dd_status a = dd_delete_with(t, v, variant), b = dd_delete_with(u, v, variant);
         if (a != DD_OK || b != DD_OK) {
             ok = 0, snprintf(why, sizeof why, "deleting %u: %s / %s (%s)", v, dd_status_name(a), dd_status_name(b),
@@ -256,18 +238,13 @@ static dd_status delete_with(dd_tri *t, uint32_t v, const char *variant) { retur
 static void fault_case(tl_state *st)
 {
     wset s = gen_uniform(small ? 80 : 150, 3, 21);
-    char msg[256];
-    dd_tri *t = NULL;
-    dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
-    const uint32_t v = ws_releasing_vertex(&s, t);
-    dd_free(t);
+    dd_cgal_rt *c;
+    const uint32_t v = ws_releasing_vertex(&s, &c);
     if (v == UINT32_MAX) {
         tl_check(st, 0, "fault/weighted-delete", "no vertex releases a hidden point");
         ws_free(&s);
         return;
     }
-    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
-    dd_cgal_rt_remove(c, v);
     static const char *const fvar[3] = {"sew-full", NULL, "gift-wrap"};   /* NULL: auto, the wrap */
     const long nomem = ws_fault_delete(st, "fault/weighted-delete", &s, v, c, delete_with, fvar, 3);
     fprintf(stderr, "  fault/weighted-delete: %ld allocations refused in turn\n", nomem);

@@ -42,19 +42,13 @@ typedef struct pair {
 
 static int pair_make(pair *pr, const wset *s, int keep, char *why, size_t nwhy)
 {
-    char msg[256];
     pr->keep = keep;
-    pr->t = NULL;
-    pr->c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
     pr->h = pow((double)s->n, -1.0 / 3);
     pr->p = malloc(3 * (size_t)s->n * sizeof *pr->p);
     pr->w = malloc((size_t)s->n * sizeof *pr->w);
     memcpy(pr->p, s->p, 3 * (size_t)s->n * sizeof *pr->p);
     memcpy(pr->w, s->w, (size_t)s->n * sizeof *pr->w);
-    if (!pr->c) return snprintf(why, nwhy, "CGAL could not build"), 0;
-    if (dd_create_ex(&pr->t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) != DD_OK)
-        return snprintf(why, nwhy, "build: %.200s", msg), 0;
-    return same_as_cgal(pr->t, pr->c, why, nwhy);
+    return ws_build(s, keep, &pr->t, &pr->c, why, nwhy);
 }
 
 static void pair_free(pair *pr)
@@ -403,9 +397,29 @@ static dd_tri *start_of(const wset *s, int keep, int op, const op_args *a)
     return t;
 }
 
+/* An op as a ws_fault_call (testweighted.h). */
+typedef struct fault_arg {
+    const wset *s;
+    int keep, op;
+    const op_args *a;
+} fault_arg;
+
+static dd_tri *fault_start(const void *arg)
+{
+    const fault_arg *f = arg;
+    return start_of(f->s, f->keep, f->op, f->a);
+}
+
+static dd_status fault_run(dd_tri *t, const void *arg, long k)
+{
+    const fault_arg *f = arg;
+    (void)k;
+    return run_op(t, f->op, f->a);
+}
+
 static void fault_op(tl_state *st, const wset *s, int keep, int op)
 {
-    char tn[160], why[256] = "";
+    char tn[160];
     snprintf(tn, sizeof tn, "fault/%s/%s", op_name[op], keep ? "keep" : "discard");
     op_args a = {0};
     dd_tri *t = start_of(s, keep, -1, &a);
@@ -433,29 +447,10 @@ static void fault_op(tl_state *st, const wset *s, int keep, int op)
     dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
     if (op == OP_REINSERT) dd_cgal_rt_remove(c, a.v);
     cgal_op(c, op, &a);
-    long nomem = 0, bad = 0;
-    for (long k = 1; k < 100000; k++) {
-        t = start_of(s, keep, op, &a);
-        shot before = take_shot(t);
-        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
-        const dd_status ds = run_op(t, op, &a);
-        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
-        int ok = 1;
-        why[0] = 0;
-        if (ds == DD_ERR_NOMEM) {
-            nomem++;
-            ok = unchanged(t, &before) && checked(t, why, sizeof why);
-            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
-            if (ok && run_op(t, op, &a) != DD_OK) ok = 0, snprintf(why, sizeof why, "allocation %ld: retry failed", k);
-        } else if (ds != DD_OK) {
-            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s (%s)", k, dd_status_name(ds), dd_errmsg(t));
-        }
-        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
-        if (!ok && !bad++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
-        shot_free(&before);
-        dd_free(t);
-        if (left > 0) break;             /* the call made fewer than k */
-    }
+    const fault_arg fa = {s, keep, op, &a};
+    const ws_fault_call call = {fault_start, fault_run, &fa};
+    long bad;
+    const long nomem = ws_fault_each(tn, &call, c, &bad);
     tl_check(st, bad == 0, tn, "%ld bad of %ld refusals", bad, nomem);
     fprintf(stderr, "  %s: %ld allocations refused in turn\n", tn, nomem);
     dd_cgal_rt_free(c);

@@ -59,32 +59,20 @@ static int unchanged_cheap(const dd_tri *t, uint32_t nv)
     return dd_num_vertices(t) == nv && checked(t, why, sizeof why);
 }
 
-static uint32_t random_vertex(const dd_tri *t, tl_rng *r)
-{
-    const uint32_t np = dd_num_input(t);
-    for (int tries = 0; tries < 100000; tries++) {
-        const uint32_t v = (uint32_t)tl_int(r, 0, np - 1);
-        if (dd_is_vertex(t, v)) return v;
-    }
-    return UINT32_MAX;
-}
-
 /* Builds s in one hidden mode here and in CGAL, then deletes `ndel`
  * random vertices with strategy `variant`, comparing with CGAL's
  * remove() and checking after every step.                              */
 static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t ndel, const char *variant, int keep)
 {
-    char tn[200], why[256] = "", msg[256];
+    char tn[200], why[256] = "";
     snprintf(tn, sizeof tn, "wgrr/%s/%s/%s", name, variant, keep ? "keep" : "discard");
-    dd_tri *t = NULL;
-    dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
-    int ok = c && dd_create_ex(&t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
-    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
-    if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+    dd_tri *t;
+    dd_cgal_rt *c;
+    int ok = ws_build(s, keep, &t, &c, why, sizeof why);
     tl_rng r = {0x5eed + s->n + (uint64_t)keep};
     uint32_t done = 0, back = 0, framework = 0;
     for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
-        const uint32_t v = random_vertex(t, &r);
+        const uint32_t v = ws_random_vertex(t, &r);
         const uint32_t nv = dd_num_vertices(t);
         const dd_status ds = delete_by(t, v, variant);
         if (ds == DD_ERR_UNSUPPORTED && strstr(t->err, "are coplanar (not supported yet)") && unchanged_cheap(t, nv)) {
@@ -102,13 +90,7 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
         }
         back += dd_num_vertices(t) + 1 - nv;
         done++;
-        ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why) && !dd_is_vertex(t, v) &&
-             !dd_is_hidden(t, v);
-        if (!ok) {
-            char w2[256];
-            snprintf(w2, sizeof w2, "after deleting %u (step %u): %.200s", v, k, why);
-            memcpy(why, w2, sizeof why);
-        }
+        ok = ws_deleted_ok(t, c, v, k, why, sizeof why);
     }
     if (ok && done == 0) ok = 0, snprintf(why, sizeof why, "nothing deleted");
     tl_check(st, ok, tn, "%s", why);
@@ -143,7 +125,7 @@ static void zero_case(tl_state *st, const char *name, const wset *s0, uint32_t n
         if (!ok) snprintf(why, sizeof why, "build: %.200s", msg);
         tl_rng r = {0x2e60 + s.n};
         for (uint32_t j = 0; j < ndel && ok && dd_num_vertices(a) > 8; j++) {
-            const uint32_t v = random_vertex(a, &r);
+            const uint32_t v = ws_random_vertex(a, &r);
             const dd_status da = delete_by(a, v, strategies[k]), db = delete_by(b, v, strategies[k]);
             if (da != DD_OK || db != DD_OK) {
                 ok = 0, snprintf(why, sizeof why, "deleting %u: weighted %s, unweighted %s", v, dd_status_name(da),
@@ -168,18 +150,13 @@ static void zero_case(tl_state *st, const char *name, const wset *s0, uint32_t n
 static void fault_case(tl_state *st)
 {
     wset s = gen_uniform(small ? 80 : 150, 3, 21);
-    char msg[256];
-    dd_tri *t = NULL;
-    dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
-    const uint32_t v = ws_releasing_vertex(&s, t);
-    dd_free(t);
+    dd_cgal_rt *c;
+    const uint32_t v = ws_releasing_vertex(&s, &c);
     if (v == UINT32_MAX) {
         tl_check(st, 0, "wgrr/fault", "no vertex releases a hidden point");
         ws_free(&s);
         return;
     }
-    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
-    dd_cgal_rt_remove(c, v);
     for (size_t k = 0; k < NSTRAT; k++) {
         char tn[160];
         snprintf(tn, sizeof tn, "wgrr/fault/%s", strategies[k]);

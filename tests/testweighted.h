@@ -154,6 +154,46 @@ static inline int checked(const dd_tri *t, char *why, size_t nwhy)
     return 0;
 }
 
+/* s built here (t) and in CGAL (c), hidden points kept or discarded, and
+ * the two equal; 0 with why filled otherwise (either may then be NULL). */
+static inline int ws_build(const wset *s, int keep, dd_tri **t, dd_cgal_rt **c, char *why, size_t nwhy)
+{
+    char msg[256];
+    *t = NULL;
+    *c = dd_cgal_rt_build(s->p, s->w, s->n, !keep);
+    if (!*c) return snprintf(why, nwhy, "CGAL could not build"), 0;
+    if (dd_create_ex(t, s->p, s->w, s->n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) != DD_OK)
+        return snprintf(why, nwhy, "build: %.200s", msg), 0;
+    return same_as_cgal(*t, *c, why, nwhy);
+}
+
+/* A random vertex of t among its input indices, or UINT32_MAX. */
+static inline uint32_t ws_random_vertex(const dd_tri *t, tl_rng *r)
+{
+    const uint32_t np = dd_num_input(t);
+    for (int tries = 0; tries < 100000; tries++) {
+        const uint32_t v = (uint32_t)tl_int(r, 0, np - 1);
+        if (dd_is_vertex(t, v)) return v;
+    }
+    return UINT32_MAX;
+}
+
+/* After the k-th deletion, of v, from t and c: t valid, equal to c, and v
+ * neither a vertex nor hidden; 0 with why filled otherwise.             */
+static inline int ws_deleted_ok(const dd_tri *t, const dd_cgal_rt *c, uint32_t v, uint32_t k, char *why, size_t nwhy)
+{
+    char w2[256];
+    if (!checked(t, w2, sizeof w2) || !same_as_cgal(t, c, w2, sizeof w2)) {
+        snprintf(why, nwhy, "after deleting %u (step %u): %.200s", v, k, w2);
+        return 0;
+    }
+    if (dd_is_vertex(t, v) || dd_is_hidden(t, v)) {
+        snprintf(why, nwhy, "after deleting %u (step %u): still a vertex or hidden", v, k);
+        return 0;
+    }
+    return 1;
+}
+
 /* Snapshot of what a refused edit must not change. */
 typedef struct shot { int32_t *cells; size_t n; uint32_t *hid; size_t nh; uint32_t np, nv; } shot;
 
@@ -182,11 +222,18 @@ static inline void shot_free(shot *s) { free(s->cells), free(s->hid); }
 /* ---- allocation failures (test builds) ---------------------------------------- */
 
 #ifdef DD_TEST_BUILD
-/* A vertex of t (made from s, hidden points kept) whose deletion brings
- * a hidden point back (CGAL says so), or UINT32_MAX.                    */
-static inline uint32_t ws_releasing_vertex(const wset *s, const dd_tri *t)
+/* A vertex v of s's triangulation (hidden points kept) whose deletion
+ * brings a hidden point back (CGAL says so), and in *after CGAL's
+ * triangulation of s with v removed (the caller frees it); UINT32_MAX
+ * and NULL if there is none.                                           */
+static inline uint32_t ws_releasing_vertex(const wset *s, dd_cgal_rt **after)
 {
-    for (uint32_t v = 0; v < s->n; v++) {
+    char msg[256];
+    dd_tri *t = NULL;
+    *after = NULL;
+    if (dd_create_ex(&t, s->p, s->w, s->n, 0, msg, sizeof msg) != DD_OK) return UINT32_MAX;
+    uint32_t found = UINT32_MAX;
+    for (uint32_t v = 0; v < s->n && found == UINT32_MAX; v++) {
         if (!dd_is_vertex(t, v)) continue;
         dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, 0);
         uint32_t *h0 = NULL, *h1 = NULL;
@@ -194,31 +241,38 @@ static inline uint32_t ws_releasing_vertex(const wset *s, const dd_tri *t)
         dd_cgal_rt_hidden(c, &h0, &n0);
         const int r = dd_cgal_rt_remove(c, v);
         dd_cgal_rt_hidden(c, &h1, &n1);
-        dd_cgal_rt_free(c);
         free(h0), free(h1);
-        if (r == 0 && n1 < n0) return v;
+        if (r == 0 && n1 < n0) found = v, *after = c;
+        else dd_cgal_rt_free(c);
     }
-    return UINT32_MAX;
+    dd_free(t);
+    return found;
 }
 
-typedef dd_status (*ws_delete_fn)(dd_tri *t, uint32_t v, const char *variant);
+/* A call whose allocations ws_fault_each refuses in turn: start makes
+ * the triangulation it starts from, run makes it (k: the allocation
+ * refused in this round, for calls that vary with it).                  */
+typedef struct ws_fault_call {
+    dd_tri *(*start)(const void *arg);
+    dd_status (*run)(dd_tri *t, const void *arg, long k);
+    const void *arg;
+} ws_fault_call;
 
-/* Each allocation of the deletion of v from s (hidden points kept) refused
- * in turn, by vars[k % nvars] at the k-th: the refusal must say
- * DD_ERR_NOMEM and change nothing, and the retry must equal c (CGAL after
- * removing v).  Returns the refusals seen.                               */
-static inline long ws_fault_delete(tl_state *st, const char *tn, const wset *s, uint32_t v, const dd_cgal_rt *c,
-                                   ws_delete_fn del, const char *const *vars, size_t nvars)
+/* The k-th allocation of the call refused, for k = 1, 2, ... until the
+ * call makes fewer: each refusal must say DD_ERR_NOMEM and change
+ * nothing, the retry must succeed, and every result must equal c.
+ * Returns the refusals seen; *bad gets the rounds that went wrong (the
+ * first printed on stderr under tn).                                   */
+static inline long ws_fault_each(const char *tn, const ws_fault_call *call, const dd_cgal_rt *c, long *bad)
 {
-    char msg[256], why[256] = "";
-    long nomem = 0, bad = 0;
+    char why[256];
+    long nomem = 0;
+    *bad = 0;
     for (long k = 1; k < 100000; k++) {
-        dd_tri *t = NULL;
-        dd_create_ex(&t, s->p, s->w, s->n, 0, msg, sizeof msg);
+        dd_tri *t = call->start(call->arg);
         shot before = take_shot(t);
-        const char *var = vars[(size_t)k % nvars];
         dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
-        const dd_status ds = del(t, v, var);
+        const dd_status ds = call->run(t, call->arg, k);
         const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
         int ok = 1;
         why[0] = 0;
@@ -226,16 +280,57 @@ static inline long ws_fault_delete(tl_state *st, const char *tn, const wset *s, 
             nomem++;
             ok = unchanged(t, &before) && checked(t, why, sizeof why);
             if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
-            if (ok) ok = del(t, v, var) == DD_OK;
+            if (ok && call->run(t, call->arg, k) != DD_OK)
+                ok = 0, snprintf(why, sizeof why, "allocation %ld: retry failed (%s)", k, dd_errmsg(t));
         } else if (ds != DD_OK) {
-            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s", k, dd_status_name(ds));
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s (%s)", k, dd_status_name(ds), dd_errmsg(t));
         }
         if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
-        if (!ok && !bad++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
+        if (!ok && !(*bad)++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
         shot_free(&before);
         dd_free(t);
-        if (left > 0) break;             /* the deletion made fewer than k */
+        if (left > 0) break;             /* the call made fewer than k */
     }
+    return nomem;
+}
+
+typedef dd_status (*ws_delete_fn)(dd_tri *t, uint32_t v, const char *variant);
+
+/* The deletion of v from s (hidden points kept) as a ws_fault_call. */
+typedef struct ws_fault_del {
+    const wset *s;
+    uint32_t v;
+    ws_delete_fn del;
+    const char *const *vars;
+    size_t nvars;
+} ws_fault_del;
+
+static inline dd_tri *ws_fault_del_start(const void *arg)
+{
+    const ws_fault_del *f = arg;
+    char msg[256];
+    dd_tri *t = NULL;
+    dd_create_ex(&t, f->s->p, f->s->w, f->s->n, 0, msg, sizeof msg);
+    return t;
+}
+
+static inline dd_status ws_fault_del_run(dd_tri *t, const void *arg, long k)
+{
+    const ws_fault_del *f = arg;
+    return f->del(t, f->v, f->vars[(size_t)k % f->nvars]);
+}
+
+/* Each allocation of the deletion of v from s (hidden points kept) refused
+ * in turn, by vars[k % nvars] at the k-th (ws_fault_each); c is CGAL
+ * after removing v.  Checks that some were refused and none went wrong;
+ * returns the refusals seen.                                            */
+static inline long ws_fault_delete(tl_state *st, const char *tn, const wset *s, uint32_t v, const dd_cgal_rt *c,
+                                   ws_delete_fn del, const char *const *vars, size_t nvars)
+{
+    const ws_fault_del f = {s, v, del, vars, nvars};
+    const ws_fault_call call = {ws_fault_del_start, ws_fault_del_run, &f};
+    long bad;
+    const long nomem = ws_fault_each(tn, &call, c, &bad);
     tl_check(st, bad == 0 && nomem > 0, tn, "%ld bad of %ld refusals", bad, nomem);
     return nomem;
 }

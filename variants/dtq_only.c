@@ -13,24 +13,44 @@
 #include "delete/qsmall.h"
 #include "delete/qdt.h"
 
-static dd_status dtq_only_fill(dd_del *d)
+/* The conflict DT's steps under one test (qdt.h): the in-sphere or the
+ * power test.                                                          */
+typedef struct qdt_steps {
+    dd_status (*create)(dd_del *d);
+    dd_status (*scan)(dd_del *d, uint32_t v, uint32_t *cell);
+    dd_status (*insert)(dd_del *d, uint32_t v, uint32_t start);
+} qdt_steps;
+
+static const qdt_steps in_sphere = {dd_qdt_create, dd_qdt_scan, dd_qdt_insert};
+static const qdt_steps power = {dd_qdt_create_power, dd_qdt_scan_power, dd_qdt_insert_power};
+
+/* The conflict DT of d->order.a[0 .. n), its base first: created on the
+ * base, then each later point located by a scan of the dummy cells and
+ * inserted.  Inlined into each fill with its table, so the calls stay
+ * direct (the loop is the variant's timed work).                       */
+__attribute__((always_inline)) static inline dd_status build_by_scan(dd_del *d, const qdt_steps *q, size_t n)
 {
-    dd_status s = DD_OK;
-    dd_del_shuffle(d, d->order.a, d->order.n);
-    s = dd_del_pick_base(d, d->order.a, d->order.n);
-    if (s != DD_OK) return s;
-    if (d->order.n <= DD_QS_MAXV) return dd_qs_fill(d);
     dd_qdt_reset(d, 1);
     DD_PHASE_BEGIN(d);
-    s = dd_qdt_create(d);
+    dd_status s = q->create(d);
     DD_PHASE_END(d, DD_PH_CONFLICT);
-    for (size_t k = 4; k < d->order.n && s == DD_OK; k++) {
+    for (size_t k = 4; k < n && s == DD_OK; k++) {
         uint32_t v = d->order.a[k], c = 0;
-        s = dd_qdt_scan(d, v, &c);
+        s = q->scan(d, v, &c);
         DD_PHASE_END(d, DD_PH_LOCATE);
-        if (s == DD_OK) s = dd_qdt_insert(d, v, c);
+        if (s == DD_OK) s = q->insert(d, v, c);
         DD_PHASE_END(d, DD_PH_CONFLICT);
     }
+    return s;
+}
+
+static dd_status dtq_only_fill(dd_del *d)
+{
+    dd_del_shuffle(d, d->order.a, d->order.n);
+    dd_status s = dd_del_pick_base(d, d->order.a, d->order.n);
+    if (s != DD_OK) return s;
+    if (d->order.n <= DD_QS_MAXV) return dd_qs_fill(d);
+    s = build_by_scan(d, &in_sphere, d->order.n);
     if (s == DD_OK) s = dd_qdt_collect_fill(d);
     return s;
 }
@@ -46,17 +66,7 @@ static dd_status dtq_only_fill_weighted(dd_del *d)
     if (s == DD_ERR_COPLANAR) return dd_full_fill_power(d);
     if (s != DD_OK) return s;
     if (d->order.n <= DD_QS_MAXV) return dd_qs_fill(d);
-    dd_qdt_reset(d, 1);
-    DD_PHASE_BEGIN(d);
-    s = dd_qdt_create_power(d);
-    DD_PHASE_END(d, DD_PH_CONFLICT);
-    for (size_t k = 4; k < nn && s == DD_OK; k++) {
-        uint32_t v = d->order.a[k], c = 0;
-        s = dd_qdt_scan_power(d, v, &c);
-        DD_PHASE_END(d, DD_PH_LOCATE);
-        if (s == DD_OK) s = dd_qdt_insert_power(d, v, c);
-        DD_PHASE_END(d, DD_PH_CONFLICT);
-    }
+    s = build_by_scan(d, &power, nn);
     if (s == DD_OK) s = dd_qdt_insert_hidden(d);
     if (s == DD_OK) s = dd_qdt_collect_fill(d);
     return s;

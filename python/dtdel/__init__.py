@@ -271,9 +271,18 @@ class Triangulation:
             self._check(lib.dd_point(self._h, int(v), _dptr(out[k])), "point(%d)" % v)
         return out
 
+    def _star_count(self, n, call, v):
+        """n, the count a star query answered for vertex v; 0 there means
+        the library ran out of memory (dtdel.h: it has no status to say
+        so, and a vertex has at least 4 neighbours and cells)."""
+        if n == 0:
+            raise MemoryError("%s(%d): out of memory" % (call, v))
+        return n
+
     def degree(self, v):
         """Vertices adjacent to v, the infinite one counted (dd_degree)."""
-        return int(lib.dd_degree(self._h, self._vertex(v)))
+        v = self._vertex(v)
+        return self._star_count(int(lib.dd_degree(self._h, v)), "dd_degree", v)
 
     def on_hull(self, v):
         return bool(lib.dd_on_hull(self._h, self._vertex(v)))
@@ -281,17 +290,18 @@ class Triangulation:
     def neighbors(self, v):
         """v's finite neighbours, as an int64 array (dd_neighbors)."""
         v = self._vertex(v)
-        cap = lib.dd_degree(self._h, v)
+        cap = self.degree(v)
         buf = (c_uint32 * max(cap, 1))()
-        n = lib.dd_neighbors(self._h, v, buf, cap)
+        n = self._star_count(lib.dd_neighbors(self._h, v, buf, cap), "dd_neighbors", v)
         return np.array(buf[:min(n, cap)], dtype=np.int64)
 
     def incident_cells(self, v):
         """The cells around v as an (m, 4) int32 array, -1 infinite."""
         v = self._vertex(v)
-        cap = 2 * lib.dd_degree(self._h, v)        # a link of d vertices has 2d-4 triangles
+        cap = 2 * self.degree(v)        # a link of d vertices has 2d-4 triangles
         buf = np.zeros((max(cap, 1), 4), dtype=np.int32)
         n = lib.dd_incident_cells(self._h, v, buf.ctypes.data_as(ctypes.POINTER(c_int32)), cap)
+        n = self._star_count(n, "dd_incident_cells", v)
         return buf[:min(n, cap)].copy()
 
     # ---- edits ---------------------------------------------------------------
