@@ -248,6 +248,54 @@ static void refusals_case(tl_state *st)
     ws_free(&s);
 }
 
+/* Exact copies of a hidden point (issue 44): the cube's corners, its
+ * centre with weight 1, then copies of the centre with weight 0 inserted
+ * (all hidden).  Deleting the centre releases them: CGAL's remove makes
+ * the first copy a vertex and keeps nothing of the others (its insert of
+ * a vertex's exact weighted point); the shim names the vertex by the
+ * lowest index.  Every strategy, both modes, 2 and 3 copies.            */
+static void copies_case(tl_state *st)
+{
+    static const char *const vars[] = {NULL, "gift-wrap", "sew-full"};
+    for (int keep = 0; keep < 2; keep++)
+        for (uint32_t ncopy = 2; ncopy <= 3; ncopy++)
+            for (size_t vi = 0; vi < sizeof vars / sizeof *vars; vi++) {
+                char tn[160], why[256] = "", msg[256];
+                snprintf(tn, sizeof tn, "copies/%u/%s/%s", ncopy, vars[vi] ? vars[vi] : "default",
+                         keep ? "keep" : "discard");
+                wset s = {0};
+                for (int k = 0; k < 8; k++) ws_add(&s, k & 1, (k >> 1) & 1, (k >> 2) & 1, 0);
+                ws_add(&s, 0.5, 0.5, 0.5, 1);
+                dd_tri *t = NULL;
+                dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+                int ok = c && dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+                if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+                const double mid[3] = {0.5, 0.5, 0.5};
+                for (uint32_t k = 0; k < ncopy && ok; k++) {
+                    uint32_t idx = 0;
+                    ok = dd_insert_weighted(t, mid, 0, &idx) == DD_OK && idx == 9 + k &&
+                         dd_cgal_rt_insert(c, mid, 0, 9 + k) == 0;
+                    if (!ok) snprintf(why, sizeof why, "inserting copy %u: %s", k, dd_errmsg(t));
+                }
+                if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+                if (ok) {
+                    const dd_status ds = vars[vi] ? dd_delete_with(t, 8, vars[vi]) : dd_delete(t, 8);
+                    const int cr = dd_cgal_rt_remove(c, 8);
+                    ok = ds == DD_OK && cr == 0;
+                    if (!ok) snprintf(why, sizeof why, "deleting 8: %s (%s); CGAL %d", dd_status_name(ds), dd_errmsg(t), cr);
+                }
+                if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(t, 9) && !dd_is_hidden(t, 10) && !dd_is_vertex(t, 10);
+                    if (!ok) snprintf(why, sizeof why, "9 should be the vertex, 10 forgotten");
+                }
+                tl_check(st, ok, tn, "%s", why);
+                dd_free(t);
+                dd_cgal_rt_free(c);
+                ws_free(&s);
+            }
+}
+
 /* ---- allocation failures ---------------------------------------------------------- */
 
 #ifdef DD_TEST_BUILD
@@ -359,6 +407,7 @@ int main(int argc, char **argv)
     ws_free(&s);
     power_bound_case(&st);
     refusals_case(&st);
+    copies_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);
 #endif
