@@ -256,7 +256,8 @@ static void refusals_case(tl_state *st)
  * lowest index.  Every strategy, both modes, 2 and 3 copies.            */
 static void copies_case(tl_state *st)
 {
-    static const char *const vars[] = {NULL, "gift-wrap", "sew-full"};
+    static const char *const vars[] = {NULL, "gift-wrap", "sew-full", "grr-edge", "grr-neighbor", "grr-hashing",
+                                        "grr-brio", "guide-only", "dtq-only"};
     for (int keep = 0; keep < 2; keep++)
         for (uint32_t ncopy = 2; ncopy <= 3; ncopy++)
             for (size_t vi = 0; vi < sizeof vars / sizeof *vars; vi++) {

@@ -33,7 +33,8 @@
  * Invariants (dd_hidden_check proves them): a dead cell's list is empty;
  * a cell at or past ncap has an empty list; cell[v] == c iff v is on c's
  * list, and then v is no vertex, its point is in the closure of the
- * finite cell c, and (p, w) is not in conflict with c: hidden.
+ * finite cell c, and (p, w) is not in conflict with c: hidden; and no
+ * vertex carries v's weighted point exactly (CGAL keeps no such copy).
  */
 #ifndef DD_HIDDEN_H
 #define DD_HIDDEN_H
