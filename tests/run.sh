@@ -49,7 +49,7 @@ JOB
 }
 
 # The slowest programs first, so that no long one starts last.
-slow="test_delete test_link test_range test_contract test_move"
+slow="test_delete test_wgrr test_range test_wdelete test_regular test_link test_contract test_move"
 for s in $slow; do
     [ -x "$ASAN/tests/$s" ] && job "asan $s" "$ASAN/tests/$s" small
     [ -x "$REL/tests/$s" ] && job "release $s" "$REL/tests/$s"

@@ -300,32 +300,15 @@ static void copies_case(tl_state *st)
 /* ---- allocation failures ---------------------------------------------------------- */
 
 #ifdef DD_TEST_BUILD
-/* A vertex of t whose deletion brings a hidden point back (CGAL says so),
- * or UINT32_MAX.                                                         */
-static uint32_t releasing_vertex(const wset *s, const dd_tri *t)
-{
-    for (uint32_t v = 0; v < s->n; v++) {
-        if (!dd_is_vertex(t, v)) continue;
-        dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, 0);
-        uint32_t *h0 = NULL, *h1 = NULL;
-        size_t n0 = 0, n1 = 0;
-        dd_cgal_rt_hidden(c, &h0, &n0);
-        const int r = dd_cgal_rt_remove(c, v);
-        dd_cgal_rt_hidden(c, &h1, &n1);
-        dd_cgal_rt_free(c);
-        free(h0), free(h1);
-        if (r == 0 && n1 < n0) return v;
-    }
-    return UINT32_MAX;
-}
+static dd_status delete_with(dd_tri *t, uint32_t v, const char *variant) { return dd_delete_with(t, v, variant); }
 
 static void fault_case(tl_state *st)
 {
     wset s = gen_uniform(small ? 80 : 150, 3, 21);
-    char msg[256], why[256] = "";
+    char msg[256];
     dd_tri *t = NULL;
     dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
-    const uint32_t v = releasing_vertex(&s, t);
+    const uint32_t v = ws_releasing_vertex(&s, t);
     dd_free(t);
     if (v == UINT32_MAX) {
         tl_check(st, 0, "fault/weighted-delete", "no vertex releases a hidden point");
@@ -334,31 +317,8 @@ static void fault_case(tl_state *st)
     }
     dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
     dd_cgal_rt_remove(c, v);
-    long nomem = 0, bad = 0;
-    for (long k = 1; k < 100000; k++) {
-        t = NULL;
-        dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
-        shot before = take_shot(t);
-        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
-        static const char *const fvar[3] = {"sew-full", NULL, "gift-wrap"};   /* NULL: auto, the wrap */
-        const dd_status ds = dd_delete_with(t, v, fvar[k % 3]);
-        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
-        int ok = 1;
-        if (ds == DD_ERR_NOMEM) {
-            nomem++;
-            ok = unchanged(t, &before) && checked(t, why, sizeof why);
-            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
-            if (ok) ok = dd_delete(t, v) == DD_OK;
-        } else if (ds != DD_OK) {
-            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s", k, dd_status_name(ds));
-        }
-        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
-        if (!ok && !bad++) fprintf(stderr, "  fault: allocation %ld: %s\n", k, why);
-        shot_free(&before);
-        dd_free(t);
-        if (left > 0) break;             /* the deletion made fewer than k */
-    }
-    tl_check(st, bad == 0 && nomem > 0, "fault/weighted-delete", "%ld bad of %ld refusals", bad, nomem);
+    static const char *const fvar[3] = {"sew-full", NULL, "gift-wrap"};   /* NULL: auto, the wrap */
+    const long nomem = ws_fault_delete(st, "fault/weighted-delete", &s, v, c, delete_with, fvar, 3);
     fprintf(stderr, "  fault/weighted-delete: %ld allocations refused in turn\n", nomem);
     dd_cgal_rt_free(c);
     ws_free(&s);

@@ -165,64 +165,13 @@ static void zero_case(tl_state *st, const char *name, const wset *s0, uint32_t n
 /* ---- allocation failures ---------------------------------------------------------- */
 
 #ifdef DD_TEST_BUILD
-/* A vertex of t whose deletion brings a hidden point back (CGAL says so),
- * or UINT32_MAX.                                                         */
-static uint32_t releasing_vertex(const wset *s, const dd_tri *t)
-{
-    for (uint32_t v = 0; v < s->n; v++) {
-        if (!dd_is_vertex(t, v)) continue;
-        dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, 0);
-        uint32_t *h0 = NULL, *h1 = NULL;
-        size_t n0 = 0, n1 = 0;
-        dd_cgal_rt_hidden(c, &h0, &n0);
-        const int r = dd_cgal_rt_remove(c, v);
-        dd_cgal_rt_hidden(c, &h1, &n1);
-        dd_cgal_rt_free(c);
-        free(h0), free(h1);
-        if (r == 0 && n1 < n0) return v;
-    }
-    return UINT32_MAX;
-}
-
-/* Each allocation of the deletion of v by `variant` refused in turn. */
-static void fault_one(tl_state *st, const wset *s, uint32_t v, const dd_cgal_rt *c, const char *variant)
-{
-    char msg[256], why[256] = "", tn[160];
-    snprintf(tn, sizeof tn, "wgrr/fault/%s", variant);
-    long nomem = 0, bad = 0;
-    for (long k = 1; k < 100000; k++) {
-        dd_tri *t = NULL;
-        dd_create_ex(&t, s->p, s->w, s->n, 0, msg, sizeof msg);
-        shot before = take_shot(t);
-        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
-        const dd_status ds = delete_by(t, v, variant);
-        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
-        int ok = 1;
-        why[0] = 0;
-        if (ds == DD_ERR_NOMEM) {
-            nomem++;
-            ok = unchanged(t, &before) && checked(t, why, sizeof why);
-            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
-            if (ok) ok = delete_by(t, v, variant) == DD_OK;
-        } else if (ds != DD_OK) {
-            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s", k, dd_status_name(ds));
-        }
-        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
-        if (!ok && !bad++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
-        shot_free(&before);
-        dd_free(t);
-        if (left > 0) break;             /* the deletion made fewer than k */
-    }
-    tl_check(st, bad == 0 && nomem > 0, tn, "%ld bad of %ld refusals", bad, nomem);
-}
-
 static void fault_case(tl_state *st)
 {
     wset s = gen_uniform(small ? 80 : 150, 3, 21);
     char msg[256];
     dd_tri *t = NULL;
     dd_create_ex(&t, s.p, s.w, s.n, 0, msg, sizeof msg);
-    const uint32_t v = releasing_vertex(&s, t);
+    const uint32_t v = ws_releasing_vertex(&s, t);
     dd_free(t);
     if (v == UINT32_MAX) {
         tl_check(st, 0, "wgrr/fault", "no vertex releases a hidden point");
@@ -231,7 +180,11 @@ static void fault_case(tl_state *st)
     }
     dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, 0);
     dd_cgal_rt_remove(c, v);
-    for (size_t k = 0; k < NSTRAT; k++) fault_one(st, &s, v, c, strategies[k]);
+    for (size_t k = 0; k < NSTRAT; k++) {
+        char tn[160];
+        snprintf(tn, sizeof tn, "wgrr/fault/%s", strategies[k]);
+        ws_fault_delete(st, tn, &s, v, c, delete_by, &strategies[k], 1);
+    }
     dd_cgal_rt_free(c);
     ws_free(&s);
 }

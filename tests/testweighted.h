@@ -179,4 +179,66 @@ static inline int unchanged(const dd_tri *t, const shot *s)
 
 static inline void shot_free(shot *s) { free(s->cells), free(s->hid); }
 
+/* ---- allocation failures (test builds) ---------------------------------------- */
+
+#ifdef DD_TEST_BUILD
+/* A vertex of t (made from s, hidden points kept) whose deletion brings
+ * a hidden point back (CGAL says so), or UINT32_MAX.                    */
+static inline uint32_t ws_releasing_vertex(const wset *s, const dd_tri *t)
+{
+    for (uint32_t v = 0; v < s->n; v++) {
+        if (!dd_is_vertex(t, v)) continue;
+        dd_cgal_rt *c = dd_cgal_rt_build(s->p, s->w, s->n, 0);
+        uint32_t *h0 = NULL, *h1 = NULL;
+        size_t n0 = 0, n1 = 0;
+        dd_cgal_rt_hidden(c, &h0, &n0);
+        const int r = dd_cgal_rt_remove(c, v);
+        dd_cgal_rt_hidden(c, &h1, &n1);
+        dd_cgal_rt_free(c);
+        free(h0), free(h1);
+        if (r == 0 && n1 < n0) return v;
+    }
+    return UINT32_MAX;
+}
+
+typedef dd_status (*ws_delete_fn)(dd_tri *t, uint32_t v, const char *variant);
+
+/* Each allocation of the deletion of v from s (hidden points kept) refused
+ * in turn, by vars[k % nvars] at the k-th: the refusal must say
+ * DD_ERR_NOMEM and change nothing, and the retry must equal c (CGAL after
+ * removing v).  Returns the refusals seen.                               */
+static inline long ws_fault_delete(tl_state *st, const char *tn, const wset *s, uint32_t v, const dd_cgal_rt *c,
+                                   ws_delete_fn del, const char *const *vars, size_t nvars)
+{
+    char msg[256], why[256] = "";
+    long nomem = 0, bad = 0;
+    for (long k = 1; k < 100000; k++) {
+        dd_tri *t = NULL;
+        dd_create_ex(&t, s->p, s->w, s->n, 0, msg, sizeof msg);
+        shot before = take_shot(t);
+        const char *var = vars[(size_t)k % nvars];
+        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+        const dd_status ds = del(t, v, var);
+        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+        int ok = 1;
+        why[0] = 0;
+        if (ds == DD_ERR_NOMEM) {
+            nomem++;
+            ok = unchanged(t, &before) && checked(t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
+            if (ok) ok = del(t, v, var) == DD_OK;
+        } else if (ds != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s", k, dd_status_name(ds));
+        }
+        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        if (!ok && !bad++) fprintf(stderr, "  %s: allocation %ld: %s\n", tn, k, why);
+        shot_free(&before);
+        dd_free(t);
+        if (left > 0) break;             /* the deletion made fewer than k */
+    }
+    tl_check(st, bad == 0 && nomem > 0, tn, "%ld bad of %ld refusals", bad, nomem);
+    return nomem;
+}
+#endif
+
 #endif

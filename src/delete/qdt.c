@@ -25,9 +25,11 @@ void dd_qdt_reset(dd_del *d, int qd)
 }
 
 /* CREATEQCONFLICTDT: DT of the four base points, then the cells not in
- * conflict with q are replaced by the star of the dummy vertex: exactly a
- * Bowyer-Watson step whose "conflict region" is the complement.           */
-dd_status dd_qdt_create(dd_del *d)
+ * conflict with q (weighted: in power conflict with (q, w_q)) are replaced
+ * by the star of the dummy vertex: exactly a Bowyer-Watson step whose
+ * "conflict region" is the complement.  A handful of cells, so a test per
+ * cell may choose the predicate.                                          */
+static dd_status create(dd_del *d, int weighted)
 {
     dd_tri *x = d->qdt;
     dd_status s = dd_reserve_cells(x, 16);
@@ -38,7 +40,7 @@ dd_status dd_qdt_create(dd_del *d)
     dd_mark ep = dd_new_epoch(x, 2);
     x->conflict.n = x->boundary.n = 0;
     for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
-        if (!dd_cell_conflict(x, c, d->qp)) {
+        if (!(weighted ? dd_qdt_power_conflict(d, c, d->qp, d->qw) : dd_cell_conflict(x, c, d->qp))) {
             x->stamp[c] = ep;
             s = dd_vec_push(&x->conflict, c);
         }
@@ -53,6 +55,8 @@ dd_status dd_qdt_create(dd_del *d)
     dd_fill_star(x, DD_QD);
     return DD_OK;
 }
+
+dd_status dd_qdt_create(dd_del *d) { return create(d, 0); }
 
 /* QCONFLICTDTINSERT */
 dd_status dd_qdt_insert(dd_del *d, uint32_t v, uint32_t start)
@@ -200,32 +204,7 @@ dd_status dd_qdt_weighted_base(dd_del *d)
     return dd_del_pick_base(d, d->order.a, d->nbr.n);
 }
 
-dd_status dd_qdt_create_power(dd_del *d)
-{
-    dd_tri *x = d->qdt;
-    dd_status s = dd_reserve_cells(x, 16);
-    if (s != DD_OK) return s;
-    uint32_t b[4];
-    memcpy(b, d->base, sizeof b);
-    dd_make_first_cells(x, b);
-    dd_mark ep = dd_new_epoch(x, 2);
-    x->conflict.n = x->boundary.n = 0;
-    for (uint32_t c = 0; c < x->ncell && s == DD_OK; c++)
-        if (!dd_qdt_power_conflict(d, c, d->qp, d->qw)) {
-            x->stamp[c] = ep;
-            s = dd_vec_push(&x->conflict, c);
-        }
-    for (size_t k = 0; k < x->conflict.n && s == DD_OK; k++) {
-        uint32_t c = x->conflict.a[k];
-        for (uint32_t i = 0; i < 4 && s == DD_OK; i++)
-            if (x->stamp[dd_tn(x, c)[i] >> 2] != ep)
-                s = dd_vec_push(&x->boundary, 4 * c + i);
-    }
-    if (s == DD_OK) s = dd_reserve_star(x);
-    if (s != DD_OK) return s;
-    dd_fill_star(x, DD_QD);
-    return DD_OK;
-}
+dd_status dd_qdt_create_power(dd_del *d) { return create(d, 1); }
 
 /* The conflict region of (p, wp) from c0 (in conflict), as mesh.c's
  * search: region cells stamped ep in x->conflict, boundary facets in
