@@ -102,13 +102,17 @@ static int cgal_delete(dd_cgal_rt *c, uint32_t i)
  * 9's weighted point (hidden too).  Then 8 moved off the centre (a
  * removal that makes 9 a vertex and forgets 10, as CGAL's remove) and
  * back near it (9 hidden again, 10 still gone), or 8 deleted as a set
- * with corner 0.  Both modes, each step equal to CGAL.                  */
+ * with corner 0, or 8 moved onto corner 0's weighted point: refused by
+ * both with nothing changed (9 and 10 still hidden; the engine's move
+ * must refuse before deleting 8, whose deletion would forget 10 for
+ * good).  Both modes, each step equal to CGAL.                           */
 static void copies_case(tl_state *st)
 {
     for (int keep = 0; keep < 2; keep++)
-        for (int how = 0; how < 2; how++) {
+        for (int how = 0; how < 3; how++) {
             char tn[128], why[256] = "";
-            snprintf(tn, sizeof tn, "copies/%s/%s", how ? "set" : "move", keep ? "keep" : "discard");
+            snprintf(tn, sizeof tn, "copies/%s/%s", how == 2 ? "refused" : how ? "set" : "move",
+                     keep ? "keep" : "discard");
             wset s = {0};
             for (int k = 0; k < 8; k++) ws_add(&s, k & 1, (k >> 1) & 1, (k >> 2) & 1, 0);
             ws_add(&s, 0.5, 0.5, 0.5, 0.1);
@@ -132,6 +136,17 @@ static void copies_case(tl_state *st)
                 if (ok && keep) {
                     ok = dd_is_hidden(pr.t, 9) && !present(pr.t, 10);
                     if (!ok) snprintf(why, sizeof why, "9 should be hidden again, 10 forgotten (9: v%d h%d, 10: v%d h%d)", dd_is_vertex(pr.t, 9), dd_is_hidden(pr.t, 9), dd_is_vertex(pr.t, 10), dd_is_hidden(pr.t, 10));
+                }
+            } else if (ok && how == 2) {
+                const double corner[3] = {0, 0, 0};
+                const dd_status ds = dd_move_weighted(pr.t, 8, corner, 0);
+                const int rc = dd_cgal_rt_move(pr.c, 8, corner, 0);
+                ok = ds == DD_ERR_DUPLICATE && rc == 2;
+                if (!ok) snprintf(why, sizeof why, "moving 8 onto 0: engine %s, CGAL %d", dd_status_name(ds), rc);
+                if (ok) ok = agree(&pr, "8 onto 0 refused", why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(pr.t, 8) && dd_is_hidden(pr.t, 9) && dd_is_hidden(pr.t, 10);
+                    if (!ok) snprintf(why, sizeof why, "8 should be a vertex, 9 and 10 hidden");
                 }
             } else if (ok) {
                 const uint32_t vs[2] = {0, 8};
