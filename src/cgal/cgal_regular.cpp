@@ -82,6 +82,9 @@ struct Any_rt {
     virtual void vertices(std::vector<uint32_t> &out) const = 0;
     /* 0 done (vertex, hidden or forgotten), 2 exact duplicate of a vertex. */
     virtual int insert(const Wpoint &p, uint32_t index) = 0;
+    /* As insert, the walk from the finite cell whose vertices' indices
+     * are cell[0..4) (any order); 1 when there is none.                 */
+    virtual int insert_in(const Wpoint &p, uint32_t index, const uint32_t cell[4]) = 0;
 };
 
 inline Key key_of(const Wpoint &p)
@@ -135,11 +138,28 @@ struct Rt_of : public Any_rt {
             out.push_back(it->info());
     }
 
-    int insert(const Wpoint &p, uint32_t index) override
+    int insert(const Wpoint &p, uint32_t index) override { return insert_from(p, index, hint->cell()); }
+
+    int insert_in(const Wpoint &p, uint32_t index, const uint32_t cell[4]) override
+    {
+        std::array<uint32_t, 4> want = {{cell[0], cell[1], cell[2], cell[3]}};
+        std::sort(want.begin(), want.end());
+        for (typename T::Finite_cells_iterator it = rt.finite_cells_begin(); it != rt.finite_cells_end(); ++it) {
+            std::array<uint32_t, 4> have;
+            for (int k = 0; k < 4; k++) have[static_cast<std::size_t>(k)] = it->vertex(k)->info();
+            std::sort(have.begin(), have.end());
+            if (have == want) return insert_from(p, index, it);
+        }
+        return 1;
+    }
+
+    /* CGAL's insert of p walking from cell `start` (its locate, then the
+     * insert at that location: what insert(p, start) does).            */
+    int insert_from(const Wpoint &p, uint32_t index, typename T::Cell_handle start)
     {
         typename T::Locate_type lt;
         int li, lj;
-        const typename T::Cell_handle c = rt.locate(p, lt, li, lj, hint->cell());
+        const typename T::Cell_handle c = rt.locate(p, lt, li, lj, start);
         /* Weighted_point_3's == compares the bare points only; CGAL's
          * insert returns the vertex when the weights are equal too.    */
         if (lt == T::VERTEX && c->vertex(li)->point().point() == p.point() &&
@@ -306,6 +326,27 @@ int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index
         std::vector<uint32_t> &idx = c->keys[k];
         idx.reserve(idx.size() + 1);      /* nothing can throw after insert */
         const int r = c->rt->insert(weighted_point(p, w), index);
+        if (r == 0) {
+            idx.push_back(index);
+            c->ninput++;
+        } else if (idx.empty()) {
+            c->keys.erase(k);
+        }
+        return r;
+    } catch (...) {
+        return 1;
+    }
+}
+
+int dd_cgal_rt_insert_in(dd_cgal_rt *c, const double p[3], double w, uint32_t index, const uint32_t cell[4])
+{
+    if (c == NULL || p == NULL || cell == NULL || index != c->ninput || index == UINT32_MAX || !finite_point(p, w))
+        return 1;
+    try {
+        const Key k = {{p[0], p[1], p[2], w}};
+        std::vector<uint32_t> &idx = c->keys[k];
+        idx.reserve(idx.size() + 1);      /* nothing can throw after insert */
+        const int r = c->rt->insert_in(weighted_point(p, w), index, cell);
         if (r == 0) {
             idx.push_back(index);
             c->ninput++;
