@@ -137,11 +137,36 @@ static dd_status move_hidden(dd_tri *t, uint32_t v, const double p[3], double w)
     return DD_OK;
 }
 
+/* The vertex other than v whose weighted point is exactly (p, w), or
+ * DD_NONE: a vertex's position lies in a cell's closure only as one of
+ * its corners, so the cell a walk from v's star finds for p tells.  A
+ * walk that does not end answers DD_NONE (the insertion reports it).  */
+static uint32_t vertex_with(dd_tri *t, uint32_t v, const double p[3], double w)
+{
+    uint32_t c;
+    if (dd_walk_locate(t, p, t->vcell[v], &c) != DD_OK || dd_is_outer_cell(t, c)) return DD_NONE;
+    for (int k = 0; k < 4; k++) {
+        const uint32_t u = dd_tv(t, c)[k];
+        const double *x = dd_pt(t, u);
+        if (u != v && x[0] == p[0] && x[1] == p[1] && x[2] == p[2] && t->wt[u] == w) return u;
+    }
+    return DD_NONE;
+}
+
 /* Course 2 of a weighted move (see the top): v deleted, then inserted at
- * (p, w); a failure of the insertion puts v back.                      */
+ * (p, w); a failure of the insertion puts v back.  Onto another vertex's
+ * weighted point it is refused before the deletion, as the reference
+ * refuses it with nothing changed: deleting first would forget for good
+ * the exact copies of the points the deletion releases (delete.c).  Onto
+ * a point the deletion itself releases, the insertion is refused after
+ * it, as CGAL's remove() then insert() are, and v is put back.          */
 static dd_status move_by_removal(dd_tri *t, uint32_t v, const double p[3], double w)
 {
     const double old[3] = {dd_pt(t, v)[0], dd_pt(t, v)[1], dd_pt(t, v)[2]}, wold = t->wt[v];
+    const uint32_t dup = vertex_with(t, v, p, w);
+    if (dup != DD_NONE)
+        return dd_fail(t, DD_ERR_DUPLICATE, "moving point %u: the new weighted point is point %u's", t->v2in[v],
+                       t->v2in[dup]);
     dd_status s = dd_del_vertex(t, v, dd_variant_table[0]);
     if (s == DD_ERR_DIMENSION)
         return dd_fail(t, s, "moving point %u: removing it first would leave fewer than 4 or only coplanar points",

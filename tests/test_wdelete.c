@@ -230,6 +230,126 @@ static void refusals_case(tl_state *st)
     ws_free(&s);
 }
 
+/* Exact copies of a hidden point (issue 44): the cube's corners, its
+ * centre with weight 1, then copies of the centre with weight 0 inserted
+ * (all hidden).  Deleting the centre releases them: CGAL's remove makes
+ * the first copy a vertex and keeps nothing of the others (its insert of
+ * a vertex's exact weighted point); the shim names the vertex by the
+ * lowest index.  Every strategy, both modes, 2 and 3 copies.            */
+static void copies_case(tl_state *st)
+{
+    static const char *const vars[] = {NULL, "gift-wrap", "sew-full", "grr-edge", "grr-neighbor", "grr-hashing",
+                                        "grr-brio", "guide-only", "dtq-only"};
+    for (int keep = 0; keep < 2; keep++)
+        for (uint32_t ncopy = 2; ncopy <= 3; ncopy++)
+            for (size_t vi = 0; vi < sizeof vars / sizeof *vars; vi++) {
+                char tn[160], why[256] = "", msg[256];
+                snprintf(tn, sizeof tn, "copies/%u/%s/%s", ncopy, vars[vi] ? vars[vi] : "default",
+                         keep ? "keep" : "discard");
+                wset s = {0};
+                for (int k = 0; k < 8; k++) ws_add(&s, k & 1, (k >> 1) & 1, (k >> 2) & 1, 0);
+                ws_add(&s, 0.5, 0.5, 0.5, 1);
+                dd_tri *t = NULL;
+                dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+                int ok = c && dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+                if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+                const double mid[3] = {0.5, 0.5, 0.5};
+                for (uint32_t k = 0; k < ncopy && ok; k++) {
+                    uint32_t idx = 0;
+                    ok = dd_insert_weighted(t, mid, 0, &idx) == DD_OK && idx == 9 + k &&
+                         dd_cgal_rt_insert(c, mid, 0, 9 + k) == 0;
+                    if (!ok) snprintf(why, sizeof why, "inserting copy %u: %s", k, dd_errmsg(t));
+                }
+                if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+                if (ok) {
+                    const dd_status ds = vars[vi] ? dd_delete_with(t, 8, vars[vi]) : dd_delete(t, 8);
+                    const int cr = dd_cgal_rt_remove(c, 8);
+                    ok = ds == DD_OK && cr == 0;
+                    if (!ok) snprintf(why, sizeof why, "deleting 8: %s (%s); CGAL %d", dd_status_name(ds), dd_errmsg(t), cr);
+                }
+                if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(t, 9) && !dd_is_hidden(t, 10) && !dd_is_vertex(t, 10);
+                    if (!ok) snprintf(why, sizeof why, "9 should be the vertex, 10 forgotten");
+                }
+                tl_check(st, ok, tn, "%s", why);
+                dd_free(t);
+                dd_cgal_rt_free(c);
+                ws_free(&s);
+            }
+}
+
+/* Exact copies of a hidden point on a facet shared by two cells (issue
+ * 44): A (0,0,0; 3), B, C on z = 0, D (1,1,3) and E (1,1,-3) make the
+ * cells ABCD and ABCE, four far points around; 9 and 10 are copies of
+ * (1,1,0; -5), on facet ABC, hidden.  CGAL keeps a hidden point in the
+ * first cell of its closure its walk from the hint enters:
+ * dd_cgal_rt_insert_in starts the walk in ABCD for one copy and in ABCE
+ * for the other (in both orders), so CGAL keeps them in different cells,
+ * the engine wherever its own walk ends.  The result must not depend on
+ * it: deleting A (both cells in its star) makes 9 a vertex and forgets
+ * 10; deleting D (ABC on its link) keeps both hidden, then deleting A
+ * releases 9; deleting D then E keeps both.  Every strategy, both modes,
+ * each step equal to CGAL.                                              */
+static void shared_facet_case(tl_state *st)
+{
+    static const char *const vars[] = {NULL, "gift-wrap", "sew-full", "grr-edge", "grr-neighbor", "grr-hashing",
+                                        "grr-brio", "guide-only", "dtq-only"};
+    static const uint32_t seqs[3][3] = {{0, UINT32_MAX}, {3, 0, UINT32_MAX}, {3, 4, UINT32_MAX}};
+    static const char *const seqname[3] = {"A", "D-A", "D-E"};
+    static const double pts[9][4] = {{0, 0, 0, 3},     {4, 0, 0, 0},     {0, 4, 0, 0},
+                                     {1, 1, 3, 0},     {1, 1, -3, 0},    {-20, -20, -20, 0},
+                                     {40, -20, -20, 0}, {-20, 40, -20, 0}, {0, 0, 40, 0}};
+    static const uint32_t abcd[4] = {0, 1, 2, 3}, abce[4] = {0, 1, 2, 4};
+    for (int keep = 0; keep < 2; keep++)
+        for (int order = 0; order < 2; order++)
+            for (int q = 0; q < 3; q++)
+                for (size_t vi = 0; vi < sizeof vars / sizeof *vars; vi++) {
+                    char tn[160], why[256] = "", msg[256];
+                    snprintf(tn, sizeof tn, "shared-facet/%s/%s/%s/%s", order ? "E-first" : "D-first", seqname[q],
+                             vars[vi] ? vars[vi] : "default", keep ? "keep" : "discard");
+                    wset s = {0};
+                    for (int k = 0; k < 9; k++) ws_add(&s, pts[k][0], pts[k][1], pts[k][2], pts[k][3]);
+                    dd_tri *t = NULL;
+                    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+                    int ok = c && dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+                    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+                    const double mid[3] = {1, 1, 0};
+                    for (uint32_t k = 0; k < 2 && ok; k++) {
+                        uint32_t idx = 0;
+                        ok = dd_insert_weighted(t, mid, -5, &idx) == DD_OK && idx == 9 + k &&
+                             dd_cgal_rt_insert_in(c, mid, -5, 9 + k, (k ^ (uint32_t)order) ? abce : abcd) == 0;
+                        if (!ok) snprintf(why, sizeof why, "inserting copy %u: %s", k, dd_errmsg(t));
+                    }
+                    if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+                    if (ok && keep) {
+                        ok = dd_is_hidden(t, 9) && dd_is_hidden(t, 10);
+                        if (!ok) snprintf(why, sizeof why, "9 and 10 should be hidden");
+                    }
+                    for (int k = 0; ok && seqs[q][k] != UINT32_MAX; k++) {
+                        const uint32_t v = seqs[q][k];
+                        const dd_status ds = vars[vi] ? dd_delete_with(t, v, vars[vi]) : dd_delete(t, v);
+                        const int cr = dd_cgal_rt_remove(c, v);
+                        ok = ds == DD_OK && cr == 0;
+                        if (!ok)
+                            snprintf(why, sizeof why, "deleting %u: %s (%s); CGAL %d", v, dd_status_name(ds), dd_errmsg(t), cr);
+                        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+                    }
+                    if (ok && keep) {
+                        const int released = q < 2;
+                        ok = released ? dd_is_vertex(t, 9) && !dd_is_hidden(t, 10) && !dd_is_vertex(t, 10)
+                                      : dd_is_hidden(t, 9) && dd_is_hidden(t, 10);
+                        if (!ok)
+                            snprintf(why, sizeof why, "%s", released ? "9 should be the vertex, 10 forgotten"
+                                                                     : "9 and 10 should stay hidden");
+                    }
+                    tl_check(st, ok, tn, "%s", why);
+                    dd_free(t);
+                    dd_cgal_rt_free(c);
+                    ws_free(&s);
+                }
+}
+
 /* ---- allocation failures ---------------------------------------------------------- */
 
 #ifdef DD_TEST_BUILD
@@ -296,6 +416,8 @@ int main(int argc, char **argv)
     ws_free(&s);
     power_bound_case(&st);
     refusals_case(&st);
+    copies_case(&st);
+    shared_facet_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);
 #endif

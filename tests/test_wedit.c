@@ -91,6 +91,74 @@ static int cgal_delete(dd_cgal_rt *c, uint32_t i)
     return r == 1 ? dd_cgal_rt_forget(c, i) : r;
 }
 
+/* Exact copies of a hidden point made by a move (issue 44): the cube's
+ * corners, its centre with weight 0.1 (8) and 0 (9, hidden), 10 moved onto
+ * 9's weighted point (hidden too).  Then 8 moved off the centre (a
+ * removal that makes 9 a vertex and forgets 10, as CGAL's remove) and
+ * back near it (9 hidden again, 10 still gone), or 8 deleted as a set
+ * with corner 0, or 8 moved onto corner 0's weighted point: refused by
+ * both with nothing changed (9 and 10 still hidden; the engine's move
+ * must refuse before deleting 8, whose deletion would forget 10 for
+ * good).  Both modes, each step equal to CGAL.                           */
+static void copies_case(tl_state *st)
+{
+    for (int keep = 0; keep < 2; keep++)
+        for (int how = 0; how < 3; how++) {
+            char tn[128], why[256] = "";
+            snprintf(tn, sizeof tn, "copies/%s/%s", how == 2 ? "refused" : how ? "set" : "move",
+                     keep ? "keep" : "discard");
+            wset s = {0};
+            for (int k = 0; k < 8; k++) ws_add(&s, k & 1, (k >> 1) & 1, (k >> 2) & 1, 0);
+            ws_add(&s, 0.5, 0.5, 0.5, 0.1);
+            ws_add(&s, 0.5, 0.5, 0.5, 0);
+            ws_add(&s, 0.2, 0.25, 0.3, 0);
+            ws_add(&s, 0.75, 0.7, 0.65, 0);
+            pair pr;
+            int ok = pair_make(&pr, &s, keep, why, sizeof why);
+            const double mid[3] = {0.5, 0.5, 0.5}, off[3] = {0.5, 0.5, 0.51};
+            if (ok) {
+                const dd_status ds = dd_move_weighted(pr.t, 10, mid, 0);
+                ok = ds == DD_OK && dd_cgal_rt_move(pr.c, 10, mid, 0) == 0;
+                if (!ok) snprintf(why, sizeof why, "moving 10: %s", dd_errmsg(pr.t));
+                if (ok) ok = agree(&pr, "10 onto 9", why, sizeof why);
+            }
+            if (ok && how == 0) {
+                const dd_status ds = dd_move_weighted(pr.t, 8, off, 0.1);
+                ok = ds == DD_OK && dd_cgal_rt_move(pr.c, 8, off, 0.1) == 0;
+                if (!ok) snprintf(why, sizeof why, "moving 8: %s", dd_errmsg(pr.t));
+                if (ok) ok = agree(&pr, "8 moved", why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_hidden(pr.t, 9) && !present(pr.t, 10);
+                    if (!ok) snprintf(why, sizeof why, "9 should be hidden again, 10 forgotten (9: v%d h%d, 10: v%d h%d)", dd_is_vertex(pr.t, 9), dd_is_hidden(pr.t, 9), dd_is_vertex(pr.t, 10), dd_is_hidden(pr.t, 10));
+                }
+            } else if (ok && how == 2) {
+                const double corner[3] = {0, 0, 0};
+                const dd_status ds = dd_move_weighted(pr.t, 8, corner, 0);
+                const int rc = dd_cgal_rt_move(pr.c, 8, corner, 0);
+                ok = ds == DD_ERR_DUPLICATE && rc == 2;
+                if (!ok) snprintf(why, sizeof why, "moving 8 onto 0: engine %s, CGAL %d", dd_status_name(ds), rc);
+                if (ok) ok = agree(&pr, "8 onto 0 refused", why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(pr.t, 8) && dd_is_hidden(pr.t, 9) && dd_is_hidden(pr.t, 10);
+                    if (!ok) snprintf(why, sizeof why, "8 should be a vertex, 9 and 10 hidden");
+                }
+            } else if (ok) {
+                const uint32_t vs[2] = {0, 8};
+                const dd_status ds = dd_delete_set(pr.t, vs, 2);
+                ok = ds == DD_OK && cgal_delete(pr.c, 0) == 0 && cgal_delete(pr.c, 8) == 0;
+                if (!ok) snprintf(why, sizeof why, "deleting {0, 8}: %s", dd_errmsg(pr.t));
+                if (ok) ok = agree(&pr, "{0, 8} deleted", why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(pr.t, 9) && !present(pr.t, 10);
+                    if (!ok) snprintf(why, sizeof why, "9 should be the vertex, 10 forgotten");
+                }
+            }
+            tl_check(st, ok, tn, "%s", why);
+            pair_free(&pr);
+            ws_free(&s);
+        }
+}
+
 /* Deletes a random fraction f of the points present as one set (course:
  * 0 the engine's choice, 1 one at a time, 2 rebuild; test builds), then
  * re-inserts half of them, comparing after each step.  Lists the
@@ -496,6 +564,7 @@ int main(int argc, char **argv)
     ws_free(&s);
     filter_case(&st);
     refusals_case(&st);
+    copies_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);
 #endif

@@ -22,6 +22,10 @@
  *    (returns 2, no index taken), as CGAL's insert returns that vertex;
  *    an exact duplicate of a kept hidden point is hidden again, as CGAL
  *    does, and both indices are reported hidden.
+ *  - remove() re-inserts the hidden points of the star: when one comes
+ *    back as a vertex it takes the lowest index of its weighted point,
+ *    and the indices of its other copies (CGAL's insert on that vertex
+ *    kept nothing of them) leave keys: neither vertices nor hidden.
  *
  * Invariants:
  *  - Every vertex's info is the input index of its weighted point, and
@@ -46,6 +50,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <utility>
@@ -77,6 +82,9 @@ struct Any_rt {
     virtual void vertices(std::vector<uint32_t> &out) const = 0;
     /* 0 done (vertex, hidden or forgotten), 2 exact duplicate of a vertex. */
     virtual int insert(const Wpoint &p, uint32_t index) = 0;
+    /* As insert, the walk from the finite cell whose vertices' indices
+     * are cell[0..4) (any order); 1 when there is none.                 */
+    virtual int insert_in(const Wpoint &p, uint32_t index, const uint32_t cell[4]) = 0;
 };
 
 inline Key key_of(const Wpoint &p)
@@ -130,11 +138,28 @@ struct Rt_of : public Any_rt {
             out.push_back(it->info());
     }
 
-    int insert(const Wpoint &p, uint32_t index) override
+    int insert(const Wpoint &p, uint32_t index) override { return insert_from(p, index, hint->cell()); }
+
+    int insert_in(const Wpoint &p, uint32_t index, const uint32_t cell[4]) override
+    {
+        std::array<uint32_t, 4> want = {{cell[0], cell[1], cell[2], cell[3]}};
+        std::sort(want.begin(), want.end());
+        for (typename T::Finite_cells_iterator it = rt.finite_cells_begin(); it != rt.finite_cells_end(); ++it) {
+            std::array<uint32_t, 4> have;
+            for (int k = 0; k < 4; k++) have[static_cast<std::size_t>(k)] = it->vertex(k)->info();
+            std::sort(have.begin(), have.end());
+            if (have == want) return insert_from(p, index, it);
+        }
+        return 1;
+    }
+
+    /* CGAL's insert of p walking from cell `start` (its locate, then the
+     * insert at that location: what insert(p, start) does).            */
+    int insert_from(const Wpoint &p, uint32_t index, typename T::Cell_handle start)
     {
         typename T::Locate_type lt;
         int li, lj;
-        const typename T::Cell_handle c = rt.locate(p, lt, li, lj, hint->cell());
+        const typename T::Cell_handle c = rt.locate(p, lt, li, lj, start);
         /* Weighted_point_3's == compares the bare points only; CGAL's
          * insert returns the vertex when the weights are equal too.    */
         if (lt == T::VERTEX && c->vertex(li)->point().point() == p.point() &&
@@ -313,6 +338,27 @@ int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index
     }
 }
 
+int dd_cgal_rt_insert_in(dd_cgal_rt *c, const double p[3], double w, uint32_t index, const uint32_t cell[4])
+{
+    if (c == NULL || p == NULL || cell == NULL || index != c->ninput || index == UINT32_MAX || !finite_point(p, w))
+        return 1;
+    try {
+        const Key k = {{p[0], p[1], p[2], w}};
+        std::vector<uint32_t> &idx = c->keys[k];
+        idx.reserve(idx.size() + 1);      /* nothing can throw after insert */
+        const int r = c->rt->insert_in(weighted_point(p, w), index, cell);
+        if (r == 0) {
+            idx.push_back(index);
+            c->ninput++;
+        } else if (idx.empty()) {
+            c->keys.erase(k);
+        }
+        return r;
+    } catch (...) {
+        return 1;
+    }
+}
+
 uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c)
 {
     return c == NULL ? 0 : c->ninput;
@@ -323,6 +369,37 @@ uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c)
 /* ---- removal (issue 44) ---------------------------------------------------- */
 
 namespace {
+
+/* After remove() re-inserted the hidden points `back`: a hidden point
+ * that came back as a vertex took the lowest index of its weighted
+ * point, and CGAL's insert of an exact copy of that vertex kept nothing:
+ * those copies' indices leave keys, which keeps the vertex's index and
+ * as many others as CGAL still hides copies of it.  O(n).               */
+template <class Policy>
+void drop_copies(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, std::vector<Key> &back)
+{
+    typedef typename Rt_of<Policy>::T T;
+    std::sort(back.begin(), back.end());
+    back.erase(std::unique(back.begin(), back.end()), back.end());
+    std::map<Key, std::size_t> still;
+    for (typename T::All_cells_iterator it = r->rt.all_cells_begin(); it != r->rt.all_cells_end(); ++it)
+        for (typename T::Cell::Point_iterator h = it->hidden_points_begin(); h != it->hidden_points_end(); ++h) {
+            const Key k = key_of(*h);
+            if (std::binary_search(back.begin(), back.end(), k)) still[k]++;
+        }
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it) {
+        const Key k = key_of(it->point());
+        if (!std::binary_search(back.begin(), back.end(), k)) continue;
+        std::vector<uint32_t> &idx = keys[k];
+        std::vector<uint32_t> kept(1, it->info());
+        std::size_t more = still[k];
+        for (std::size_t i = 0; i < idx.size() && more; i++)
+            if (idx[i] != it->info()) kept.push_back(idx[i]), more--;
+        std::sort(kept.begin(), kept.end());
+        idx.swap(kept);
+    }
+}
 
 /* CGAL's remove() of the vertex whose info is `index` in r: 0 done, 1 no
  * such vertex (a hidden point, a deleted or an unknown index), 3 when CGAL
@@ -349,6 +426,12 @@ int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
         return 3;
     std::vector<uint32_t> &gone = keys[key_of(v->point())];
     gone.erase(std::remove(gone.begin(), gone.end(), index), gone.end());
+    std::vector<Key> back;                /* the star's hidden points: CGAL re-inserts them */
+    std::vector<typename T::Cell_handle> star;
+    r->rt.incident_cells(v, std::back_inserter(star));
+    for (std::size_t i = 0; i < star.size(); i++)
+        for (typename T::Cell::Point_iterator h = star[i]->hidden_points_begin(); h != star[i]->hidden_points_end(); ++h)
+            back.push_back(key_of(*h));
     r->rt.remove(v);
     if (r->rt.dimension() != 3)
         return 3;
@@ -360,6 +443,7 @@ int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
         if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
             it->info() = k->second.front();
     }
+    if (!back.empty()) drop_copies(r, keys, back);
     r->hint = r->rt.finite_vertices_begin();
     return 0;
 }

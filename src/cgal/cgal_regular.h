@@ -50,6 +50,13 @@ int dd_cgal_rt_vertices(const dd_cgal_rt *c, uint32_t **idx, size_t *n);
  * index taken); 1 on any other failure.  An exact duplicate of a kept
  * hidden point is hidden again, as CGAL does, under the new index.      */
 int dd_cgal_rt_insert(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
+/* As dd_cgal_rt_insert, CGAL's walk starting from the finite cell whose
+ * vertices are the input indices cell[0..4) (any order), as
+ * insert(p, that cell) does; 1 also when there is no such cell.  Where
+ * a hidden point lying on a face shared by several cells is kept is the
+ * first of them that CGAL's walk from the hint enters, so this chooses
+ * it (tests: the engine's result must not depend on it).  O(n).        */
+int dd_cgal_rt_insert_in(dd_cgal_rt *c, const double p[3], double w, uint32_t index, const uint32_t cell[4]);
 /* Number of input points given so far. */
 uint32_t dd_cgal_rt_num_input(const dd_cgal_rt *c);
 
@@ -75,8 +82,11 @@ int dd_cgal_rt_forget(dd_cgal_rt *c, uint32_t input_index);
  * hidden (forgotten when discarding) and may hide others.  0 done (also
  * when (p, w) is its own weighted point: nothing changes); 2 when (p, w)
  * is exactly another point's weighted point that is a vertex, before or
- * after the removal (nothing changes: CGAL's insert would return that
- * vertex, and the index would be lost); 1 when the index is neither a
+ * after the removal (CGAL's insert would return that vertex, and the
+ * index would be lost): before, nothing changes; after (a point the
+ * removal brought back), the point is put back by insert(), and the
+ * exact copies of the points brought back that remove() dropped stay
+ * dropped, as with CGAL's remove() then insert(); 1 when the index is neither a
  * vertex nor a kept hidden point, or on failure; 3 as remove.  O(n).   */
 int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w);
 

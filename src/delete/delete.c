@@ -373,13 +373,58 @@ static dd_status take_hidden(dd_del *d)
     return DD_OK;
 }
 
+/* Whether vertex ids a and b carry the same weighted point exactly. */
+static int same_wpoint(const dd_tri *t, uint32_t a, uint32_t b)
+{
+    const double *p = dd_pt(t, a), *q = dd_pt(t, b);
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2] && t->wt[a] == t->wt[b];
+}
+
+/* After sort_released's partition (the m released points first): the
+ * exact copies of a released point are forgotten, as CGAL's remove
+ * re-inserts the hidden points one by one and its insert of a vertex's
+ * exact weighted point keeps nothing.  The copy that is the vertex is
+ * the one of lowest input index (the CGAL shim's rule for exact
+ * duplicates), renamed in the fill x if the fill chose another.  Moves
+ * the forgotten points to d->hpts.a[m..m+f) and returns f.  O(m h).   */
+static size_t drop_copies(dd_del *d, dd_tri *x, size_t m)
+{
+    dd_tri *t = d->t;
+    uint32_t *a = d->hpts.a;
+    size_t f = 0;
+    for (size_t r = 0; r < m; r++) {
+        const uint32_t v = a[r];
+        size_t keep = r;
+        for (size_t k = m + f; k < d->hpts.n; k++) {
+            const uint32_t h = a[k];
+            if (!same_wpoint(t, v, h)) continue;
+            a[k] = a[m + f];
+            a[m + f] = h;
+            if (t->v2in[h] < t->v2in[a[keep]]) keep = m + f;
+            f++;
+        }
+        if (keep == r) continue;
+        const uint32_t c = a[keep];             /* the vertex is c, not v */
+        a[keep] = v;
+        a[r] = c;
+        for (size_t k = 0; k < d->fill.n; k++) {
+            uint32_t *tv = dd_tv(x, d->fill.a[k]);
+            for (uint32_t j = 0; j < 4; j++)
+                if (tv[j] == v) tv[j] = c;
+        }
+    }
+    return f;
+}
+
 /* Before the sew on a weighted t: moves the points of d->hpts that are
  * vertices of the fill (no longer hidden) to its front, returning how
- * many, and makes room for the others in the cells the sew makes.      */
-static dd_status sort_released(dd_del *d, size_t *nrel)
+ * many in *nrel, then their exact copies (drop_copies: *nforg of them,
+ * forgotten), and makes room for the others in the cells the sew makes. */
+static dd_status sort_released(dd_del *d, size_t *nrel, size_t *nforg)
 {
     dd_tri *t = d->t, *x = d->fill_in_mesh ? t : d->qdt;   /* where the fill is */
     *nrel = 0;
+    *nforg = 0;
     if (!d->hpts.n) return dd_hidden_room(t, (size_t)t->ncell + d->fill.n);   /* nothing to sort */
     const uint32_t ep = new_vepoch(d);
     for (size_t k = 0; k < d->fill.n; k++)
@@ -395,20 +440,24 @@ static dd_status sort_released(dd_del *d, size_t *nrel)
             d->hpts.a[m++] = v;
         }
     *nrel = m;
+    *nforg = drop_copies(d, x, m);
     return dd_hidden_room(t, (size_t)t->ncell + d->fill.n);
 }
 
 /* After the sew on a weighted t (s its status): the released points are
- * vertices now, the others re-homed in the new cells; after a failure
- * (the mesh unchanged) every point taken goes back.                     */
-static dd_status settle_hidden(dd_del *d, dd_status s, size_t nrel)
+ * vertices now, their exact copies (the nforg after them) forgotten, the
+ * others re-homed in the new cells; after a failure (the mesh unchanged)
+ * every point taken goes back.                                          */
+static dd_status settle_hidden(dd_del *d, dd_status s, size_t nrel, size_t nforg)
 {
     dd_tri *t = d->t;
-    if (s == DD_OK)
+    if (s == DD_OK) {
         for (size_t k = 0; k < nrel; k++) {
             dd_hidden_release(t, d->hpts.a[k]);
             t->nvert++;
         }
+        for (size_t k = nrel; k < nrel + nforg; k++) dd_hidden_release(t, d->hpts.a[k]);
+    }
     d->hpts.n = 0;
     const dd_status r = dd_hidden_settle(t);
     if (s == DD_OK && r != DD_OK)
@@ -480,7 +529,7 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     /* The sites: q's neighbours, then the star's hidden points. */
     d->order.n = 0;
     if ((s = dd_vec_room(&d->order, d->nbr.n + d->hpts.n)) != DD_OK) {
-        if (weighted) (void)settle_hidden(d, s, 0);
+        if (weighted) (void)settle_hidden(d, s, 0, 0);
         return dd_fail(t, s, "out of memory");
     }
     memcpy(d->order.a, d->nbr.a, d->nbr.n * sizeof *d->nbr.a);
@@ -488,17 +537,17 @@ dd_status dd_del_vertex(dd_tri *t, uint32_t q, const dd_variant *var)
     d->order.n = d->nbr.n + d->hpts.n;
     DD_PHASE_END(d, DD_PH_LINK);
     s = fill_step(d, weighted ? var->fill_weighted : var->fill_cavity);
-    size_t nrel = 0;
+    size_t nrel = 0, nforg = 0;
     if (s == DD_OK) {
         d->qdt_created = d->qdt->tets_created;
-        if (weighted) s = sort_released(d, &nrel);
+        if (weighted) s = sort_released(d, &nrel, &nforg);
         DD_PHASE_BEGIN(d);
         if (s == DD_OK) s = sew(d);
         DD_PHASE_END(d, DD_PH_SEW);
     } else if (s != DD_ERR_NOMEM && !t->err[0]) {
         dd_fail(t, s, "the %s strategy failed on point %u", var->name, t->v2in[q]);
     }
-    if (weighted) s = settle_hidden(d, s, nrel);
+    if (weighted) s = settle_hidden(d, s, nrel, nforg);
     if (s == DD_ERR_NOMEM) return dd_fail(t, s, "out of memory");
     return s;
 }

@@ -287,6 +287,16 @@ static dd_status check_point(const dd_tri *t, dd_pred *pr, uint32_t c, uint32_t 
     if (!holds(t, pr, c, dd_pt(t, v))) return REFUTE("hidden point %d lies outside its cell %u", in, c);
     if (dd_cell_power_conflict_on(t, pr, c, dd_pt(t, v), t->wt[v]))
         return REFUTE("point %d is kept hidden but is in conflict with its cell %u: not hidden", in, c);
+    /* A vertex's position is in the closure of a cell only as one of
+     * its corners: a hidden exact copy of a vertex's weighted point would
+     * sit at one (CGAL keeps none: its insert on that vertex adds nothing). */
+    const double *p = dd_pt(t, v);
+    for (uint32_t j = 0; j < 4; j++) {
+        const uint32_t u = dd_tv(t, c)[j];
+        const double *q = dd_pt(t, u);
+        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2] && t->wt[u] == t->wt[v])
+            return REFUTE("hidden point %d is an exact copy of vertex %d's weighted point", in, (int)t->v2in[u]);
+    }
     return DD_OK;
 }
 

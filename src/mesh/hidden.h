@@ -18,6 +18,29 @@
  * bytes a cell and 16 a vertex id, only in weighted triangulations that
  * keep hidden points; nothing in the others (t->hid is NULL there).
  *
+ * Which cell.  A point on a face shared by several cells (a facet, an
+ * edge, a vertex's position) is kept in whichever of them the walk that
+ * placed it ended in.  CGAL keeps it in the first cell of its closure
+ * that its locate enters from the hint (insert(p, hint); the hidden point
+ * visitor's chain from the new vertex's cell; remove()'s re-insertions
+ * from the cell across v's facet): a walk trying facets in the order of
+ * CGAL's own vertex numbering of each cell (its stochastic part draws
+ * from a generator seeded afresh in each call), so the cell depends on
+ * the caller's hint and on that numbering, neither of which the engine
+ * has.  The cells and the hidden set never depend on it: a kept point is
+ * looked at again only when a deletion's star holds its cell, and
+ *  - a point that can come back lies inside the star's union (one on
+ *    its boundary would be a vertex on a face of a cell the deletion
+ *    keeps), where every cell whose closure holds it is in the star: all
+ *    its exact copies are taken whatever cell keeps them; one comes back,
+ *    the others are forgotten (no vertex has a hidden exact copy);
+ *  - a point on a face stays hidden whichever of its cells is asked: the
+ *    power distances to the orthospheres of two cells sharing the face
+ *    differ by an affine function that vanishes on it, also under the
+ *    symbolic perturbation, which is one of the weights.
+ * test_wdelete's shared_facet_case makes CGAL keep two copies in two
+ * cells (dd_cgal_rt_insert_in) and compares.
+ *
  * Edits.  An insertion whose conflict region is about to be replaced
  * takes the lists of those cells and notes their vertices
  * (dd_hidden_take_region, before the mesh changes: the only step that
@@ -33,7 +56,8 @@
  * Invariants (dd_hidden_check proves them): a dead cell's list is empty;
  * a cell at or past ncap has an empty list; cell[v] == c iff v is on c's
  * list, and then v is no vertex, its point is in the closure of the
- * finite cell c, and (p, w) is not in conflict with c: hidden.
+ * finite cell c, and (p, w) is not in conflict with c: hidden; and no
+ * vertex carries v's weighted point exactly (CGAL keeps no such copy).
  */
 #ifndef DD_HIDDEN_H
 #define DD_HIDDEN_H
