@@ -366,6 +366,49 @@ static void apex_case(tl_state *st, int tet, int keep)
     if (ok) fprintf(stderr, "  %s: %u moves as CGAL's, %u refused alike\n", tn, done, refused);
 }
 
+#ifdef DD_TEST_BUILD
+/* Each allocation of an apex move through the rebuild refused in turn:
+ * DD_ERR_NOMEM with nothing changed, then the move equals CGAL's.     */
+static void apex_fault_case(tl_state *st, int tet, int keep)
+{
+    static const double to[2][4] = {{2, 2, -2, 0}, {1, 1, -3, 2}};
+    const uint32_t apex = tet ? 3 : 13;
+    char tn[160], why[256] = "", msg[256];
+    snprintf(tn, sizeof tn, "fault/apex/%s/%s", tet ? "tet" : "grid", keep ? "keep" : "discard");
+    wset s = apex_set(tet);
+    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+    const int cr = dd_cgal_rt_move_any_dim(c, apex, to[tet], to[tet][3]);
+    long nomem = 0, bad = cr != 0;
+    for (long k = 1; k < 100000 && !bad; k++) {
+        dd_tri *t = NULL;
+        dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg);
+        shot before = take_shot(t);
+        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+        const dd_status ds = dd_move_weighted(t, apex, to[tet], to[tet][3]);
+        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+        int ok = 1;
+        why[0] = 0;
+        if (ds == DD_ERR_NOMEM) {
+            nomem++;
+            ok = unchanged(t, &before) && checked(t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
+            if (ok && dd_move_weighted(t, apex, to[tet], to[tet][3]) != DD_OK)
+                ok = 0, snprintf(why, sizeof why, "allocation %ld: retry failed", k);
+        } else if (ds != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s (%s)", k, dd_status_name(ds), dd_errmsg(t));
+        }
+        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        if (!ok && !bad++) fprintf(stderr, "  %s: %s\n", tn, why);
+        shot_free(&before);
+        dd_free(t);
+        if (left > 0) break;
+    }
+    tl_check(st, bad == 0 && nomem > 0, tn, "%ld bad of %ld refusals (CGAL %d)", bad, nomem, cr);
+    dd_cgal_rt_free(c);
+    ws_free(&s);
+}
+#endif
+
 /* ---- refusals ---------------------------------------------------------------------- */
 
 static void refusals_case(tl_state *st)
@@ -582,7 +625,12 @@ int main(int argc, char **argv)
     ws_free(&s);
     filter_case(&st);
     for (int keep = 1; keep >= 0; keep--)
-        for (int tet = 0; tet <= 1; tet++) apex_case(&st, tet, keep);
+        for (int tet = 0; tet <= 1; tet++) {
+            apex_case(&st, tet, keep);
+#ifdef DD_TEST_BUILD
+            apex_fault_case(&st, tet, keep);
+#endif
+        }
     refusals_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);
