@@ -29,7 +29,9 @@
  *     inserting first could forget a vertex that only v's presence hid.
  *     An insertion that fails puts v back where it was (the regular
  *     triangulation of the points in t is unique, and in discard mode v
- *     put back hides nothing).
+ *     put back hides nothing).  Where removing v first would leave fewer
+ *     than 4 or only coplanar points, the moved set is rebuilt instead
+ *     (move_by_rebuild: CGAL's result, through its lower dimensions).
  * A kept hidden point moves too: forgotten, then inserted at (p, w).
  */
 #include "dtdel.h"
@@ -153,6 +155,44 @@ static uint32_t vertex_with(dd_tri *t, uint32_t v, const double p[3], double w)
     return DD_NONE;
 }
 
+/* Course 2 where removing v first would leave fewer than 4 or only
+ * coplanar points (nothing changed yet): CGAL's remove() drops to
+ * dimension 2 or less, re-inserts the hidden points, and the insertion
+ * of (p, w) raises the dimension again.  Each of those steps gives the
+ * regular triangulation of the points it has, so its result is the
+ * regular triangulation of the moved point set, here rebuilt from
+ * scratch (mesh/rebuild_power.c) with v at (p, w): in keep mode the
+ * unique one, with the same hidden set.  In discard mode nothing is
+ * forgotten on either side: the points left other than v span a plane
+ * (or a triangle) on which they are all vertices, and a point off that
+ * plane hides none of them, nor is it hidden (it is an extreme point),
+ * which is CGAL's cone from (p, w) over the plane.  Every finite cell
+ * holds v here, so the deletion would have been O(n) too; the rebuild
+ * is O(n log n).  A moved set that is still coplanar is refused
+ * (DD_ERR_DIMENSION, as CGAL ends in dimension 2); so is an exact copy
+ * of a weighted point among the hidden points (DD_ERR_DUPLICATE: the
+ * rebuild cannot order them as CGAL's re-insertion does; another
+ * vertex's point is refused by the caller first).  A failure leaves
+ * t as it was.                                                         */
+static dd_status move_by_rebuild(dd_tri *t, uint32_t v, const double p[3], double w)
+{
+    const double old[3] = {dd_pt(t, v)[0], dd_pt(t, v)[1], dd_pt(t, v)[2]}, wold = t->wt[v];
+    set_point(t, v, p, w);
+    dd_status s = dd_rebuild_power_without(t, NULL, 0);
+    if (s == DD_OK) {
+        if (t->vcell[v] != DD_NONE) dd_grid_note(t, v);
+        t->moves_redone++;
+        return DD_OK;
+    }
+    set_point(t, v, old, wold);
+    if (s == DD_ERR_COPLANAR || s == DD_ERR_COLLINEAR || s == DD_ERR_TOO_FEW)
+        return dd_fail(t, DD_ERR_DIMENSION, "moving point %u would leave only coplanar points", t->v2in[v]);
+    if (s == DD_ERR_DUPLICATE)
+        return dd_fail(t, s, "moving point %u: the moved point set, rebuilt as removing it first would leave "
+                       "fewer than 4 or only coplanar points, holds two equal weighted points", t->v2in[v]);
+    return s;
+}
+
 /* Course 2 of a weighted move (see the top): v deleted, then inserted at
  * (p, w); a failure of the insertion puts v back.  Onto another vertex's
  * weighted point it is refused before the deletion, as the reference
@@ -168,9 +208,7 @@ static dd_status move_by_removal(dd_tri *t, uint32_t v, const double p[3], doubl
         return dd_fail(t, DD_ERR_DUPLICATE, "moving point %u: the new weighted point is point %u's", t->v2in[v],
                        t->v2in[dup]);
     dd_status s = dd_del_vertex(t, v, dd_variant_table[0]);
-    if (s == DD_ERR_DIMENSION)
-        return dd_fail(t, s, "moving point %u: removing it first would leave fewer than 4 or only coplanar points",
-                       t->v2in[v]);
+    if (s == DD_ERR_DIMENSION) return move_by_rebuild(t, v, p, w);
     if (s != DD_OK) return s;
     set_point(t, v, p, w);
     int vertex = 0;

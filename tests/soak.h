@@ -47,11 +47,11 @@ typedef struct stats {
     uint64_t per_variant[SOAK_MAX_VARIANTS];
     /* weighted: operations done (a set counts its vertices under
      * WOP_SET), refused by both sides alike, skipped because the engine
-     * answered DD_ERR_UNSUPPORTED; per strategy the deletions done and
-     * skipped; hidden points that came back; deletions and moves of kept
+     * answered DD_ERR_UNSUPPORTED; per strategy the deletions done;
+     * hidden points that came back; deletions and moves of kept
      * hidden points; whole comparisons.                                 */
     uint64_t wdone[NUM_WOPS], wrefused[NUM_WOPS], wskipped[NUM_WOPS];
-    uint64_t wvariant[SOAK_MAX_VARIANTS], wvariant_skipped[SOAK_MAX_VARIANTS];
+    uint64_t wvariant[SOAK_MAX_VARIANTS];
     uint64_t wreleased, whidden_ops, wchecks;
 } stats;
 

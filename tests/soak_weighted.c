@@ -26,10 +26,12 @@
  * renames them to the engine's (canon.h): after each operation the
  * cells and the hidden set equal CGAL's and dd_check passes.
  *
- * A call that answers DD_ERR_UNSUPPORTED (a strategy or an edit not yet
- * there for weighted points) is skipped and counted per operation and
- * per strategy, not failed: the triangulation must be unchanged, which
- * the next comparison proves (CGAL's side was not touched).
+ * Every strategy deletes weighted points, so a deletion (alone or in a
+ * set) that answers DD_ERR_UNSUPPORTED is a mismatch.  Another edit that
+ * answers it (one not yet there for weighted points) is skipped and
+ * counted per operation, not failed: the triangulation must be
+ * unchanged, which the next comparison proves (CGAL's side was not
+ * touched).
  */
 #include "dtdel.h"
 #include "cgal/cgal_regular.h"
@@ -304,31 +306,22 @@ static double finite_or_max(double x) { return isfinite(x) ? x : copysign(DBL_MA
 
 /* ---- the operations ---------------------------------------------------------- */
 
-static int is_skip(soak *s, dd_status st, soak_wop op, size_t variant)
+static int is_skip(soak *s, dd_status st, soak_wop op)
 {
     if (st != DD_ERR_UNSUPPORTED) return 0;
     s->st.wskipped[op]++;
-    if (variant < SOAK_MAX_VARIANTS) s->st.wvariant_skipped[variant]++;
     return 1;
 }
 
-/* Deletes vertex v with the next strategy; one that answers
- * DD_ERR_UNSUPPORTED is counted skipped and the next one tried.  0 done
- * or skipped by all, -1 mismatch.                                        */
+/* Deletes vertex v with the next strategy (every one deletes weighted
+ * points: a refusal is a mismatch).  0 done, -1 mismatch.               */
 static int wp_delete(soak *s, wpair *p, uint32_t v)
 {
-    size_t vi = 0;
-    const char *var = NULL;
     char what[128];
     const uint32_t nv = dd_num_vertices(p->t);
-    dd_status st = DD_ERR_UNSUPPORTED;
-    for (size_t k = 0; k < s->nvariants && st == DD_ERR_UNSUPPORTED; k++) {
-        vi = s->turn++ % s->nvariants;
-        var = s->variants[vi];
-        st = dd_delete_with(p->t, v, var);
-        is_skip(s, st, WOP_DELETE, vi);
-    }
-    if (st == DD_ERR_UNSUPPORTED) return 0;
+    const size_t vi = s->turn++ % s->nvariants;
+    const char *var = s->variants[vi];
+    const dd_status st = dd_delete_with(p->t, v, var);
     snprintf(what, sizeof what, "deleting vertex %u with %s", v, var);
     const int rc = dd_cgal_rt_remove(p->c, p->e2cg[v]);
     if (st != DD_OK || rc) {
@@ -356,17 +349,10 @@ static int wp_delete_set(soak *s, wpair *p, rng *r)
         kv += !hidden[k];
         vs[k++] = v;
     }
-    size_t vi = 0;
-    const char *var = NULL;
     const uint32_t nv = dd_num_vertices(p->t);
-    dd_status st = DD_ERR_UNSUPPORTED;
-    for (size_t j = 0; j < s->nvariants && st == DD_ERR_UNSUPPORTED; j++) {
-        vi = s->turn++ % s->nvariants;
-        var = s->variants[vi];
-        st = dd_delete_set_with(p->t, vs, k, var);
-        is_skip(s, st, WOP_SET, vi);
-    }
-    if (st == DD_ERR_UNSUPPORTED) return 0;
+    const size_t vi = s->turn++ % s->nvariants;
+    const char *var = s->variants[vi];
+    const dd_status st = dd_delete_set_with(p->t, vs, k, var);
     char what[160];
     snprintf(what, sizeof what, "deleting the set of %u points %u%s, %u, ... with %s", k, vs[0],
              hidden[0] ? " (hidden)" : "", vs[1], var);
@@ -408,7 +394,7 @@ static int wp_insert(soak *s, wpair *p, const double q[3], double w)
     uint32_t idx = UINT32_MAX;
     const uint32_t same = wp_same(p, q, w);
     const dd_status st = dd_insert_weighted(p->t, q, w, &idx);
-    if (is_skip(s, st, WOP_INSERT, SIZE_MAX)) return 0;
+    if (is_skip(s, st, WOP_INSERT)) return 0;
     if (wp_room(p, idx == UINT32_MAX ? p->ne : idx)) return -1;
     const int rc = cgal_insert_as(p, st == DD_OK && same == UINT32_MAX ? idx : (uint32_t)p->ne, q, w);
     /* a vertex's exact weighted point: that vertex, nothing changed (CGAL's insert returns it) */
@@ -436,7 +422,7 @@ static int wp_reinsert(soak *s, wpair *p, rng *r)
     snprintf(what, sizeof what, "reinserting %u", v);
     const uint32_t same = wp_same(p, p->xyz + 3 * (size_t)v, p->w[v]);
     const dd_status st = dd_reinsert(p->t, v);
-    if (is_skip(s, st, WOP_REINSERT, SIZE_MAX)) return 0;
+    if (is_skip(s, st, WOP_REINSERT)) return 0;
     if (wp_room(p, v)) return -1;
     double q[3];
     memcpy(q, p->xyz + 3 * (size_t)v, sizeof q);
@@ -457,7 +443,7 @@ static int wp_reinsert(soak *s, wpair *p, rng *r)
 
 /* Moves point v (a vertex, or a kept hidden point) to (q, w):
  * dd_move_weighted, or dd_move when w is v's weight and `plain`.  The
- * reference: dd_cgal_rt_move (CGAL's remove() or the hidden point
+ * reference: dd_cgal_rt_move_any_dim (CGAL's remove() or the hidden point
  * forgotten, then insert() under the same index).  Onto another point's
  * exact weighted point that is or becomes a vertex both refuse.        */
 static int wp_move(soak *s, wpair *p, uint32_t v, const double q[3], double w, int plain)
@@ -469,8 +455,8 @@ static int wp_move(soak *s, wpair *p, uint32_t v, const double q[3], double w, i
              p->xyz[3 * (size_t)v], p->xyz[3 * (size_t)v + 1], p->xyz[3 * (size_t)v + 2], p->w[v], q[0], q[1], q[2],
              w);
     const dd_status st = plain ? dd_move(p->t, v, q) : dd_move_weighted(p->t, v, q, w);
-    if (is_skip(s, st, op, SIZE_MAX)) return 0;
-    const int rc = dd_cgal_rt_move(p->c, p->e2cg[v], q, w);
+    if (is_skip(s, st, op)) return 0;
+    const int rc = dd_cgal_rt_move_any_dim(p->c, p->e2cg[v], q, w);
     if (st == DD_ERR_DUPLICATE && rc == 2) {
         s->st.wrefused[op]++;
         return wp_check(s, p, what);
@@ -492,7 +478,7 @@ static int wp_forget(soak *s, wpair *p, uint32_t v)
     char what[96];
     snprintf(what, sizeof what, "deleting hidden point %u", v);
     const dd_status st = dd_delete(p->t, v);
-    if (is_skip(s, st, WOP_DELETE, SIZE_MAX)) return 0;
+    if (is_skip(s, st, WOP_DELETE)) return 0;
     const int rc = dd_cgal_rt_forget(p->c, p->e2cg[v]);
     if (st != DD_OK || rc) {
         soak_mismatch(s, "%s: engine %s (%s), CGAL %d", what, dd_status_name(st), dd_errmsg(p->t), rc);
@@ -668,10 +654,10 @@ void soak_weighted_report(const soak *proto, const stats *tot)
     printf("soak: weighted, skipped (DD_ERR_UNSUPPORTED):");
     for (int k = 0; k < NUM_WOPS; k++)
         printf(" %llu %s%s", (unsigned long long)tot->wskipped[k], soak_wop_names[k], k + 1 < NUM_WOPS ? "," : "\n");
-    printf("soak: weighted, strategies (deleted/skipped):");
+    printf("soak: weighted, deleted by strategy:");
     for (size_t v = 0; v < proto->nvariants; v++)
-        printf(" %s %llu/%llu%s", proto->variants[v], (unsigned long long)tot->wvariant[v],
-               (unsigned long long)tot->wvariant_skipped[v], v + 1 < proto->nvariants ? "," : "\n");
+        printf(" %s %llu%s", proto->variants[v], (unsigned long long)tot->wvariant[v],
+               v + 1 < proto->nvariants ? "," : "\n");
     printf("soak: weighted, %llu deletions and moves, %llu operations in all, %llu refused alike, %llu skipped, "
            "%llu hidden points came back, %llu deletions and moves of hidden points, %llu whole comparisons with CGAL\n",
            (unsigned long long)(tot->wdone[WOP_DELETE] + tot->wdone[WOP_SET] + tot->wdone[WOP_MOVE] +

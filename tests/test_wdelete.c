@@ -12,6 +12,10 @@
  *    taken in turn (test builds: scalar, no single precision, spoiled
  *    single precision, narrower guesses), on the grid also with exact
  *    duplicates, and on protecting balls;
+ *  - a hull vertex whose finite neighbours and star's hidden points all
+ *    lie on one plane (the framework's forced fill; the hidden points
+ *    stay hidden), and the same with nothing below the plane
+ *    (DD_ERR_DIMENSION, as CGAL ends in 2D), every strategy above;
  *  - the gift wrap's weighted filter bound (dd_lift_power_err) against
  *    the exact power test;
  *  - zero weights: the same cells as the unweighted triangulation after
@@ -33,6 +37,7 @@
 #include "testweighted.h"
 #include "geom/lift_pass.h"
 #include "geom/power.h"
+#include "mesh/hidden.h"
 
 static int small;
 static const double q_origin[3] = {0, 0, 0};
@@ -196,6 +201,109 @@ static void zero_weights_case(tl_state *st, const char *name, const wset *s0, ui
     dd_free(t);
     dd_free(u);
     free(zw);
+}
+
+/* ---- a hull vertex over a flat star with hidden points ---------------------- */
+
+/* The 3x3 grid {0,2,4}^2 on the plane z = 0 (weight 0), four points on
+ * that plane inside its triangles with weight -3 (hidden: their lifted
+ * points lie above the grid's, whose squares are cocircular, so the
+ * diagonals are the perturbation's), q = (2,2,2) above, whose finite
+ * neighbours are the nine grid points, and with `below` the point
+ * (2,2,-2) under the plane.  Indices: grid 0-8, hidden 9-12, q 13,
+ * below 14.                                                             */
+static wset flat_star_set(int below)
+{
+    wset s = {0};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) ws_add(&s, 2 * i, 2 * j, 0, 0);
+    ws_add(&s, 1, 0.5, 0, -3);
+    ws_add(&s, 3.5, 1, 0, -3);
+    ws_add(&s, 3, 3.5, 0, -3);
+    ws_add(&s, 0.5, 3, 0, -3);
+    ws_add(&s, 2, 2, 2, 0);
+    if (below) ws_add(&s, 2, 2, -2, 0);
+    return s;
+}
+
+/* How many kept hidden points of t live in a cell of input point q's
+ * star (hidden.c's lists): those the deletion of q takes.              */
+static uint32_t hidden_in_star(const dd_tri *t, uint32_t q)
+{
+    uint32_t *h = NULL, n = 0;
+    size_t nh = 0;
+    const uint32_t qv = t->in2v[q];
+    if (dd_hidden(t, &h, &nh) != DD_OK) return 0;
+    for (size_t k = 0; k < nh; k++) {
+        const uint32_t c = t->hid->cell[t->in2v[h[k]]];
+        for (int i = 0; i < 4; i++) n += dd_tv(t, c)[i] == qv;
+    }
+    free(h);
+    return n;
+}
+
+/* Deleting q (13) from flat_star_set(1) with `variant` (NULL: dd_delete):
+ * the forced fill of the framework runs, the hidden points the star
+ * holds stay hidden (re-homed below the plane), and the result is
+ * CGAL's, cells and hidden set, in both hidden modes.  Without the point
+ * below, every point left is on the plane: DD_ERR_DIMENSION, nothing
+ * changed, as CGAL (whose remove() leaves dimension 2).                */
+static void flat_star_case(tl_state *st, const char *variant, int keep)
+{
+    char tn[160], why[256] = "", msg[256];
+    snprintf(tn, sizeof tn, "flat-star/%s/%s", variant ? variant : "default", keep ? "keep" : "discard");
+    wset s = flat_star_set(1);
+    dd_tri *t = NULL;
+    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+    int ok = c && dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+    if (ok) ok = same_as_cgal(t, c, why, sizeof why);
+    uint32_t instar = 0;
+    if (ok && keep) {
+        for (uint32_t i = 9; i <= 12 && ok; i++)
+            if (!dd_is_hidden(t, i)) ok = 0, snprintf(why, sizeof why, "point %u is not hidden", i);
+        instar = hidden_in_star(t, 13);
+        if (ok && !instar) ok = 0, snprintf(why, sizeof why, "no hidden point in q's star: the case tests nothing");
+    }
+    if (ok) {
+        const dd_status ds = variant ? dd_delete_with(t, 13, variant) : dd_delete(t, 13);
+        const int cr = dd_cgal_rt_remove(c, 13);
+        dd_delete_stats ds_stats;
+        dd_last_delete_stats(t, &ds_stats);
+        if (ds != DD_OK || cr != 0)
+            ok = 0, snprintf(why, sizeof why, "deleting q: %s (%s); CGAL %d", dd_status_name(ds), dd_errmsg(t), cr);
+        else if (!ds_stats.forced_fill)
+            ok = 0, snprintf(why, sizeof why, "the forced fill did not run");
+        else
+            ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        for (uint32_t i = 9; i <= 12 && ok && keep; i++)
+            if (!dd_is_hidden(t, i)) ok = 0, snprintf(why, sizeof why, "point %u came back", i);
+    }
+    tl_check(st, ok, tn, "%s", why);
+    if (ok && keep) fprintf(stderr, "  %s: %u hidden points in q's star stayed hidden\n", tn, instar);
+    dd_free(t);
+    dd_cgal_rt_free(c);
+    ws_free(&s);
+
+    snprintf(tn, sizeof tn, "flat-star/%s/%s/all-coplanar-left", variant ? variant : "default", keep ? "keep" : "discard");
+    s = flat_star_set(0);
+    t = NULL;
+    c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+    ok = c && dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg) == DD_OK;
+    if (!ok) snprintf(why, sizeof why, "build: %.200s", c ? msg : "CGAL failed");
+    if (ok) {
+        shot before = take_shot(t);
+        const dd_status ds = variant ? dd_delete_with(t, 13, variant) : dd_delete(t, 13);
+        const int cr = dd_cgal_rt_remove(c, 13);
+        ok = ds == DD_ERR_DIMENSION && cr == 3 && unchanged(t, &before) && checked(t, why, sizeof why);
+        if (!ok && !why[0])
+            snprintf(why, sizeof why, "%s (%s), CGAL %d", dd_status_name(ds), dd_errmsg(t), cr);
+        shot_free(&before);
+    }
+    tl_check(st, ok, tn, "%s", why);
+    dd_free(t);
+    dd_cgal_rt_free(c);
+    ws_free(&s);
 }
 
 /* ---- refusals ------------------------------------------------------------------ */
@@ -414,6 +522,8 @@ int main(int argc, char **argv)
     s = gen_curve(small ? 200 : 500, 1, 4);
     delete_all(&st, "helix", &s, nd);
     ws_free(&s);
+    for (int keep = 1; keep >= 0; keep--)
+        for (size_t k = 0; k < sizeof supported / sizeof *supported; k++) flat_star_case(&st, supported[k], keep);
     power_bound_case(&st);
     refusals_case(&st);
     copies_case(&st);

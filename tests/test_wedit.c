@@ -15,6 +15,11 @@
  *    moves of kept hidden points; after every step the cells and the
  *    hidden set equal CGAL's (a move's reference: remove, then insert
  *    under the same index, DESIGN 12) and dd_check passes;
+ *  - moves of an apex whose removal leaves only coplanar points (a grid
+ *    plane with hidden points on it) or 3 vertices (a tetrahedron with
+ *    hidden points): CGAL's remove() drops the dimension and the
+ *    insertion raises it again; the same cells and hidden set, or both
+ *    refuse (the moved set coplanar, or another vertex's weighted point);
  *  - refusals (NaN or infinite weight or coordinate, unknown index,
  *    another vertex's exact weighted point, an unweighted t) with
  *    nothing changed;
@@ -258,12 +263,12 @@ static int move_steps(pair *pr, tl_rng *r, uint32_t count, uint64_t *kept, char 
         double p[3], w;
         make_move(pr, r, k, v, p, &w);
         const dd_status s = m % 7 == 3 && k == MV_SMALL ? dd_move(t, v, p) : dd_move_weighted(t, v, p, w);
-        const int cr = dd_cgal_rt_move(pr->c, v, p, w);
+        const int cr = dd_cgal_rt_move_any_dim(pr->c, v, p, w);
         char what[128];
         snprintf(what, sizeof what, "move %u (%s) to (%g %g %g; %g)", v, mv_name[k], p[0], p[1], p[2], w);
         if (s == DD_ERR_DUPLICATE && cr == 2) continue;    /* both refuse */
-        if (cr == 3 && (s == DD_OK || s == DD_ERR_DIMENSION)) return -1;  /* CGAL cannot remove v: the
-                                                   reference ends here (the filter may not need to) */
+        if (cr == 3 && s == DD_ERR_DIMENSION) return -1;  /* the moved set is coplanar: CGAL's
+                                                   triangulation, in 2D, ends the reference here */
         if (s != DD_OK || cr != 0) {
             ok = 0, snprintf(why, nwhy, "%s: %s (%s), CGAL %d", what, dd_status_name(s), dd_errmsg(t), cr);
             break;
@@ -346,6 +351,125 @@ static void filter_case(tl_state *st)
     }
     ws_free(&s);
 }
+
+/* ---- moves whose removal would leave a plane ------------------------------------ */
+
+/* Apex 13 over the 3x3 grid {0,2,4}^2 on z = 0 (weight 0) with four
+ * hidden points on that plane (weight -3); or (tet) apex 3 over the
+ * triangle (0,0,0), (4,0,0), (0,4,0) with a hidden point on its plane
+ * and one above it: removing the apex first leaves only coplanar
+ * points, or 3 vertices.                                               */
+static wset apex_set(int tet)
+{
+    wset s = {0};
+    if (tet) {
+        ws_add(&s, 0, 0, 0, 0), ws_add(&s, 4, 0, 0, 0), ws_add(&s, 0, 4, 0, 0);
+        ws_add(&s, 0.5, 0.5, 4, 0);
+        ws_add(&s, 1, 1, 0, -10);
+        ws_add(&s, 1, 1, 0.5, -10);
+        return s;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) ws_add(&s, 2 * i, 2 * j, 0, 0);
+    ws_add(&s, 1, 0.5, 0, -3), ws_add(&s, 3.5, 1, 0, -3), ws_add(&s, 3, 3.5, 0, -3), ws_add(&s, 0.5, 3, 0, -3);
+    ws_add(&s, 2, 2, 2, 0);
+    return s;
+}
+
+/* Each move of the apex, from a fresh pair, against CGAL's remove()
+ * (which drops the dimension) then insert (dd_cgal_rt_move_any_dim):
+ * the same cells and hidden set, or, when the moved set is coplanar,
+ * DD_ERR_DIMENSION with nothing changed as CGAL ends in 2D, or onto
+ * another vertex's weighted point DD_ERR_DUPLICATE as CGAL; in both
+ * hidden modes.                                                        */
+static void apex_case(tl_state *st, int tet, int keep)
+{
+    static const double mv[][4] = {
+        {2, 2, -2, 0},  {2, 2, 3, -1},  {1, 1, 1, 5},   {3.5, 1, -0.25, 0}, {2, 2, 0, 0},
+        {1, 0.5, 0, 10}, {1, 0.5, 0, -3}, {0.5, 0.5, -4, 0}, {1, 1, -3, 2}, {2, 2, 2, 1},   {4, 0, 0, 0},
+    };
+    const uint32_t apex = tet ? 3 : 13;
+    char tn[160], why[256] = "";
+    snprintf(tn, sizeof tn, "apex/%s/%s", tet ? "tet" : "grid", keep ? "keep" : "discard");
+    uint32_t done = 0, refused = 0;
+    int ok = 1;
+    for (size_t k = 0; k < sizeof mv / sizeof *mv && ok; k++) {
+        wset s = apex_set(tet);
+        pair pr;
+        ok = pair_make(&pr, &s, keep, why, sizeof why);
+        if (!ok) break;
+        shot before = take_shot(pr.t);
+        const dd_status ds = dd_move_weighted(pr.t, apex, mv[k], mv[k][3]);
+        const int cr = dd_cgal_rt_move_any_dim(pr.c, apex, mv[k], mv[k][3]);
+        char what[96];
+        snprintf(what, sizeof what, "move to (%g %g %g; %g)", mv[k][0], mv[k][1], mv[k][2], mv[k][3]);
+        if (cr == 2) {                               /* another vertex's weighted point */
+            ok = ds == DD_ERR_DUPLICATE && unchanged(pr.t, &before) && checked(pr.t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "%s: %s (%s), CGAL a duplicate", what, dd_status_name(ds),
+                                         dd_errmsg(pr.t));
+            refused++;
+        } else if (cr == 3) {
+            ok = ds == DD_ERR_DIMENSION && unchanged(pr.t, &before) && checked(pr.t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "%s: %s (%s), CGAL ends in 2D", what, dd_status_name(ds),
+                                         dd_errmsg(pr.t));
+            refused++;
+        } else if (ds != DD_OK || cr != 0) {
+            ok = 0, snprintf(why, sizeof why, "%s: %s (%s), CGAL %d", what, dd_status_name(ds), dd_errmsg(pr.t), cr);
+        } else {
+            ok = agree(&pr, what, why, sizeof why);
+            done++;
+        }
+        shot_free(&before);
+        pair_free(&pr);
+        ws_free(&s);
+    }
+    if (ok && (!done || !refused)) ok = 0, snprintf(why, sizeof why, "%u moves made, %u refused: want both", done, refused);
+    tl_check(st, ok, tn, "%s", why);
+    if (ok) fprintf(stderr, "  %s: %u moves as CGAL's, %u refused alike\n", tn, done, refused);
+}
+
+#ifdef DD_TEST_BUILD
+/* Each allocation of an apex move through the rebuild refused in turn:
+ * DD_ERR_NOMEM with nothing changed, then the move equals CGAL's.     */
+static void apex_fault_case(tl_state *st, int tet, int keep)
+{
+    static const double to[2][4] = {{2, 2, -2, 0}, {1, 1, -3, 2}};
+    const uint32_t apex = tet ? 3 : 13;
+    char tn[160], why[256] = "", msg[256];
+    snprintf(tn, sizeof tn, "fault/apex/%s/%s", tet ? "tet" : "grid", keep ? "keep" : "discard");
+    wset s = apex_set(tet);
+    dd_cgal_rt *c = dd_cgal_rt_build(s.p, s.w, s.n, !keep);
+    const int cr = dd_cgal_rt_move_any_dim(c, apex, to[tet], to[tet][3]);
+    long nomem = 0, bad = cr != 0;
+    for (long k = 1; k < 100000 && !bad; k++) {
+        dd_tri *t = NULL;
+        dd_create_ex(&t, s.p, s.w, s.n, keep ? 0 : DD_DISCARD_HIDDEN, msg, sizeof msg);
+        shot before = take_shot(t);
+        dd_test_control(NULL, DD_TEST_ALLOC_FAIL, k);
+        const dd_status ds = dd_move_weighted(t, apex, to[tet], to[tet][3]);
+        const long left = dd_test_control(NULL, DD_TEST_ALLOC_FAIL, 0);
+        int ok = 1;
+        why[0] = 0;
+        if (ds == DD_ERR_NOMEM) {
+            nomem++;
+            ok = unchanged(t, &before) && checked(t, why, sizeof why);
+            if (!ok && !why[0]) snprintf(why, sizeof why, "allocation %ld: changed by the failure", k);
+            if (ok && dd_move_weighted(t, apex, to[tet], to[tet][3]) != DD_OK)
+                ok = 0, snprintf(why, sizeof why, "allocation %ld: retry failed", k);
+        } else if (ds != DD_OK) {
+            ok = 0, snprintf(why, sizeof why, "allocation %ld: %s (%s)", k, dd_status_name(ds), dd_errmsg(t));
+        }
+        if (ok) ok = checked(t, why, sizeof why) && same_as_cgal(t, c, why, sizeof why);
+        if (!ok && !bad++) fprintf(stderr, "  %s: %s\n", tn, why);
+        shot_free(&before);
+        dd_free(t);
+        if (left > 0) break;
+    }
+    tl_check(st, bad == 0 && nomem > 0, tn, "%ld bad of %ld refusals (CGAL %d)", bad, nomem, cr);
+    dd_cgal_rt_free(c);
+    ws_free(&s);
+}
+#endif
 
 /* ---- refusals ---------------------------------------------------------------------- */
 
@@ -563,6 +687,13 @@ int main(int argc, char **argv)
     edit_case(&st, "helix", &s, nm);
     ws_free(&s);
     filter_case(&st);
+    for (int keep = 1; keep >= 0; keep--)
+        for (int tet = 0; tet <= 1; tet++) {
+            apex_case(&st, tet, keep);
+#ifdef DD_TEST_BUILD
+            apex_fault_case(&st, tet, keep);
+#endif
+        }
     refusals_case(&st);
     copies_case(&st);
 #ifdef DD_TEST_BUILD

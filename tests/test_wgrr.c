@@ -52,13 +52,6 @@ static dd_status delete_by(dd_tri *t, uint32_t v, const char *name)
     return s == DD_OK ? dd_del_vertex(t, id, var) : s;
 }
 
-/* The vertex count is nv and the mesh valid (after a refusal). */
-static int unchanged_cheap(const dd_tri *t, uint32_t nv)
-{
-    char why[256];
-    return dd_num_vertices(t) == nv && checked(t, why, sizeof why);
-}
-
 /* Builds s in one hidden mode here and in CGAL, then deletes `ndel`
  * random vertices with strategy `variant`, comparing with CGAL's
  * remove() and checking after every step.                              */
@@ -70,18 +63,11 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
     dd_cgal_rt *c;
     int ok = ws_build(s, keep, &t, &c, why, sizeof why);
     tl_rng r = {0x5eed + s->n + (uint64_t)keep};
-    uint32_t done = 0, back = 0, framework = 0;
+    uint32_t done = 0, back = 0;
     for (uint32_t k = 0; k < ndel && ok && dd_num_vertices(t) > 8; k++) {
         const uint32_t v = ws_random_vertex(t, &r);
         const uint32_t nv = dd_num_vertices(t);
         const dd_status ds = delete_by(t, v, variant);
-        if (ds == DD_ERR_UNSUPPORTED && strstr(t->err, "are coplanar (not supported yet)") && unchanged_cheap(t, nv)) {
-            /* delete.c's own refusal, before any strategy runs (a hull
-             * vertex whose neighbours and star's hidden points are
-             * coplanar): not this strategy's; the sequence goes on      */
-            framework++;
-            continue;
-        }
         const int cr = dd_cgal_rt_remove(c, v);
         if (ds != DD_OK || cr != 0) {
             ok = 0, snprintf(why, sizeof why, "deleting %u (step %u): %s (%s); CGAL %d", v, k, dd_status_name(ds),
@@ -95,8 +81,7 @@ static void delete_case(tl_state *st, const char *name, const wset *s, uint32_t 
     if (ok && done == 0) ok = 0, snprintf(why, sizeof why, "nothing deleted");
     tl_check(st, ok, tn, "%s", why);
     if (ok && !small)
-        fprintf(stderr, "  %s: %u deletions, %u hidden points came back, %u refused by the framework\n", tn, done,
-                back, framework);
+        fprintf(stderr, "  %s: %u deletions, %u hidden points came back\n", tn, done, back);
     dd_free(t);
     dd_cgal_rt_free(c);
 }

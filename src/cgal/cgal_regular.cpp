@@ -602,3 +602,80 @@ extern "C" int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, 
         return 1;
     }
 }
+
+/* ---- moves through a lower dimension (issue 44) ------------------------------ */
+
+namespace {
+
+/* As remove_index, but CGAL's remove() may leave fewer than 4 vertices or
+ * drop the dimension (it re-inserts the hidden points then, which may
+ * raise it again): 0 done, in whatever dimension; 1 no such vertex.    */
+template <class Policy>
+int remove_index_any_dim(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index)
+{
+    typedef typename Rt_of<Policy>::T T;
+    typename T::Vertex_handle v;
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it)
+        if (it->info() == index) {
+            v = it;
+            break;
+        }
+    if (v == typename T::Vertex_handle())
+        return 1;
+    std::vector<uint32_t> &gone = keys[key_of(v->point())];
+    gone.erase(std::remove(gone.begin(), gone.end(), index), gone.end());
+    r->rt.remove(v);
+    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
+         ++it) {
+        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key_of(it->point()));
+        if (k == keys.end() || k->second.empty())
+            return 1;
+        if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
+            it->info() = k->second.front();
+    }
+    r->hint = r->rt.finite_vertices_begin();
+    return 0;
+}
+
+/* As move_index, through remove_index_any_dim: 3 only when the moved set
+ * ends in less than 3D.                                                 */
+template <class Policy>
+int move_index_any_dim(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w)
+{
+    Key old;
+    if (!key_of_index(c->keys, index, old)) return 1;
+    const Key now = {{p[0], p[1], p[2], w}};
+    if (now == old) return 0;
+    const bool vertex = is_vertex(r, index);
+    typename std::map<Key, std::vector<uint32_t> >::const_iterator same = c->keys.find(now);
+    if (same != c->keys.end())
+        for (std::size_t i = 0; i < same->second.size(); i++)
+            if (same->second[i] != index && is_vertex(r, same->second[i])) return 2;
+    const int gone = vertex ? remove_index_any_dim(r, c->keys, index) : forget_index(r, c->keys, index);
+    if (gone != 0) return gone;
+    const int ins = insert_as(c, weighted_point(p, w), index);
+    if (ins == 2) {
+        const Wpoint back(Bare_point(old[0], old[1], old[2]), old[3]);
+        return insert_as(c, back, index) == 0 && r->rt.dimension() == 3 ? 2 : 1;
+    }
+    if (ins == 0 && r->rt.dimension() != 3) return 3;
+    return ins;
+}
+
+} // namespace
+
+extern "C" int dd_cgal_rt_move_any_dim(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w)
+{
+    if (c == NULL || p == NULL || !finite_point(p, w))
+        return 1;
+    try {
+        if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
+            return move_index_any_dim(c, k, input_index, p, w);
+        if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
+            return move_index_any_dim(c, d, input_index, p, w);
+        return 1;
+    } catch (...) {
+        return 1;
+    }
+}

@@ -97,6 +97,13 @@ int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double p[3], doub
  * failure.  O(n).                                                       */
 int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, uint32_t index);
 
+/* As dd_cgal_rt_move, where the removal may leave fewer than 4 vertices
+ * or only coplanar ones: CGAL's remove() then drops the dimension (the
+ * hidden points it re-inserts, and then (p, w), may raise it again).  0
+ * done, the triangulation in 3D; 3 when it ends in less than 3D (then no
+ * longer usable); 1 and 2 as dd_cgal_rt_move.  O(n).                   */
+int dd_cgal_rt_move_any_dim(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w);
+
 #ifdef __cplusplus
 }
 #endif

@@ -468,21 +468,32 @@ static dd_status settle_hidden(dd_del *d, dd_status s, size_t nrel, size_t nforg
 /* ---- DELETEVERTEX -------------------------------------------------------- */
 
 /* Step 2: four independent sites and the strategy's fill, or the forced
- * coplanar-hull fill.                                                   */
+ * coplanar-hull fill.
+ *
+ * The forced fill also serves when the star holds hidden points: every
+ * site is then on the plane P of q's finite neighbours (else the base
+ * exists), so each hidden point h lies in the polygon D of the finite
+ * link triangles, on P.  None comes back: the cell (a,b,c,d) across a
+ * link triangle abc of D from q stays, and on P its power sphere is the
+ * power circle of a, b, c (the power of a point of P is the same for
+ * both, for every weight d has, so CGAL's perturbation of the 3D test
+ * skips d and matches its 2D one); h was not in conflict with that cell,
+ * so h stays hidden in the 2D regular triangulation of D's sites, whose
+ * triangles are D's.  CGAL's remove() fills the hole alike (the link's
+ * plane triangulated, q's point as the infinite vertex) and hides each
+ * re-inserted h again, on the new hull.  They are re-homed in the cells
+ * across D (hidden.c's settle), as without the fill.                    */
 static dd_status fill_step(dd_del *d, dd_status (*fill)(dd_del *))
 {
     dd_tri *t = d->t;
     if (dd_del_pick_base(d, d->order.a, d->order.n) == DD_OK) return fill(d);
     /* Coplanar sites: q is on the hull.  If every finite cell holds q,
-     * every other point is a neighbour: all coplanar.                   */
+     * every other vertex is a neighbour, and every hidden point of t is
+     * in the star: all the points left are coplanar.                    */
     const uint32_t q = d->q;
-    if (d->star.n - d->star_inf == t->nfinite && !d->hpts.n)
+    if (d->star.n - d->star_inf == t->nfinite)
         return dd_fail(t, DD_ERR_DIMENSION, "deleting point %u would leave only coplanar points", t->v2in[q]);
     if (!d->on_hull) return dd_fail(t, DD_ERR_INTERNAL, "interior point %u has coplanar neighbours", t->v2in[q]);
-    if (d->hpts.n)
-        return dd_fail(t, DD_ERR_UNSUPPORTED,
-                       "deleting point %u: its neighbours and the hidden points of its star are coplanar "
-                       "(not supported yet)", t->v2in[q]);
     d->forced_fill = 1;
     return fill_coplanar_hull(d);
 }

@@ -28,9 +28,11 @@
  * rule, inserting into DT(x) is ordinary Bowyer-Watson: QCONFLICTDTINSERT.
  *
  * Special case handled by the framework before any strategy runs: a hull
- * vertex whose finite neighbours are all coplanar.  Then no finite cell
- * can fill the cavity and the fill is forced: each finite link triangle
- * becomes a hull facet, the cell (a,b,c,DD_INF).
+ * vertex whose finite neighbours are all coplanar (and, on a weighted t,
+ * the hidden points of its star too).  Then no finite cell can fill the
+ * cavity and the fill is forced: each finite link triangle becomes a
+ * hull facet, the cell (a,b,c,DD_INF); the star's hidden points, all on
+ * that plane, stay hidden (delete.c, fill_step).
  */
 #ifndef DD_DELETE_H
 #define DD_DELETE_H
