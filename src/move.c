@@ -19,9 +19,12 @@
  * triangulation of the moved point set, in discard mode also what is
  * forgotten (the points the new one hides once v is gone, or the new one
  * itself).  Two courses:
- *  1. the relocation filter with power tests (mesh/hidden_move.c): when
- *     no cell changes and every hidden point of v's star stays hidden in
- *     its cell, the move only writes the point and weight, O(star);
+ *  1. the relocation filter and a few 2-3 and 3-2 flips with power tests
+ *     (mesh/flip.c, dd_move_power_by_flips): when v's star stays
+ *     positive, the flips make every facet locally regular and every
+ *     kept hidden point stays hidden (re-homed in the cells flipped),
+ *     nothing is hidden anew: the reference's state, O(star) plus O(1)
+ *     a flip;
  *  2. else exactly the reference's order: v deleted with the default
  *     strategy (its star's hidden points come back or are re-homed),
  *     then its id inserted at (p, w) by CGAL's rule, which may hide it,
@@ -253,9 +256,11 @@ static dd_status move_weighted(dd_tri *t, uint32_t input, const double p[3], dou
     const double *x = dd_pt(t, v);
     if (x[0] == p[0] && x[1] == p[1] && x[2] == p[2] && t->wt[v] == w) return DD_OK;
     if (hidden) return move_hidden(t, v, p, w);
-    if (dd_move_power_in_place(t, v, p, w, &s)) {
+    int flips;
+    if (dd_move_power_by_flips(t, v, p, w, &flips, &s)) {
         dd_grid_note(t, v);
-        t->moves_kept++;
+        if (flips) t->moves_flipped++;
+        else t->moves_kept++;
         return DD_OK;
     }
     if (s != DD_OK) return dd_fail(t, s, "out of memory");

@@ -471,6 +471,56 @@ static void apex_fault_case(tl_state *st, int tet, int keep)
 }
 #endif
 
+/* The flips course (flip.c with power tests): moves by 5% of the
+ * spacing, weight kept (dd_move), and re-weightings in place by a
+ * factor in [0.9, 1.1), as the wedits bench makes them, each compared
+ * with CGAL's remove then insert; on uniform points some are repaired
+ * by flips, kept hidden points re-homed in the cells flipped.          */
+static void flips_case(tl_state *st, const char *name, const wset *s, int need_flips)
+{
+    for (int keep = 1; keep >= 0; keep--) {
+        char tn[160], why[256] = "";
+        snprintf(tn, sizeof tn, "flips/%s/%s", name, keep ? "keep" : "discard");
+        pair pr;
+        int ok = pair_make(&pr, s, keep, why, sizeof why);
+        tl_rng r = {0xf11b + s->n + (uint64_t)keep};
+        dd_counters c0, c1;
+        if (ok) dd_get_counters(pr.t, &c0);
+        const uint32_t steps = small ? 60 : 240;
+        for (uint32_t m = 0; m < steps && ok; m++) {
+            const uint32_t v = pick(pr.t, &r, 1);
+            if (v == UINT32_MAX) break;
+            double p[3], w = pr.w[v];
+            memcpy(p, pr.p + 3 * (size_t)v, sizeof p);
+            if (m % 2) {
+                w *= 0.9 + 0.2 * tl_unif(&r);
+            } else {
+                for (int c = 0; c < 3; c++) p[c] += 0.05 * pr.h * (2 * tl_unif(&r) - 1);
+            }
+            const dd_status ds = m % 2 ? dd_move_weighted(pr.t, v, p, w) : dd_move(pr.t, v, p);
+            const int cr = dd_cgal_rt_move(pr.c, v, p, w);
+            if (ds == DD_ERR_DUPLICATE && cr == 2) continue;
+            if (ds != DD_OK || cr != 0) {
+                ok = 0, snprintf(why, sizeof why, "move %u: %s, CGAL %d", v, dd_status_name(ds), cr);
+                break;
+            }
+            memcpy(pr.p + 3 * (size_t)v, p, sizeof p);
+            pr.w[v] = w;
+            ok = agree(&pr, m % 2 ? "re-weighting" : "5% move", why, sizeof why);
+        }
+        uint64_t flipped = 0, redone = 0;
+        if (ok) {
+            dd_get_counters(pr.t, &c1);
+            flipped = c1.moves_flipped - c0.moves_flipped, redone = c1.moves_redone - c0.moves_redone;
+        }
+        if (ok && need_flips && flipped == 0) ok = 0, snprintf(why, sizeof why, "no move was repaired by flips");
+        tl_check(st, ok, tn, "%s", why);
+        if (ok) fprintf(stderr, "  %s: %llu moves by flips, %llu by removal and insertion\n", tn,
+                        (unsigned long long)flipped, (unsigned long long)redone);
+        pair_free(&pr);
+    }
+}
+
 /* ---- refusals ---------------------------------------------------------------------- */
 
 static void refusals_case(tl_state *st)
@@ -694,6 +744,15 @@ int main(int argc, char **argv)
             apex_fault_case(&st, tet, keep);
 #endif
         }
+    s = gen_uniform(small ? 300 : 1000, 1, 78);
+    flips_case(&st, "uniform-w1", &s, 1);
+    ws_free(&s);
+    s = gen_uniform(small ? 300 : 1000, 10, 79);
+    flips_case(&st, "uniform-w10", &s, 1);
+    ws_free(&s);
+    s = gen_grid(small ? 4 : 6, small ? 30 : 100, 1, 8);
+    flips_case(&st, "grid-dups", &s, 0);
+    ws_free(&s);
     refusals_case(&st);
     copies_case(&st);
 #ifdef DD_TEST_BUILD

@@ -30,6 +30,7 @@
  * Cost: O(star) tests, plus O(1) a flip.
  */
 #include "mesh/mesh.h"
+#include "mesh/hidden_move.h"
 #include "geom/lift.h"
 
 #include <stdlib.h>
@@ -47,6 +48,7 @@ typedef struct flip_state {
     dd_mark touched;            /* stamp of a cell logged already          */
     dd_mark replaced;           /* stamp of a cell a flip replaced         */
     int flips;
+    int power;                  /* power tests: weighted t (DESIGN 12)    */
 } flip_state;
 
 /* Logs cell c before its first write in this repair. */
@@ -200,6 +202,21 @@ static int flip(flip_state *f, uint32_t c, uint32_t i, dd_status *err)
     return 0;
 }
 
+/* Facet i of cell c is not locally Delaunay (locally regular, with
+ * power tests): the apex across it is in conflict with c, or across a
+ * hull facet, c's own apex is in conflict with the infinite cell.      */
+static int facet_bad(const flip_state *f, uint32_t c, uint32_t i)
+{
+    dd_tri *t = f->t;
+    const uint32_t g = dd_tn(t, c)[i], n = g >> 2, o = dd_tv(t, n)[g & 3], x = dd_tv(t, c)[i];
+    if (f->power) {
+        if (o != DD_INF) return dd_cell_power_conflict_fast(t, c, dd_pt(t, o), t->wt[o]);
+        return x != DD_INF && dd_cell_power_conflict_fast(t, n, dd_pt(t, x), t->wt[x]);
+    }
+    if (o != DD_INF) return dd_cell_conflict_fast(t, c, dd_pt(t, o));
+    return x != DD_INF && dd_cell_conflict(t, n, dd_pt(t, x));
+}
+
 /* Lawson's loop over the stacked facets: 1 when every facet is locally
  * Delaunay, 0 to give up.  A facet not flippable now is kept aside and
  * tried again once the stack is empty.                                  */
@@ -219,10 +236,8 @@ static int lawson(flip_state *f, dd_status *err)
         while (ok && f->stack->n > 0) {
             const uint32_t fc = f->stack->a[--f->stack->n], c = fc >> 2, i = fc & 3;
             if (dd_tv(t, c)[0] == DD_DEAD || is_gone(f, c)) continue;
-            const uint32_t g = dd_tn(t, c)[i], n = g >> 2, o = dd_tv(t, n)[g & 3];
-            const int bad = o != DD_INF ? dd_cell_conflict_fast(t, c, dd_pt(t, o))
-                                        : dd_tv(t, c)[i] != DD_INF && dd_cell_conflict(t, n, dd_pt(t, dd_tv(t, c)[i]));
-            if (!bad) continue;
+            const uint32_t g = dd_tn(t, c)[i], n = g >> 2;
+            if (!facet_bad(f, c, i)) continue;
             if (dd_is_infinite_cell(t, c) || dd_is_infinite_cell(t, n) || f->flips >= DD_FLIP_MAX) { ok = 0; break; }
             const int r = flip(f, c, i, err);
             if (*err != DD_OK || r < 0) ok = 0;
@@ -323,7 +338,7 @@ int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_st
     for (int k = 0; k < 5; k++) sc[k].n = 0;
     if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;
     const dd_mark mark = dd_new_epoch(t, 2);
-    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0};
+    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0, 0};
     double *x = t->xyz + 3 * (size_t)v, old[3] = {x[0], x[1], x[2]};
     x[0] = p[0], x[1] = p[1], x[2] = p[2];
     if (!star_test(&f, v, p)) {
@@ -341,4 +356,70 @@ int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_st
         *flips = f.flips;
     }
     return ok;
+}
+
+/* ---- weighted moves --------------------------------------------------- */
+
+/* The weighted counterpart of star_test, v now at its new point (moved:
+ * the point changed, not only the weight): every finite star cell
+ * positively oriented, then every facet of the star on f->stack (room
+ * made by the caller) for Lawson's exact power tests.  0 when a star
+ * cell is not positively oriented.                                      */
+static int star_test_power(flip_state *f, uint32_t v, int moved)
+{
+    dd_tri *t = f->t;
+    const dd_vec *star = &t->conflict;
+    dd_vec *stack = f->stack;
+    for (size_t k = 0; k < star->n; k++) {
+        const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
+        const uint32_t i = dd_slot_of(w, v);
+        if (moved && !has(w, DD_INF) && orient4(t, w) <= 0) return 0;
+        for (uint32_t j = 0; j < 4; j++)
+            if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+    }
+    return 1;
+}
+
+/* Writes (p, w) as v's point and weight. */
+static void put_point(dd_tri *t, uint32_t v, const double p[3], double w)
+{
+    double *x = t->xyz + 3 * (size_t)v;
+    x[0] = p[0], x[1] = p[1], x[2] = p[2];
+    t->wt[v] = w;
+}
+
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err)
+{
+    *flips = 0;
+    *err = dd_star_cells(t, v, &t->conflict);
+    if (*err != DD_OK) return 0;
+    dd_vec *sc = t->flip;
+    for (int k = 0; k < 5; k++) sc[k].n = 0;
+    if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;
+    const dd_mark mark = dd_new_epoch(t, 2);
+    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0, 1};
+    const double *x = dd_pt(t, v);
+    const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
+    const int moved = old[0] != p[0] || old[1] != p[1] || old[2] != p[2];
+    put_point(t, v, p, w);
+    if (!star_test_power(&f, v, moved)) {
+        put_point(t, v, old, wold);
+        return 0;
+    }
+    const uint32_t ncell0 = t->ncell;
+    *err = dd_reserve_cells(t, 3 * DD_FLIP_MAX);
+    if (*err == DD_OK && t->hid && t->hid->keep) *err = dd_hidden_room(t, (size_t)ncell0 + 3 * DD_FLIP_MAX);
+    int ok = *err == DD_OK && lawson(&f, err);
+    dd_vec *homes = f.stack;                 /* empty once Lawson's loop succeeded */
+    if (ok && t->hid && t->hid->keep)
+        ok = dd_hidden_flips_hold(t, f.made, f.gone, f.replaced, moved, homes, err);
+    if (!ok) {
+        undo(&f, ncell0);
+        put_point(t, v, old, wold);
+        return 0;
+    }
+    commit(&f);
+    if (t->hid && t->hid->keep) dd_hidden_flips_rehome(t, f.gone, homes);
+    *flips = f.flips;
+    return 1;
 }

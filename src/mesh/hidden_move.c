@@ -1,12 +1,14 @@
 /*
- * hidden_move.c -- a kept hidden point forgotten, and the relocation
- * filter of a weighted move (hidden_move.h; DESIGN 12, issue 44).
+ * hidden_move.c -- a kept hidden point forgotten, and the hidden points
+ * of a weighted move repaired by flips (hidden_move.h; DESIGN 12,
+ * issue 44).
  *
- * The filter is the weighted counterpart of flip.c's star test, without
- * flips: a weighted move either changes nothing but v's point and weight
- * (tested here, exactly) or goes through a removal and an insertion
- * (src/move.c).  Hidden points are hidden.c's; this file reads a cell's
- * list and unlinks one point, keeping hidden.h's invariants.
+ * A weighted move repaired by flips (flip.c) asks here whether every
+ * kept hidden point of the cells it changed stays hidden, and where; a
+ * move that cannot be repaired so goes through a removal and an
+ * insertion (src/move.c).  Hidden points are hidden.c's; this file reads
+ * a cell's lists, unlinks one point and moves the points of the cells a
+ * flip replaced, keeping hidden.h's invariants.
  */
 #include "mesh/hidden_move.h"
 
@@ -40,66 +42,53 @@ static int holds(dd_tri *t, uint32_t c, const double *p)
     return 1;
 }
 
-/* Every hidden point kept in the cells cells[0..n) still in its cell's
- * closure and not in power conflict with it.                          */
-static int hidden_stay(dd_tri *t, const uint32_t *cells, size_t n)
+/* Kept hidden point x of live cell c stays there: in c's closure (when
+ * checked) and not in power conflict with it.                          */
+static int stays_in(dd_tri *t, uint32_t c, uint32_t x, int check_closure)
+{
+    const double *p = dd_pt(t, x);
+    return (!check_closure || holds(t, c, p)) && !dd_cell_power_conflict_fast(t, c, p, t->wt[x]);
+}
+
+int dd_hidden_flips_hold(dd_tri *t, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+                         dd_vec *homes, dd_status *err)
 {
     const dd_hidset *h = t->hid;
-    if (!h->keep) return 1;
-    for (size_t k = 0; k < n; k++) {
-        const uint32_t c = cells[k];
-        if (c >= h->ncap) continue;
+    const dd_vec *star = &t->conflict;
+    homes->n = 0;
+    for (size_t k = 0; k < star->n; k++) {
+        const uint32_t c = star->a[k];
+        if (c >= h->ncap || t->stamp[c] == gone_mark) continue;
         for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x])
-            if (!holds(t, c, dd_pt(t, x)) || dd_cell_power_conflict_fast(t, c, dd_pt(t, x), t->wt[x])) return 0;
+            if (!stays_in(t, c, x, moved)) return 0;
+    }
+    for (size_t k = 0; k < gone->n; k++) {
+        const uint32_t g = gone->a[k];
+        if (g >= h->ncap) continue;
+        for (uint32_t x = h->head[g]; x != DD_NONE; x = h->next[x]) {
+            uint32_t home = DD_NONE;
+            for (size_t m = 0; m < made->n && home == DD_NONE; m++) {
+                const uint32_t c = made->a[m];
+                if (t->stamp[c] != gone_mark && holds(t, c, dd_pt(t, x))) home = c;
+            }
+            if (home == DD_NONE || !stays_in(t, home, x, 0)) return 0;
+            if ((*err = dd_vec_room(homes, 2)) != DD_OK) return 0;
+            homes->a[homes->n++] = x;
+            homes->a[homes->n++] = home;
+        }
     }
     return 1;
 }
 
-/* Facet j of star cell c is locally regular: the apex across it is not
- * in power conflict with c; across a hull facet (apex DD_INF), c's own
- * apex is not in conflict with the infinite cell.  The rule flip.c's
- * Lawson loop applies with the in-sphere test.                        */
-static int locally_regular(dd_tri *t, uint32_t c, uint32_t j)
+void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes)
 {
-    const uint32_t g = dd_tn(t, c)[j], n = g >> 2, o = dd_tv(t, n)[g & 3];
-    if (o != DD_INF) return !dd_cell_power_conflict_fast(t, c, dd_pt(t, o), t->wt[o]);
-    const uint32_t x = dd_tv(t, c)[j];
-    return x == DD_INF || !dd_cell_power_conflict_fast(t, n, dd_pt(t, x), t->wt[x]);
-}
-
-/* The star t->conflict (marked with epoch ep) with v at its new point:
- * positive finite cells, locally regular facets (each shared facet
- * once), hidden points staying.                                        */
-static int star_stays(dd_tri *t, dd_mark ep)
-{
-    const dd_vec *star = &t->conflict;
-    for (size_t k = 0; k < star->n; k++) {
-        const uint32_t c = star->a[k], *w = dd_tv(t, c);
-        if (dd_is_infinite_cell(t, c)) continue;
-        if (dd_orient3d(&t->pred, dd_pt(t, w[0]), dd_pt(t, w[1]), dd_pt(t, w[2]), dd_pt(t, w[3])) <= 0) return 0;
+    dd_hidset *h = t->hid;
+    for (size_t k = 0; k < gone->n; k++)
+        if (gone->a[k] < h->ncap) h->head[gone->a[k]] = DD_NONE;
+    for (size_t k = 0; k < homes->n; k += 2) {
+        const uint32_t x = homes->a[k], c = homes->a[k + 1];
+        h->next[x] = h->head[c];
+        h->head[c] = x;
+        h->cell[x] = c;
     }
-    for (size_t k = 0; k < star->n; k++) {
-        const uint32_t c = star->a[k];
-        for (uint32_t j = 0; j < 4; j++) {
-            const uint32_t n = dd_tn(t, c)[j] >> 2;
-            if (t->stamp[n] == ep && n < c) continue;      /* tested from n */
-            if (!locally_regular(t, c, j)) return 0;
-        }
-    }
-    return hidden_stay(t, star->a, star->n);
-}
-
-int dd_move_power_in_place(dd_tri *t, uint32_t v, const double p[3], double w, dd_status *err)
-{
-    *err = dd_star_cells(t, v, &t->conflict);
-    if (*err != DD_OK) return 0;
-    const dd_mark ep = t->stamp[t->vcell[v]];
-    double *x = t->xyz + 3 * (size_t)v;
-    const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
-    x[0] = p[0], x[1] = p[1], x[2] = p[2];
-    t->wt[v] = w;
-    if (star_stays(t, ep)) return 1;
-    x[0] = old[0], x[1] = old[1], x[2] = old[2];
-    t->wt[v] = wold;
-    return 0;
 }

@@ -1,8 +1,9 @@
 /*
  * hidden_move.h -- what the weighted edits of issue 44 need from the mesh
  * beyond an insertion and a deletion: a kept hidden point forgotten (a
- * hidden point deleted), the relocation filter of a weighted move (the
- * star's power tests and its hidden points), and the regular
+ * hidden point deleted), a weighted move repaired by flips (the
+ * relocation filter and flip.c's loop with power tests, and the hidden
+ * points of the cells flipped), and the regular
  * triangulation rebuilt without a set of points (dd_delete_set's other
  * course).  Hidden points stay hidden.c's: this file reads its lists
  * (hidden.h's dd_hidset) and changes them only through the same steps.
@@ -20,21 +21,36 @@
  * its cell's list).                                                    */
 void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell);
 
-/* The relocation filter of a weighted move: vertex v of the weighted t
- * moved in place to (p, w) when that changes no cell and no hidden
- * point's cell, and then returns 1 (its point and weight written).
- * The test, exact and perturbed: every finite cell of v's star is
- * positively oriented with v at p; every facet of a star cell is
- * locally regular (the apex across it is not in power conflict with
- * the cell, CGAL's rule for infinite cells included); and every hidden
- * point kept in a star cell still lies in its closure and is not in
- * power conflict with it.  Then the mesh is the regular triangulation
- * of its vertices (the regular lemma), and each hidden point is hidden
- * where it is: the state a removal and an insertion would reach, in
- * either hidden mode (nothing is hidden or forgotten anew).  Else 0,
- * nothing changed.  t->conflict as scratch; *err DD_ERR_NOMEM (and 0)
- * when out of memory.  O(star + its hidden points) tests.              */
-int dd_move_power_in_place(dd_tri *t, uint32_t v, const double p[3], double w, dd_status *err);
+/* Moves vertex v of the weighted t to (p, w) and repairs the mesh by
+ * 2-3 and 3-2 flips with power tests (flip.c): 1 when that yields the
+ * state a removal of v and an insertion of (p, w) reach, in either
+ * hidden mode (*flips of them; 0 flips: the relocation filter), else 0
+ * with the mesh, the hidden points and v's point and weight unchanged.
+ * It yields that state when every star cell stays positively oriented,
+ * Lawson's loop ends with every facet locally regular (the mesh is then
+ * the regular triangulation of its vertices: none was hidden anew, v
+ * included) and, hidden points kept, each stays hidden in a cell (see
+ * dd_hidden_flips_hold).  Exact, perturbation included.  O(star) plus
+ * O(1) a flip and a hidden point of a cell flipped; t->conflict as
+ * scratch; *err DD_ERR_NOMEM (and 0) when out of memory.               */
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err);
+
+/* For dd_move_power_by_flips, hidden points kept, before it commits:
+ * the cells gone[0..) (stamped gone_mark) replaced by the others of
+ * made[0..), over the same region, and v's point (moved) or weight
+ * changed in the live cells of its star t->conflict.  1 if every kept
+ * hidden point stays hidden: one of a live star cell in its closure
+ * (when moved) and not in power conflict with it, one of a gone cell
+ * in the closure of a live made cell and not in conflict with it; that
+ * cell is its new home, written to homes as (point, cell) pairs.  Else
+ * 0; *err DD_ERR_NOMEM (and 0) when homes cannot grow.  Reads only.    */
+int dd_hidden_flips_hold(dd_tri *t, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+                         dd_vec *homes, dd_status *err);
+
+/* After the flips committed (the cells gone[0..) dead): their lists
+ * emptied, each point of homes in its new cell's list (room reserved
+ * by dd_hidden_room).  O(homes + gone).                                */
+void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes);
 
 /* Replaces the cells of the weighted t by the regular triangulation of
  * its points but the vertex ids ids[0..n) (sorted ascending): every
