@@ -106,7 +106,11 @@ static void take_lists(dd_hidset *h, const uint32_t *cells, size_t n)
     for (size_t i = 0; i < n; i++) {
         const uint32_t c = cells[i];
         if (c >= h->ncap) continue;
-        for (uint32_t v = h->head[c]; v != DD_NONE; v = h->next[v]) h->taken.a[h->taken.n++] = v;
+        for (uint32_t v = h->head[c], nx; v != DD_NONE; v = nx) {
+            nx = h->next[v];
+            h->taken.a[h->taken.n++] = v;
+            h->next[v] = DD_NONE;               /* no start of its own (settle) */
+        }
         h->head[c] = DD_NONE;
     }
 }
@@ -155,16 +159,49 @@ dd_status dd_hidden_take_region(dd_tri *t)
     return DD_OK;
 }
 
-dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint32_t **pts, size_t *npts)
+/* Whether every list of cells[0..n) is empty (every id below ncap): the
+ * heads and-ed together, no branch a cell, no write.                    */
+static int lists_empty(const dd_hidset *h, const uint32_t *cells, size_t n)
+{
+    uint32_t all = DD_NONE;
+    for (size_t i = 0; i < n; i++) all &= h->head[cells[i]];
+    return all == DD_NONE;
+}
+
+/* Moves the lists of cells[0..n), the star of vertex q, to taken (room
+ * reserved), each point with the outside facet across the facet of its
+ * cell opposite q in next[] (the point is on no list while taken): after
+ * the deletion that facet's neighbour is the new cell over the point's
+ * old link triangle, where dd_hidden_settle starts its walk.            */
+static void take_star_lists(dd_tri *t, dd_hidset *h, const uint32_t *cells, size_t n, uint32_t q)
+{
+    for (size_t i = 0; i < n; i++) {
+        const uint32_t c = cells[i];
+        uint32_t v = h->head[c];
+        if (v == DD_NONE) continue;
+        const uint32_t out = dd_tn(t, c)[dd_slot_of(dd_tv(t, c), q)];
+        while (v != DD_NONE) {
+            const uint32_t nx = h->next[v];
+            h->taken.a[h->taken.n++] = v;
+            h->next[v] = out;
+            v = nx;
+        }
+        h->head[c] = DD_NONE;
+    }
+}
+
+dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, uint32_t q, const uint32_t **pts, size_t *npts)
 {
     dd_hidset *h = t->hid;
     const size_t before = h->taken.n;
-    if (h->keep) {
+    if (h->keep && h->all.n) {
         /* every point taken is hidden and taken once: room for all of
-         * them (seldom grown) spares a counting pass over the cells      */
+         * them (seldom grown) spares a counting pass over the cells;
+         * heads for every cell id spare a bounds test a cell            */
         dd_status s = dd_vec_room(&h->taken, h->all.n);
+        if (s == DD_OK) s = room_cells(h, t->ncell);
         if (s != DD_OK) return s;
-        take_lists(h, cells, n);
+        if (!lists_empty(h, cells, n)) take_star_lists(t, h, cells, n, q);
     }
     *pts = h->taken.n > before ? h->taken.a + before : NULL;   /* no pointer arithmetic on NULL */
     *npts = h->taken.n - before;
@@ -202,6 +239,17 @@ static dd_status home_of(dd_tri *t, const double *p, uint32_t start, uint32_t *c
     return s;
 }
 
+/* Where the walk re-homing taken point v starts: the cell across the
+ * outside facet noted when v was taken (take_star_lists), a new cell
+ * over v's old link triangle, when there is one; else `prev`.          */
+static uint32_t walk_start(const dd_tri *t, const dd_hidset *h, uint32_t v, uint32_t prev)
+{
+    const uint32_t out = h->next[v];
+    if (out == DD_NONE || dd_tv(t, out >> 2)[0] == DD_DEAD) return prev;
+    const uint32_t c = dd_tn(t, out >> 2)[out & 3] >> 2;
+    return dd_tv(t, c)[0] == DD_DEAD ? prev : c;
+}
+
 dd_status dd_hidden_settle(dd_tri *t)
 {
     dd_hidset *h = t->hid;
@@ -220,7 +268,7 @@ dd_status dd_hidden_settle(dd_tri *t)
     h->seen.n = 0;
     for (size_t k = 0; k < h->taken.n && s == DD_OK; k++) {
         const uint32_t v = h->taken.a[k];
-        if ((s = home_of(t, dd_pt(t, v), start, &c)) != DD_OK) break;
+        if ((s = home_of(t, dd_pt(t, v), walk_start(t, h, v, start), &c)) != DD_OK) break;
         put(h, c, v);
         start = c;
     }
