@@ -14,9 +14,13 @@
  * CGAL's Regular_triangulation_cell_base_3 keeps them; per hidden point
  * its cell (cell[v], DD_NONE when v is not hidden), so that "is v
  * hidden" and "where is v" are O(1); and a dense list of them (all[],
- * with at[v] the position of v) so that listing them is O(h).  Cost: 4
- * bytes a cell and 16 a vertex id, only in weighted triangulations that
- * keep hidden points; nothing in the others (t->hid is NULL there).
+ * with at[v] the position of v) so that listing them is O(h).  Per
+ * vertex, nin[x] bounds from above the hidden points in the cells
+ * through x (each point counts once for each corner of its cell; a point
+ * forgotten by dd_hidden_forget is not taken off): 0 lets a deletion of
+ * x skip its star's lists.  Cost: 4 bytes a cell and 20 a vertex id,
+ * only in weighted triangulations that keep hidden points; nothing in
+ * the others (t->hid is NULL there).
  *
  * Edits.  An insertion whose conflict region is about to be replaced
  * takes the lists of those cells and notes their vertices
@@ -46,6 +50,8 @@ typedef struct dd_hidset {
     int keep;               /* 0: DD_DISCARD_HIDDEN, the lists stay empty */
     uint32_t *head, ncap;   /* per cell: its first hidden point or DD_NONE */
     uint32_t *next, *cell, *at, vcap;   /* per vertex id (see above)     */
+    uint32_t *nin;          /* per vertex id: at least the number of
+                               hidden points in the cells of its star   */
     dd_vec all;             /* the hidden vertex ids, in no order        */
     dd_vec taken;           /* points taken, waiting to be re-homed      */
     dd_vec seen;            /* vertices of the cells replaced            */
