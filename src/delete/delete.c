@@ -362,7 +362,7 @@ static dd_status take_hidden(dd_del *d)
     dd_tri *t = d->t;
     const uint32_t *pts;
     size_t np;
-    dd_status s = dd_hidden_take(t, d->star.a, d->star.n, &pts, &np);
+    dd_status s = dd_hidden_take(t, d->star.a, d->star.n, d->q, &pts, &np);
     if (s != DD_OK) return s;
     if ((s = dd_vec_room(&d->hpts, np)) != DD_OK) {
         (void)dd_hidden_settle(t);              /* back where they were */

@@ -32,6 +32,7 @@ void dd_hidden_free(dd_tri *t)
     dd_mfree(h->next);
     dd_mfree(h->cell);
     dd_mfree(h->at);
+    dd_mfree(h->nin);
     dd_vec_free(&h->all);
     dd_vec_free(&h->taken);
     dd_vec_free(&h->seen);
@@ -61,31 +62,40 @@ static dd_status room_vertices(dd_hidset *h, size_t nv)
     if (nv <= h->vcap) return DD_OK;
     size_t cap = h->vcap ? h->vcap : 64;
     while (cap < nv) cap *= 2;
-    uint32_t **arr[3] = {&h->next, &h->cell, &h->at};
-    for (int k = 0; k < 3; k++) {
+    uint32_t **arr[4] = {&h->next, &h->cell, &h->at, &h->nin};
+    for (int k = 0; k < 4; k++) {
         uint32_t *a = dd_realloc(*arr[k], cap * sizeof *a);
         if (!a) return DD_ERR_NOMEM;
         *arr[k] = a;
     }
-    for (size_t v = h->vcap; v < cap; v++) h->cell[v] = DD_NONE;
+    for (size_t v = h->vcap; v < cap; v++) h->cell[v] = DD_NONE, h->nin[v] = 0;
     h->vcap = (uint32_t)cap;
     return DD_OK;
 }
 
-/* Puts v on cell c's list (room reserved; v on no list). */
-static void put(dd_hidset *h, uint32_t c, uint32_t v)
+/* Counts a point in or out of the stars of finite cell c's vertices
+ * (nin, see hidden.h): d = 1 or -1 (as unsigned).                      */
+static void count_in_stars(const dd_tri *t, dd_hidset *h, uint32_t c, uint32_t d)
 {
+    const uint32_t *w = dd_tv(t, c);
+    for (int j = 0; j < 4; j++) h->nin[w[j]] += d;
+}
+
+/* Puts v on finite cell c's list (room reserved; v on no list). */
+static void put(const dd_tri *t, dd_hidset *h, uint32_t c, uint32_t v)
+{
+    count_in_stars(t, h, c, 1);
     h->cell[v] = c;
     h->next[v] = h->head[c];
     h->head[c] = v;
 }
 
 /* Makes v a hidden point in c (room reserved, also in all). */
-static void hide(dd_hidset *h, uint32_t c, uint32_t v)
+static void hide(const dd_tri *t, dd_hidset *h, uint32_t c, uint32_t v)
 {
     h->at[v] = (uint32_t)h->all.n;
     h->all.a[h->all.n++] = v;
-    put(h, c, v);
+    put(t, h, c, v);
 }
 
 dd_status dd_hidden_add(dd_tri *t, uint32_t c, uint32_t v)
@@ -93,20 +103,25 @@ dd_status dd_hidden_add(dd_tri *t, uint32_t c, uint32_t v)
     dd_hidset *h = t->hid;
     if (!h->keep) return DD_OK;
     dd_status s = room_cells(h, (size_t)c + 1);
-    if (s == DD_OK) s = room_vertices(h, (size_t)v + 1);
+    if (s == DD_OK) s = room_vertices(h, (size_t)(v < t->nvid ? t->nvid : v + 1));
     if (s == DD_OK) s = dd_vec_room(&h->all, 1);
     if (s != DD_OK) return s;
-    hide(h, c, v);
+    hide(t, h, c, v);
     return DD_OK;
 }
 
 /* Moves the lists of cells[0..n) to taken (room reserved). */
-static void take_lists(dd_hidset *h, const uint32_t *cells, size_t n)
+static void take_lists(const dd_tri *t, dd_hidset *h, const uint32_t *cells, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         const uint32_t c = cells[i];
         if (c >= h->ncap) continue;
-        for (uint32_t v = h->head[c]; v != DD_NONE; v = h->next[v]) h->taken.a[h->taken.n++] = v;
+        for (uint32_t v = h->head[c], nx; v != DD_NONE; v = nx) {
+            nx = h->next[v];
+            h->taken.a[h->taken.n++] = v;
+            h->next[v] = DD_NONE;               /* no start of its own (settle) */
+            count_in_stars(t, h, c, (uint32_t)-1);
+        }
         h->head[c] = DD_NONE;
     }
 }
@@ -151,20 +166,48 @@ dd_status dd_hidden_take_region(dd_tri *t)
         h->seen.n = 0;
         return s;
     }
-    if (k) take_lists(h, t->conflict.a, nc);
+    if (k) take_lists(t, h, t->conflict.a, nc);
     return DD_OK;
 }
 
-dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint32_t **pts, size_t *npts)
+/* Moves the lists of cells[0..n), the star of vertex q, to taken (room
+ * reserved), each point with the outside facet across the facet of its
+ * cell opposite q in next[] (the point is on no list while taken): after
+ * the deletion that facet's neighbour is the new cell over the point's
+ * old link triangle, where dd_hidden_settle starts its walk.            */
+static void take_star_lists(dd_tri *t, dd_hidset *h, const uint32_t *cells, size_t n, uint32_t q)
+{
+    for (size_t i = 0; i < n; i++) {
+        const uint32_t c = cells[i];
+        uint32_t v = h->head[c];
+        if (v == DD_NONE) continue;
+        const uint32_t out = dd_tn(t, c)[dd_slot_of(dd_tv(t, c), q)];
+        while (v != DD_NONE) {
+            const uint32_t nx = h->next[v];
+            h->taken.a[h->taken.n++] = v;
+            h->next[v] = out;
+            count_in_stars(t, h, c, (uint32_t)-1);
+            v = nx;
+        }
+        h->head[c] = DD_NONE;
+    }
+}
+
+dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, uint32_t q, const uint32_t **pts, size_t *npts)
 {
     dd_hidset *h = t->hid;
     const size_t before = h->taken.n;
     if (h->keep) {
         /* every point taken is hidden and taken once: room for all of
-         * them (seldom grown) spares a counting pass over the cells      */
-        dd_status s = dd_vec_room(&h->taken, h->all.n);
+         * them (seldom grown) spares a counting pass over the cells;
+         * heads for every cell id spare a bounds test a cell; counts for
+         * every vertex id let q's say that its star holds none         */
+        dd_status s = room_vertices(h, t->nvid);
+        if (s == DD_OK && h->nin[q] != 0) {
+            if ((s = dd_vec_room(&h->taken, h->all.n)) == DD_OK) s = room_cells(h, t->ncell);
+            if (s == DD_OK) take_star_lists(t, h, cells, n, q);
+        }
         if (s != DD_OK) return s;
-        take_lists(h, cells, n);
     }
     *pts = h->taken.n > before ? h->taken.a + before : NULL;   /* no pointer arithmetic on NULL */
     *npts = h->taken.n - before;
@@ -174,7 +217,9 @@ dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint3
 dd_status dd_hidden_room(dd_tri *t, size_t ncells)
 {
     dd_hidset *h = t->hid;
-    return h->keep ? room_cells(h, ncells) : DD_OK;
+    if (!h->keep) return DD_OK;
+    dd_status s = room_cells(h, ncells);
+    return s == DD_OK ? room_vertices(h, t->nvid) : s;
 }
 
 void dd_hidden_release(dd_tri *t, uint32_t v)
@@ -202,6 +247,17 @@ static dd_status home_of(dd_tri *t, const double *p, uint32_t start, uint32_t *c
     return s;
 }
 
+/* Where the walk re-homing taken point v starts: the cell across the
+ * outside facet noted when v was taken (take_star_lists), a new cell
+ * over v's old link triangle, when there is one; else `prev`.          */
+static uint32_t walk_start(const dd_tri *t, const dd_hidset *h, uint32_t v, uint32_t prev)
+{
+    const uint32_t out = h->next[v];
+    if (out == DD_NONE || dd_tv(t, out >> 2)[0] == DD_DEAD) return prev;
+    const uint32_t c = dd_tn(t, out >> 2)[out & 3] >> 2;
+    return dd_tv(t, c)[0] == DD_DEAD ? prev : c;
+}
+
 dd_status dd_hidden_settle(dd_tri *t)
 {
     dd_hidset *h = t->hid;
@@ -214,14 +270,14 @@ dd_status dd_hidden_settle(dd_tri *t)
         t->nvert--;
         if (!h->keep) continue;
         if ((s = home_of(t, dd_pt(t, x), start, &c)) != DD_OK) break;
-        hide(h, c, x);
+        hide(t, h, c, x);
         start = c;
     }
     h->seen.n = 0;
     for (size_t k = 0; k < h->taken.n && s == DD_OK; k++) {
         const uint32_t v = h->taken.a[k];
-        if ((s = home_of(t, dd_pt(t, v), start, &c)) != DD_OK) break;
-        put(h, c, v);
+        if ((s = home_of(t, dd_pt(t, v), walk_start(t, h, v, start), &c)) != DD_OK) break;
+        put(t, h, c, v);
         start = c;
     }
     h->taken.n = 0;
@@ -324,6 +380,6 @@ size_t dd_hidden_bytes(const dd_tri *t)
 {
     const dd_hidset *h = t->hid;
     if (!h) return 0;
-    return sizeof *h + (size_t)h->ncap * sizeof(uint32_t) + 3 * (size_t)h->vcap * sizeof(uint32_t)
+    return sizeof *h + (size_t)h->ncap * sizeof(uint32_t) + 4 * (size_t)h->vcap * sizeof(uint32_t)
          + (h->all.cap + h->taken.cap + h->seen.cap) * sizeof(uint32_t);
 }

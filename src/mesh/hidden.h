@@ -14,9 +14,13 @@
  * CGAL's Regular_triangulation_cell_base_3 keeps them; per hidden point
  * its cell (cell[v], DD_NONE when v is not hidden), so that "is v
  * hidden" and "where is v" are O(1); and a dense list of them (all[],
- * with at[v] the position of v) so that listing them is O(h).  Cost: 4
- * bytes a cell and 16 a vertex id, only in weighted triangulations that
- * keep hidden points; nothing in the others (t->hid is NULL there).
+ * with at[v] the position of v) so that listing them is O(h).  Per
+ * vertex, nin[x] bounds from above the hidden points in the cells
+ * through x (each point counts once for each corner of its cell; a point
+ * forgotten by dd_hidden_forget is not taken off): 0 lets a deletion of
+ * x skip its star's lists.  Cost: 4 bytes a cell and 20 a vertex id,
+ * only in weighted triangulations that keep hidden points; nothing in
+ * the others (t->hid is NULL there).
  *
  * Which cell.  A point on a face shared by several cells (a facet, an
  * edge, a vertex's position) is kept in whichever of them the walk that
@@ -48,10 +52,12 @@
  * swallowed into hidden points (or forgets them) and re-homes every
  * point taken, each by an exact walk from the new star, as CGAL's
  * Hidden_point_visitor does.  A deletion (issue 44) does the same with
- * the deleted vertex's star: dd_hidden_take(cells) hands it the star's
+ * the deleted vertex's star: dd_hidden_take(cells, q) hands it the star's
  * hidden points, it decides which come back as vertices
  * (dd_hidden_release for those), and dd_hidden_settle re-homes the rest
- * in the new cells.  Cost: one walk of a few cells per point re-homed.
+ * in the new cells, each walk starting at the new cell over the link
+ * triangle of the cell it was taken from.  Cost: one walk of a few
+ * cells per point re-homed.
  *
  * Invariants (dd_hidden_check proves them): a dead cell's list is empty;
  * a cell at or past ncap has an empty list; cell[v] == c iff v is on c's
@@ -68,6 +74,8 @@ typedef struct dd_hidset {
     int keep;               /* 0: DD_DISCARD_HIDDEN, the lists stay empty */
     uint32_t *head, ncap;   /* per cell: its first hidden point or DD_NONE */
     uint32_t *next, *cell, *at, vcap;   /* per vertex id (see above)     */
+    uint32_t *nin;          /* per vertex id: at least the number of
+                               hidden points in the cells of its star   */
     dd_vec all;             /* the hidden vertex ids, in no order        */
     dd_vec taken;           /* points taken, waiting to be re-homed      */
     dd_vec seen;            /* vertices of the cells replaced            */
@@ -101,11 +109,15 @@ dd_status dd_hidden_add(dd_tri *t, uint32_t c, uint32_t v);
  * points).                                                              */
 dd_status dd_hidden_take_region(dd_tri *t);
 
-/* Takes the hidden points of the live cells cells[0..n) into the list to
- * re-home (their lists emptied), and returns them in *pts, *npts (valid
- * until the next call here).  DD_ERR_NOMEM with nothing changed.  For
- * deletions (issue 44): a point it takes must be released or re-homed. */
-dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, const uint32_t **pts, size_t *npts);
+/* Takes the hidden points of the live cells cells[0..n), the star of
+ * vertex q, into the list to re-home (their lists emptied), and returns
+ * them in *pts, *npts (valid until the next call here).  Each remembers
+ * the facet outside the star across its cell's facet opposite q, where
+ * dd_hidden_settle starts the walk that re-homes it.  DD_ERR_NOMEM with
+ * nothing changed.  For deletions (issue 44): a point it takes must be
+ * released or re-homed.  O(n) loads, no writes when none is hidden.   */
+dd_status dd_hidden_take(dd_tri *t, const uint32_t *cells, size_t n, uint32_t q, const uint32_t **pts,
+                         size_t *npts);
 
 /* Makes room for hidden points in cells of id below ncells, so that a
  * deletion's dd_hidden_settle can re-home points in the cells it makes
