@@ -366,11 +366,16 @@ dd_status dd_hidden_check(const dd_tri *t, dd_pred *pr, char *msg, size_t msglen
     for (uint32_t c = 0; c < h->ncap; c++) {
         if (h->head[c] == DD_NONE) continue;
         if (c >= t->ncell || dd_tv(t, c)[0] == DD_DEAD) return REFUTE("dead cell %u keeps hidden points", c);
-        for (uint32_t v = h->head[c]; v != DD_NONE; v = h->next[v]) {
+        size_t k = 0;
+        for (uint32_t v = h->head[c]; v != DD_NONE; v = h->next[v], k++) {
             if (++count > h->all.n) return REFUTE("the hidden lists hold more points than the %zu hidden", h->all.n);
             dd_status s = check_point(t, pr, c, v, msg, msglen);
             if (s != DD_OK) return s;
         }
+        for (int j = 0; j < 4; j++)      /* nin bounds the star's points from above (hidden.h) */
+            if (h->nin[dd_tv(t, c)[j]] < k)
+                return REFUTE("vertex %u's star has %zu hidden points in cell %u, its count says %u",
+                              t->v2in[dd_tv(t, c)[j]], k, c, h->nin[dd_tv(t, c)[j]]);
     }
     if (count != h->all.n) return REFUTE("%zu hidden points recorded, %zu in the cells' lists", h->all.n, count);
     return DD_OK;

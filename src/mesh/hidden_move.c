@@ -90,5 +90,6 @@ void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes)
         h->next[x] = h->head[c];
         h->head[c] = x;
         h->cell[x] = c;
+        for (int j = 0; j < 4; j++) h->nin[dd_tv(t, c)[j]]++;   /* c's corners' bounds (hidden.h) */
     }
 }

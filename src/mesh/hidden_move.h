@@ -49,7 +49,8 @@ int dd_hidden_flips_hold(dd_tri *t, const dd_vec *made, const dd_vec *gone, dd_m
 
 /* After the flips committed (the cells gone[0..) dead): their lists
  * emptied, each point of homes in its new cell's list (room reserved
- * by dd_hidden_room).  O(homes + gone).                                */
+ * by dd_hidden_room) and counted in its corners' stars (nin).
+ * O(homes + gone).                                                    */
 void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes);
 
 /* Replaces the cells of the weighted t by the regular triangulation of
