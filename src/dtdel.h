@@ -335,11 +335,11 @@ dd_status dd_move(dd_tri *t, uint32_t v, const double p[3]);
  * is exactly another point's weighted point that is (or, v removed,
  * becomes) a vertex; DD_ERR_DIMENSION when the moved point set (with
  * the kept hidden points) would be fewer than 4 or coplanar; DD_ERR_NOMEM.
- * Cost: O(degree) power tests when no cell and no hidden point's cell
- * changes (the exact relocation filter); else a deletion of v plus an
- * insertion walked from its old star; where the points left without v
- * would be fewer than 4 or coplanar (every finite cell holds v), a
- * rebuild of the moved set, O(n log n).                                */
+ * Cost: O(degree) power tests when v's star stays regular or a few 2-3
+ * and 3-2 flips repair it, its hidden points staying hidden; else a
+ * deletion of v plus an insertion walked from its old star; where the
+ * points left without v would be fewer than 4 or coplanar (every
+ * finite cell holds v), a rebuild of the moved set, O(n log n).         */
 dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w);
 
 /* Inserts a new point; *index receives its input index.  As CGAL reuses
