@@ -529,7 +529,12 @@ int insert_as(dd_cgal_rt *c, const Wpoint &p, uint32_t index)
 }
 
 template <class Policy>
-int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w)
+int remove_index_any_dim(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index);
+
+/* any_dim: the removal through remove_index_any_dim, and 3 only when the
+ * moved set ends in less than 3D.                                       */
+template <class Policy>
+int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w, bool any_dim)
 {
     Key old;
     if (!key_of_index(c->keys, index, old)) return 1;
@@ -541,13 +546,15 @@ int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3
     if (same != c->keys.end())
         for (std::size_t i = 0; i < same->second.size(); i++)
             if (same->second[i] != index && is_vertex(r, same->second[i])) return 2;
-    const int gone = vertex ? remove_index(r, c->keys, index) : forget_index(r, c->keys, index);
+    const int gone = !vertex ? forget_index(r, c->keys, index)
+                     : any_dim ? remove_index_any_dim(r, c->keys, index) : remove_index(r, c->keys, index);
     if (gone != 0) return gone;
     const int ins = insert_as(c, weighted_point(p, w), index);
     if (ins == 2) {              /* a point the removal brought back: put v back */
         const Wpoint back(Bare_point(old[0], old[1], old[2]), old[3]);
-        return insert_as(c, back, index) == 0 ? 2 : 1;
+        return insert_as(c, back, index) == 0 && (!any_dim || r->rt.dimension() == 3) ? 2 : 1;
     }
+    if (any_dim && ins == 0 && r->rt.dimension() != 3) return 3;
     return ins;
 }
 
@@ -572,9 +579,9 @@ extern "C" int dd_cgal_rt_move(dd_cgal_rt *c, uint32_t input_index, const double
         return 1;
     try {
         if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
-            return move_index(c, k, input_index, p, w);
+            return move_index(c, k, input_index, p, w, false);
         if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
-            return move_index(c, d, input_index, p, w);
+            return move_index(c, d, input_index, p, w, false);
         return 1;
     } catch (...) {
         return 1;
@@ -638,31 +645,6 @@ int remove_index_any_dim(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> >
     return 0;
 }
 
-/* As move_index, through remove_index_any_dim: 3 only when the moved set
- * ends in less than 3D.                                                 */
-template <class Policy>
-int move_index_any_dim(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w)
-{
-    Key old;
-    if (!key_of_index(c->keys, index, old)) return 1;
-    const Key now = {{p[0], p[1], p[2], w}};
-    if (now == old) return 0;
-    const bool vertex = is_vertex(r, index);
-    typename std::map<Key, std::vector<uint32_t> >::const_iterator same = c->keys.find(now);
-    if (same != c->keys.end())
-        for (std::size_t i = 0; i < same->second.size(); i++)
-            if (same->second[i] != index && is_vertex(r, same->second[i])) return 2;
-    const int gone = vertex ? remove_index_any_dim(r, c->keys, index) : forget_index(r, c->keys, index);
-    if (gone != 0) return gone;
-    const int ins = insert_as(c, weighted_point(p, w), index);
-    if (ins == 2) {
-        const Wpoint back(Bare_point(old[0], old[1], old[2]), old[3]);
-        return insert_as(c, back, index) == 0 && r->rt.dimension() == 3 ? 2 : 1;
-    }
-    if (ins == 0 && r->rt.dimension() != 3) return 3;
-    return ins;
-}
-
 } // namespace
 
 extern "C" int dd_cgal_rt_move_any_dim(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w)
@@ -671,9 +653,9 @@ extern "C" int dd_cgal_rt_move_any_dim(dd_cgal_rt *c, uint32_t input_index, cons
         return 1;
     try {
         if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
-            return move_index_any_dim(c, k, input_index, p, w);
+            return move_index(c, k, input_index, p, w, true);
         if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
-            return move_index_any_dim(c, d, input_index, p, w);
+            return move_index(c, d, input_index, p, w, true);
         return 1;
     } catch (...) {
         return 1;
