@@ -30,6 +30,28 @@ void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell)
     *cell = c;
 }
 
+/* Whether hidden points a and b carry the same weighted point. */
+static int same_weighted(const dd_tri *t, uint32_t a, uint32_t b)
+{
+    const double *x = dd_pt(t, a), *y = dd_pt(t, b);
+    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2] && t->wt[a] == t->wt[b];
+}
+
+int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n)
+{
+    const dd_hidset *h = t->hid;
+    if (!h || !h->keep || h->nin[v] < 2) return 0;
+    for (size_t i = 0; i < n; i++)
+        for (uint32_t a = h->head[star[i]]; a != DD_NONE; a = h->next[a]) {
+            for (uint32_t b = h->next[a]; b != DD_NONE; b = h->next[b])
+                if (same_weighted(t, a, b)) return 1;
+            for (size_t j = i + 1; j < n; j++)
+                for (uint32_t b = h->head[star[j]]; b != DD_NONE; b = h->next[b])
+                    if (same_weighted(t, a, b)) return 1;
+        }
+    return 0;
+}
+
 /* Whether p lies in the closure of finite cell c (exact orientations). */
 static int holds(dd_tri *t, uint32_t c, const double *p)
 {
