@@ -40,7 +40,7 @@ static int same_weighted(const dd_tri *t, uint32_t a, uint32_t b)
 int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n)
 {
     const dd_hidset *h = t->hid;
-    if (!h || !h->keep || h->nin[v] < 2) return 0;
+    if (!h || !h->keep || v >= h->vcap || h->nin[v] < 2) return 0;   /* no list yet: none */
     for (size_t i = 0; i < n; i++)
         for (uint32_t a = h->head[star[i]]; a != DD_NONE; a = h->next[a]) {
             for (uint32_t b = h->next[a]; b != DD_NONE; b = h->next[b])
