@@ -232,7 +232,46 @@ static void hidden_difference(const wpair *p, const uint32_t *ha, size_t nha, co
              dd_is_hidden(p->t, twin) ? "hidden here" : "neither");
 }
 
-/* The cells and hidden sets of both sides, CGAL's renamed; dd_check. */
+/* Whether engine indices a and b carry the same weighted point now. */
+static int wp_twins(const wpair *p, uint32_t a, uint32_t b)
+{
+    return !memcmp(p->xyz + 3 * (size_t)a, p->xyz + 3 * (size_t)b, 3 * sizeof *p->xyz) && p->w[a] == p->w[b];
+}
+
+/* Exact copies are one weighted point under several indices: when a
+ * deletion brings one back, each side keeps the lowest index of the
+ * copies in its own numbering, and the two numberings need not agree in
+ * order (an engine index re-used by an insertion takes a new CGAL index).
+ * So a copy present here whose CGAL name is gone there, while a twin gone
+ * here is present there under its CGAL name, swaps names with that twin;
+ * the comparison then holds both sides to the same points.  0, or -1
+ * when CGAL's lists cannot be read.                                     */
+static int wp_rename_copies(wpair *p)
+{
+    uint32_t *v = NULL, *h = NULL;
+    size_t nv = 0, nh = 0;
+    unsigned char *there = calloc(p->ncg + 1, 1);
+    int rc = !there || dd_cgal_rt_vertices(p->c, &v, &nv) || dd_cgal_rt_hidden(p->c, &h, &nh) ? -1 : 0;
+    for (size_t i = 0; rc == 0 && i < nv + nh; i++) {
+        const uint32_t k = i < nv ? v[i] : h[i - nv];
+        if (k < p->ncg) there[k] = 1;
+    }
+    for (uint32_t e = 0; rc == 0 && e < p->ne; e++) {
+        if (p->e2cg[e] >= p->ncg || there[p->e2cg[e]] || !(dd_is_vertex(p->t, e) || dd_is_hidden(p->t, e))) continue;
+        for (uint32_t f = 0; f < p->ne; f++)
+            if (f != e && p->e2cg[f] < p->ncg && there[p->e2cg[f]] && !dd_is_vertex(p->t, f) && !dd_is_hidden(p->t, f) && wp_twins(p, e, f)) {
+                const uint32_t ce = p->e2cg[e], cf = p->e2cg[f];
+                p->e2cg[e] = cf, p->e2cg[f] = ce;
+                p->cg2e[cf] = e, p->cg2e[ce] = f;
+                break;
+            }
+    }
+    free(there), free(v), free(h);
+    return rc;
+}
+
+/* The cells and hidden sets of both sides, CGAL's renamed (exact copies
+ * renamed alike first: wp_rename_copies); dd_check.                   */
 static int wp_check(soak *s, wpair *p, const char *after)
 {
     int32_t *a = NULL, *b = NULL;
@@ -243,7 +282,9 @@ static int wp_check(soak *s, wpair *p, const char *after)
 #ifdef SOAK_TRACE             /* -DSOAK_TRACE: every operation checked */
     printf("[w%d] %s\n", s->worker, after);
 #endif
-    if (dd_canonical(p->t, &a, &na) != DD_OK || dd_cgal_rt_canonical(p->c, &b, &nb))
+    if (wp_rename_copies(p))
+        snprintf(why, sizeof why, "no vertex or hidden list from CGAL");
+    else if (dd_canonical(p->t, &a, &na) != DD_OK || dd_cgal_rt_canonical(p->c, &b, &nb))
         snprintf(why, sizeof why, "no canonical form");
     else if (dd_hidden(p->t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(p->c, &hb, &nhb))
         snprintf(why, sizeof why, "no hidden list");

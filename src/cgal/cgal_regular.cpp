@@ -438,12 +438,18 @@ int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
     r->rt.remove(v);
     if (!any_dim && r->rt.dimension() != 3)
         return 3;
+    std::sort(back.begin(), back.end());
     for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
          ++it) {
-        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key_of(it->point()));
+        const Key key = key_of(it->point());
+        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key);
         if (k == keys.end() || k->second.empty())
             return 1;                     /* a vertex nobody gave */
-        if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
+        /* a point that came back takes the lowest index: CGAL's new
+         * vertex may hold a stale info from a reused vertex slot, even
+         * one of its own copies                                        */
+        if (std::binary_search(back.begin(), back.end(), key) ||
+            std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
             it->info() = k->second.front();
     }
     if (!back.empty()) drop_copies(r, keys, back);
