@@ -193,6 +193,17 @@ static inline double dd_lift_power_err(double m, double W)
     return m >= DD_LIFT_M_MIN && m <= DD_LIFT_M_MAX && M2 <= 1e110 ? 1e-11 * m * m * m * M2 : 1.0 / 0.0;
 }
 
+/* l = (x - q, |x - q|^2 - dw): the weighted lift above, the norm as
+ * dd_lift_row has it and dw = w_x - w_q as the caller rounded it once.
+ * Returns max |x_i - q_i| (rounded), as dd_lift_row; the caller keeps
+ * W = max |dw| for dd_lift_power_err.                                  */
+static inline double dd_lift_row_power(double l[4], const double *x, const double *q, double dw)
+{
+    const double m = dd_lift_row(l, x, q);
+    l[3] -= dw;
+    return m;
+}
+
 /* ---- the integer modes --------------------------------------------------
  *
  * When q and every point of the frame have integer coordinates, each
