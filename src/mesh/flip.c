@@ -376,6 +376,12 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
     dd_tri *t = f->t;
     const dd_vec *star = &t->conflict;
     dd_vec *stack = f->stack;
+    const uint32_t *head = t->hid && t->hid->keep ? t->hid->head : NULL, ncap = head ? t->hid->ncap : 0;
+    for (size_t k = 0; k < star->n; k++) {     /* the cells across the link, and the lists read after */
+        const uint32_t c = star->a[k];
+        __builtin_prefetch(dd_tv(t, dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)] >> 2));
+        if (c < ncap) __builtin_prefetch(head + c);
+    }
     for (size_t k = 0; k < star->n; k++) {
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
         const uint32_t i = dd_slot_of(w, v);
