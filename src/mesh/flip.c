@@ -360,6 +360,20 @@ int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_st
 
 /* ---- weighted moves --------------------------------------------------- */
 
+/* Star cells ahead of the one tested whose apex across the link is
+ * prefetched: its cell, prefetched first, has arrived by then.        */
+#define DD_STAR_AHEAD 4
+
+/* Prefetches the point and weight of the apex across star cell c's link
+ * facet (the vertex opposite v in the cell there).                      */
+static void prefetch_apex(const dd_tri *t, uint32_t c, uint32_t v)
+{
+    const uint32_t g = dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)], o = dd_tv(t, g >> 2)[g & 3];
+    if (o == DD_INF) return;
+    __builtin_prefetch(t->xyz + 3 * (size_t)o);
+    __builtin_prefetch(t->wt + o);
+}
+
 /* The weighted counterpart of star_test, v now at (p, w): every finite
  * star cell positively oriented (unchanged when only the weight changed:
  * !moved, no test) and each facet of the star locally regular.  In the
@@ -383,6 +397,7 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
         if (c < ncap) __builtin_prefetch(head + c);
     }
     for (size_t k = 0; k < star->n; k++) {
+        if (k + DD_STAR_AHEAD < star->n) prefetch_apex(t, star->a[k + DD_STAR_AHEAD], v);
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
         const uint32_t i = dd_slot_of(w, v);
         if (has(w, DD_INF)) {
