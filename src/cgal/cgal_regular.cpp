@@ -381,8 +381,8 @@ void drop_copies(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
     typedef typename Rt_of<Policy>::T T;
     std::sort(back.begin(), back.end());
     back.erase(std::unique(back.begin(), back.end()), back.end());
-    std::map<Key, std::size_t> still;
-    for (typename T::All_cells_iterator it = r->rt.all_cells_begin(); it != r->rt.all_cells_end(); ++it)
+    std::map<Key, std::size_t> still;  /* raw cells: in dimension 2 or less too */
+    for (typename T::Cell_iterator it = r->rt.tds().raw_cells_begin(); it != r->rt.tds().raw_cells_end(); ++it)
         for (typename T::Cell::Point_iterator h = it->hidden_points_begin(); h != it->hidden_points_end(); ++h) {
             const Key k = key_of(*h);
             if (std::binary_search(back.begin(), back.end(), k)) still[k]++;
@@ -407,10 +407,13 @@ void drop_copies(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
  * off the removed vertex.  CGAL makes a new vertex for each hidden point
  * that comes back, its info not set (a hidden point is a bare weighted
  * point): every vertex's info is set again from keys, the index a vertex
- * had kept when keys lists it for that weighted point.  O(n): a
- * reference, not a bench.                                                */
+ * had kept when keys lists it for that weighted point; the copies CGAL
+ * dropped leave keys (drop_copies).  any_dim: CGAL's remove() may leave
+ * fewer than 4 vertices or drop the dimension (it re-inserts the hidden
+ * points then, which may raise it again), and it is done in whatever
+ * dimension.  O(n): a reference, not a bench.                           */
 template <class Policy>
-int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index)
+int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index, bool any_dim)
 {
     typedef typename Rt_of<Policy>::T T;
     typename T::Vertex_handle v;
@@ -422,7 +425,7 @@ int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
         }
     if (v == typename T::Vertex_handle())
         return 1;
-    if (r->rt.number_of_vertices() <= 4)
+    if (!any_dim && r->rt.number_of_vertices() <= 4)
         return 3;
     std::vector<uint32_t> &gone = keys[key_of(v->point())];
     gone.erase(std::remove(gone.begin(), gone.end(), index), gone.end());
@@ -433,7 +436,7 @@ int remove_index(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
         for (typename T::Cell::Point_iterator h = star[i]->hidden_points_begin(); h != star[i]->hidden_points_end(); ++h)
             back.push_back(key_of(*h));
     r->rt.remove(v);
-    if (r->rt.dimension() != 3)
+    if (!any_dim && r->rt.dimension() != 3)
         return 3;
     for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
          ++it) {
@@ -456,9 +459,9 @@ extern "C" int dd_cgal_rt_remove(dd_cgal_rt *c, uint32_t input_index)
         return 1;
     try {
         if (Rt_of<CGAL::Keep_hidden_points> *k = dynamic_cast<Rt_of<CGAL::Keep_hidden_points> *>(c->rt.get()))
-            return remove_index(k, c->keys, input_index);
+            return remove_index(k, c->keys, input_index, false);
         if (Rt_of<CGAL::Discard_hidden_points> *d = dynamic_cast<Rt_of<CGAL::Discard_hidden_points> *>(c->rt.get()))
-            return remove_index(d, c->keys, input_index);
+            return remove_index(d, c->keys, input_index, false);
         return 1;
     } catch (...) {
         return 1;
@@ -528,11 +531,8 @@ int insert_as(dd_cgal_rt *c, const Wpoint &p, uint32_t index)
     return r;
 }
 
-template <class Policy>
-int remove_index_any_dim(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index);
-
-/* any_dim: the removal through remove_index_any_dim, and 3 only when the
- * moved set ends in less than 3D.                                       */
+/* any_dim: the removal in any dimension (remove_index), and 3 only when
+ * the moved set ends in less than 3D.                                   */
 template <class Policy>
 int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3], double w, bool any_dim)
 {
@@ -546,8 +546,7 @@ int move_index(dd_cgal_rt *c, Rt_of<Policy> *r, uint32_t index, const double p[3
     if (same != c->keys.end())
         for (std::size_t i = 0; i < same->second.size(); i++)
             if (same->second[i] != index && is_vertex(r, same->second[i])) return 2;
-    const int gone = !vertex ? forget_index(r, c->keys, index)
-                     : any_dim ? remove_index_any_dim(r, c->keys, index) : remove_index(r, c->keys, index);
+    const int gone = !vertex ? forget_index(r, c->keys, index) : remove_index(r, c->keys, index, any_dim);
     if (gone != 0) return gone;
     const int ins = insert_as(c, weighted_point(p, w), index);
     if (ins == 2) {              /* a point the removal brought back: put v back */
@@ -611,41 +610,6 @@ extern "C" int dd_cgal_rt_insert_as(dd_cgal_rt *c, const double p[3], double w, 
 }
 
 /* ---- moves through a lower dimension (issue 44) ------------------------------ */
-
-namespace {
-
-/* As remove_index, but CGAL's remove() may leave fewer than 4 vertices or
- * drop the dimension (it re-inserts the hidden points then, which may
- * raise it again): 0 done, in whatever dimension; 1 no such vertex.    */
-template <class Policy>
-int remove_index_any_dim(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, uint32_t index)
-{
-    typedef typename Rt_of<Policy>::T T;
-    typename T::Vertex_handle v;
-    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
-         ++it)
-        if (it->info() == index) {
-            v = it;
-            break;
-        }
-    if (v == typename T::Vertex_handle())
-        return 1;
-    std::vector<uint32_t> &gone = keys[key_of(v->point())];
-    gone.erase(std::remove(gone.begin(), gone.end(), index), gone.end());
-    r->rt.remove(v);
-    for (typename T::Finite_vertices_iterator it = r->rt.finite_vertices_begin(); it != r->rt.finite_vertices_end();
-         ++it) {
-        const std::map<Key, std::vector<uint32_t> >::const_iterator k = keys.find(key_of(it->point()));
-        if (k == keys.end() || k->second.empty())
-            return 1;
-        if (std::find(k->second.begin(), k->second.end(), it->info()) == k->second.end())
-            it->info() = k->second.front();
-    }
-    r->hint = r->rt.finite_vertices_begin();
-    return 0;
-}
-
-} // namespace
 
 extern "C" int dd_cgal_rt_move_any_dim(dd_cgal_rt *c, uint32_t input_index, const double p[3], double w)
 {

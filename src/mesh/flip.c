@@ -458,7 +458,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
 {
     *flips = 0;
     *err = dd_star_cells(t, v, &t->conflict);
-    if (*err != DD_OK) return 0;
+    if (*err != DD_OK || dd_hidden_star_copies(t, v, t->conflict.a, t->conflict.n)) return 0;
     dd_vec *sc = t->flip;
     for (int k = 0; k < 5; k++) sc[k].n = 0;
     if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;

@@ -30,6 +30,28 @@ void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell)
     *cell = c;
 }
 
+/* Whether points a and b carry the same weighted point. */
+static int same_weighted(const dd_tri *t, uint32_t a, uint32_t b)
+{
+    const double *x = dd_pt(t, a), *y = dd_pt(t, b);
+    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2] && t->wt[a] == t->wt[b];
+}
+
+int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n)
+{
+    const dd_hidset *h = t->hid;
+    if (!h || !h->keep || v >= h->vcap || h->nin[v] < 2) return 0;   /* no list yet: none */
+    for (size_t i = 0; i < n; i++)
+        for (uint32_t a = star[i] < h->ncap ? h->head[star[i]] : DD_NONE; a != DD_NONE; a = h->next[a]) {
+            for (uint32_t b = h->next[a]; b != DD_NONE; b = h->next[b])
+                if (same_weighted(t, a, b)) return 1;
+            for (size_t j = i + 1; j < n; j++)
+                for (uint32_t b = star[j] < h->ncap ? h->head[star[j]] : DD_NONE; b != DD_NONE; b = h->next[b])
+                    if (same_weighted(t, a, b)) return 1;
+        }
+    return 0;
+}
+
 /* Whether p lies in the closure of finite cell c (exact orientations). */
 static int holds(dd_tri *t, uint32_t c, const double *p)
 {
@@ -77,38 +99,22 @@ static int rehome(dd_tri *t, const dd_vec *made, dd_mark gone_mark, uint32_t x, 
     return 1;
 }
 
-/* x and y carry the same weighted point. */
-static int same_point(const dd_tri *t, uint32_t x, uint32_t y)
-{
-    const double *a = dd_pt(t, x), *b = dd_pt(t, y);
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && t->wt[x] == t->wt[y];
-}
-
-/* Bound on the hidden points of a star compared for exact copies; more
- * of them go the reference's way (a removal and an insertion).        */
-#define DD_HOLD_SEEN 64
-
 int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
                          dd_vec *homes, dd_status *err)
 {
     const dd_hidset *h = t->hid;
     const dd_vec *star = &t->conflict;
-    const int none = v < h->vcap && h->nin[v] == 0;     /* no list of v's star holds a point */
-    uint32_t seen[DD_HOLD_SEEN], nseen = 0;
+    const int none = v >= h->vcap || h->nin[v] == 0;    /* no list of v's star holds a point */
     homes->n = 0;
-    /* The star's points are those the reference's removal takes: two
-     * exact copies among them (one would be forgotten if they came
-     * back), or a copy of v's new weighted point, and the flips could
-     * not give its state.                                              */
+    /* A star point with v's new weighted point: the reference's removal
+     * may bring it back and its insertion then refuse (v, p, w), or
+     * hide it under a vertex with its point, a state flips cannot give. */
     for (size_t k = 0; k < star->n && !none; k++) {
         const uint32_t c = star->a[k];
         if (c >= h->ncap) continue;
         const int live = t->stamp[c] != gone_mark;
         for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x]) {
-            if (nseen == DD_HOLD_SEEN || same_point(t, x, v)) return 0;
-            for (uint32_t a = 0; a < nseen; a++)
-                if (same_point(t, x, seen[a])) return 0;
-            seen[nseen++] = x;
+            if (same_weighted(t, x, v)) return 0;
             if (!live) continue;                              /* the loop below */
             if (!moved || holds(t, c, dd_pt(t, x))) {
                 if (!stays_hidden(t, c, x)) return 0;
@@ -121,7 +127,7 @@ int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec
         const uint32_t g = gone->a[k], *gv = dd_tv(t, g);
         if (g >= h->ncap || (none && (gv[0] == v || gv[1] == v || gv[2] == v || gv[3] == v))) continue;
         for (uint32_t x = h->head[g]; x != DD_NONE; x = h->next[x])
-            if (same_point(t, x, v) || !rehome(t, made, gone_mark, x, homes, err)) return 0;
+            if (same_weighted(t, x, v) || !rehome(t, made, gone_mark, x, homes, err)) return 0;
     }
     return 1;
 }

@@ -30,10 +30,21 @@ void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell);
  * Lawson's loop ends with every facet locally regular (the mesh is then
  * the regular triangulation of its vertices: none was hidden anew, v
  * included) and, hidden points kept, each stays hidden in a cell (see
- * dd_hidden_flips_hold).  Exact, perturbation included.  O(star) plus
- * O(1) a flip and a hidden point of a cell flipped; t->conflict as
- * scratch; *err DD_ERR_NOMEM (and 0) when out of memory.               */
+ * dd_hidden_flips_hold, which also declines a star point with v's new
+ * weighted point), and no two of the star's hidden points are exact
+ * copies (dd_hidden_star_copies).  Exact, perturbation included.
+ * O(star) plus O(1) a flip and a hidden point of a cell flipped;
+ * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of
+ * memory.                                                              */
 int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err);
+
+/* 1 if the cells star[0..n) (v's star, hidden points kept) hold two
+ * hidden points with the same weighted point.  A removal of v may bring
+ * one back and forget the others (hidden.h: no vertex has a hidden
+ * exact copy), and an insertion hide it again: a state flips cannot
+ * reach, so dd_move_power_by_flips declines such a move.  0 at once
+ * when v's bound nin is below 2; else O(k^2) in the k points listed.   */
+int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n);
 
 /* For dd_move_power_by_flips of vertex v, hidden points kept, before
  * it commits: the cells gone[0..) (stamped gone_mark) replaced by the
@@ -44,8 +55,8 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
  * or of a star cell that no longer holds it, in the closure of a live
  * made or star cell and not in conflict with it, that cell its new
  * home, written to homes as (point, cell) pairs.  Else 0 (a point
- * comes back, or left the changed region); *err DD_ERR_NOMEM (and 0)
- * when homes cannot grow.  nin[v] == 0 skips the lists of v's star.
+ * comes back, left the changed region, or carries v's new weighted
+ * point); *err DD_ERR_NOMEM (and 0) when homes cannot grow.  nin[v] == 0 skips the lists of v's star.
  * Reads only.  O(star + made) a point re-homed.                       */
 int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
                          dd_vec *homes, dd_status *err);
