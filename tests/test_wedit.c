@@ -541,6 +541,52 @@ static void flips_case(tl_state *st, const char *name, const wset *s, int need_f
     }
 }
 
+/* Power ties in the relocation filter (flip.c's star_test_power): an
+ * integer grid with one weight, so that the corners of every cube lie
+ * on one power sphere.  Each step moves a vertex off its grid point and
+ * back, or re-weights it and back: on the way back every power test of
+ * its star against an apex of a cube it shares is exactly 0, which the
+ * filter must leave to Lawson's exact, perturbed tests (a filter that
+ * certified a 0 would keep a facet CGAL's perturbation flips).  Both
+ * modes, each step compared with CGAL's remove then insert.            */
+static void ties_case(tl_state *st)
+{
+    const int side = small ? 4 : 6;
+    wset s = {0};
+    for (int z = 0; z < side; z++)
+        for (int y = 0; y < side; y++)
+            for (int x = 0; x < side; x++) ws_add(&s, x, y, z, 0.25);
+    for (int keep = 1; keep >= 0; keep--) {
+        char tn[160], why[256] = "";
+        snprintf(tn, sizeof tn, "flips/ties/%s", keep ? "keep" : "discard");
+        pair pr;
+        int ok = pair_make(&pr, &s, keep, why, sizeof why);
+        tl_rng r = {0x7135 + (uint64_t)keep};
+        const uint32_t steps = small ? 40 : 160;
+        for (uint32_t m = 0; m < steps && ok; m++) {
+            const uint32_t v = (uint32_t)tl_int(&r, 0, (int64_t)s.n - 1);
+            const double *g = s.p + 3 * (size_t)v;
+            double p[3] = {g[0], g[1], g[2]}, w = 0.25;
+            if (m % 2) w *= 0.9 + 0.2 * tl_unif(&r);
+            else
+                for (int c = 0; c < 3; c++) p[c] += 0.05 * (2 * tl_unif(&r) - 1);
+            for (int back = 0; back < 2 && ok; back++) {
+                const double *q = back ? g : p, wq = back ? 0.25 : w;
+                const dd_status ds = m % 2 ? dd_move_weighted(pr.t, v, q, wq) : dd_move(pr.t, v, q);
+                const int cr = dd_cgal_rt_move(pr.c, v, q, wq);
+                if (ds != DD_OK || cr != 0) {
+                    ok = 0, snprintf(why, sizeof why, "step %u of %u: %s, CGAL %d", m, v, dd_status_name(ds), cr);
+                    break;
+                }
+                ok = agree(&pr, back ? "back on the grid" : "off the grid", why, sizeof why);
+            }
+        }
+        tl_check(st, ok, tn, "%s", why);
+        pair_free(&pr);
+    }
+    ws_free(&s);
+}
+
 /* ---- refusals ---------------------------------------------------------------------- */
 
 static void refusals_case(tl_state *st)
@@ -773,6 +819,7 @@ int main(int argc, char **argv)
     s = gen_grid(small ? 4 : 6, small ? 30 : 100, 1, 8);
     flips_case(&st, "grid-dups", &s, 0);
     ws_free(&s);
+    ties_case(&st);
     refusals_case(&st);
     copies_case(&st);
 #ifdef DD_TEST_BUILD
