@@ -107,12 +107,17 @@ static int cgal_delete(dd_cgal_rt *c, uint32_t i)
  * good).  Or 8 re-weighted in place, heavier: no flip is needed, but
  * the reference's removal makes 9 a vertex and forgets 10 before its
  * insertion hides 9 again, so the engine must not keep 10 (flips decline
- * a star with exact copies).  Both modes, each step equal to CGAL.      */
+ * a star with exact copies).  Or, 10 left where it is (9 the one hidden
+ * point of 8's star), 8 re-weighted in place to 0, onto 9's weighted
+ * point: refused after the removal, as CGAL's insert returns 9 (8 put
+ * back, 9 hidden again), which flips, keeping 9 hidden under a vertex
+ * with its weighted point, must not reach; discarding, 9 is gone and
+ * the move is done.  Both modes, each step equal to CGAL.               */
 static void copies_case(tl_state *st)
 {
-    static const char *const how_name[4] = {"move", "set", "refused", "reweight"};
+    static const char *const how_name[5] = {"move", "set", "refused", "reweight", "onto-copy"};
     for (int keep = 0; keep < 2; keep++)
-        for (int how = 0; how < 4; how++) {
+        for (int how = 0; how < 5; how++) {
             char tn[128], why[256] = "";
             snprintf(tn, sizeof tn, "copies/%s/%s", how_name[how], keep ? "keep" : "discard");
             wset s = {0};
@@ -124,7 +129,7 @@ static void copies_case(tl_state *st)
             pair pr;
             int ok = pair_make(&pr, &s, keep, why, sizeof why);
             const double mid[3] = {0.5, 0.5, 0.5}, off[3] = {0.5, 0.5, 0.51};
-            if (ok) {
+            if (ok && how != 4) {
                 const dd_status ds = dd_move_weighted(pr.t, 10, mid, 0);
                 ok = ds == DD_OK && dd_cgal_rt_move(pr.c, 10, mid, 0) == 0;
                 if (!ok) snprintf(why, sizeof why, "moving 10: %s", dd_errmsg(pr.t));
@@ -139,6 +144,17 @@ static void copies_case(tl_state *st)
                 if (ok && keep) {
                     ok = dd_is_hidden(pr.t, 9) && !present(pr.t, 10);
                     if (!ok) snprintf(why, sizeof why, "9 should be hidden again, 10 forgotten (9: v%d h%d, 10: v%d h%d)", dd_is_vertex(pr.t, 9), dd_is_hidden(pr.t, 9), dd_is_vertex(pr.t, 10), dd_is_hidden(pr.t, 10));
+                }
+            } else if (ok && how == 4) {
+                const double w8 = 0;
+                const dd_status ds = dd_move_weighted(pr.t, 8, mid, w8);
+                const int rc = dd_cgal_rt_move(pr.c, 8, mid, w8);
+                ok = !keep ? ds == DD_OK && rc == 0 : ds == DD_ERR_DUPLICATE && rc == 2;
+                if (!ok) snprintf(why, sizeof why, "re-weighting 8 to %g: engine %s, CGAL %d", w8, dd_status_name(ds), rc);
+                if (ok) ok = agree(&pr, "8 re-weighted", why, sizeof why);
+                if (ok && keep) {
+                    ok = dd_is_vertex(pr.t, 8) && dd_is_hidden(pr.t, 9);
+                    if (!ok) snprintf(why, sizeof why, "8 should be a vertex, 9 hidden");
                 }
             } else if (ok && how == 2) {
                 const double corner[3] = {0, 0, 0};
@@ -525,6 +541,52 @@ static void flips_case(tl_state *st, const char *name, const wset *s, int need_f
     }
 }
 
+/* Power ties in the relocation filter (flip.c's star_test_power): an
+ * integer grid with one weight, so that the corners of every cube lie
+ * on one power sphere.  Each step moves a vertex off its grid point and
+ * back, or re-weights it and back: on the way back every power test of
+ * its star against an apex of a cube it shares is exactly 0, which the
+ * filter must leave to Lawson's exact, perturbed tests (a filter that
+ * certified a 0 would keep a facet CGAL's perturbation flips).  Both
+ * modes, each step compared with CGAL's remove then insert.            */
+static void ties_case(tl_state *st)
+{
+    const int side = small ? 4 : 6;
+    wset s = {0};
+    for (int z = 0; z < side; z++)
+        for (int y = 0; y < side; y++)
+            for (int x = 0; x < side; x++) ws_add(&s, x, y, z, 0.25);
+    for (int keep = 1; keep >= 0; keep--) {
+        char tn[160], why[256] = "";
+        snprintf(tn, sizeof tn, "flips/ties/%s", keep ? "keep" : "discard");
+        pair pr;
+        int ok = pair_make(&pr, &s, keep, why, sizeof why);
+        tl_rng r = {0x7135 + (uint64_t)keep};
+        const uint32_t steps = small ? 40 : 160;
+        for (uint32_t m = 0; m < steps && ok; m++) {
+            const uint32_t v = (uint32_t)tl_int(&r, 0, (int64_t)s.n - 1);
+            const double *g = s.p + 3 * (size_t)v;
+            double p[3] = {g[0], g[1], g[2]}, w = 0.25;
+            if (m % 2) w *= 0.9 + 0.2 * tl_unif(&r);
+            else
+                for (int c = 0; c < 3; c++) p[c] += 0.05 * (2 * tl_unif(&r) - 1);
+            for (int back = 0; back < 2 && ok; back++) {
+                const double *q = back ? g : p, wq = back ? 0.25 : w;
+                const dd_status ds = m % 2 ? dd_move_weighted(pr.t, v, q, wq) : dd_move(pr.t, v, q);
+                const int cr = dd_cgal_rt_move(pr.c, v, q, wq);
+                if (ds != DD_OK || cr != 0) {
+                    ok = 0, snprintf(why, sizeof why, "step %u of %u: %s, CGAL %d", m, v, dd_status_name(ds), cr);
+                    break;
+                }
+                ok = agree(&pr, back ? "back on the grid" : "off the grid", why, sizeof why);
+            }
+        }
+        tl_check(st, ok, tn, "%s", why);
+        pair_free(&pr);
+    }
+    ws_free(&s);
+}
+
 /* ---- refusals ---------------------------------------------------------------------- */
 
 static void refusals_case(tl_state *st)
@@ -757,6 +819,7 @@ int main(int argc, char **argv)
     s = gen_grid(small ? 4 : 6, small ? 30 : 100, 1, 8);
     flips_case(&st, "grid-dups", &s, 0);
     ws_free(&s);
+    ties_case(&st);
     refusals_case(&st);
     copies_case(&st);
 #ifdef DD_TEST_BUILD

@@ -193,6 +193,21 @@ static inline double dd_lift_power_err(double m, double W)
     return m >= DD_LIFT_M_MIN && m <= DD_LIFT_M_MAX && M2 <= 1e110 ? 1e-11 * m * m * m * M2 : 1.0 / 0.0;
 }
 
+/* l = (x - q, |x - q|^2 - dw): the weighted lift above, the norm as
+ * dd_lift_row has it and dw = w_x - w_q as the caller rounded it once.
+ * Returns max |x_i - q_i| (rounded), as dd_lift_row; the caller keeps
+ * W = max |dw| for dd_lift_power_err.  Rows of a frame whose own point
+ * q is a corner (its row exactly 0, as in flip.c's star tests) enter
+ * dd_lift_minors, dd_lift_cofactors and dd_lift_dot4 as they are: no
+ * row difference, so fewer roundings and smaller entries than the
+ * derivation allows, and the bound holds.                              */
+static inline double dd_lift_row_power(double l[4], const double *x, const double *q, double dw)
+{
+    const double m = dd_lift_row(l, x, q);
+    l[3] -= dw;
+    return m;
+}
+
 /* ---- the integer modes --------------------------------------------------
  *
  * When q and every point of the frame have integer coordinates, each

@@ -360,22 +360,88 @@ int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_st
 
 /* ---- weighted moves --------------------------------------------------- */
 
-/* The weighted counterpart of star_test, v now at its new point (moved:
- * the point changed, not only the weight): every finite star cell
- * positively oriented, then every facet of the star on f->stack (room
- * made by the caller) for Lawson's exact power tests.  0 when a star
+/* Star cells ahead of the one tested whose apex across the link is
+ * prefetched: its cell, prefetched first, has arrived by then.        */
+#define DD_STAR_AHEAD 4
+
+/* Prefetches the point and weight of the apex across star cell c's link
+ * facet (the vertex opposite v in the cell there).                      */
+static void prefetch_apex(const dd_tri *t, uint32_t c, uint32_t v)
+{
+    const uint32_t g = dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)], o = dd_tv(t, g >> 2)[g & 3];
+    if (o == DD_INF) return;
+    __builtin_prefetch(t->xyz + 3 * (size_t)o);
+    __builtin_prefetch(t->wt + o);
+}
+
+/* The weighted counterpart of star_test, v now at (p, w): every finite
+ * star cell positively oriented (unchanged when only the weight changed:
+ * !moved, no test) and each facet of the star locally regular.  In the
+ * frame lifted at (p, w), a vertex x's row is (x - p, |x - p|^2 -
+ * (w_x - w)) (lift.h's weighted lift), v's is 0, and a cell's power
+ * test against an apex o is K . L[o] as in star_test, certified beyond
+ * dd_lift_power_err of the frame's m and W = max |w_x - w| (the cell's
+ * three rows and the apex's).  Pushes the facets the filter cannot
+ * certify, or that fail, on f->stack (room made by the caller) for
+ * Lawson's exact power tests; hull cells go there whole.  0 when a star
  * cell is not positively oriented.                                      */
-static int star_test_power(flip_state *f, uint32_t v, int moved)
+static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv, int moved)
 {
     dd_tri *t = f->t;
     const dd_vec *star = &t->conflict;
     dd_vec *stack = f->stack;
+    const uint32_t *head = t->hid && t->hid->keep ? t->hid->head : NULL, ncap = head ? t->hid->ncap : 0;
+    for (size_t k = 0; k < star->n; k++) {     /* the cells across the link, and the lists read after */
+        const uint32_t c = star->a[k];
+        __builtin_prefetch(dd_tv(t, dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)] >> 2));
+        if (c < ncap) __builtin_prefetch(head + c);
+    }
     for (size_t k = 0; k < star->n; k++) {
+        if (k + DD_STAR_AHEAD < star->n) prefetch_apex(t, star->a[k + DD_STAR_AHEAD], v);
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
         const uint32_t i = dd_slot_of(w, v);
-        if (moved && !has(w, DD_INF) && orient4(t, w) <= 0) return 0;
-        for (uint32_t j = 0; j < 4; j++)
-            if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+        if (has(w, DD_INF)) {
+            for (uint32_t j = 0; j < 4; j++)
+                if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+            continue;
+        }
+        double R[3][4], mi[6], K[4], m = 0, W = 0;
+        for (int a = 0; a < 3; a++) {
+            const uint32_t x = w[after[i][a]];
+            const double dw = t->wt[x] - wv;
+            W = dd_lift_max(W, fabs(dw));
+            m = dd_lift_max(m, dd_lift_row_power(R[a], dd_pt(t, x), p, dw));
+        }
+        dd_lift_minors(mi, R[0], R[1]);
+        if (!moved) {
+#ifdef DD_TEST_BUILD
+            if (orient4(t, w) <= 0) __builtin_trap();   /* a weight alone turns no cell */
+#endif
+        } else if (dd_lift_orient(mi, R[2]) > dd_lift_orient_err(m)) {
+#ifdef DD_TEST_BUILD
+            if (orient4(t, w) <= 0) __builtin_trap();   /* the filter is never wrong */
+#endif
+        } else if (orient4(t, w) <= 0) {
+            return 0;
+        }
+        dd_lift_cofactors(K, R[2], mi);
+        for (uint32_t j = 0; j < 4; j++) {
+            if (j != i && c > nb[j] >> 2) continue;
+            const uint32_t apex = dd_tv(t, nb[j] >> 2)[nb[j] & 3];
+            if (apex != DD_INF) {
+                double L[4];
+                const double dw = t->wt[apex] - wv;
+                const double Wa = dd_lift_max(W, fabs(dw));
+                const double ma = dd_lift_max(m, dd_lift_row_power(L, dd_pt(t, apex), p, dw));
+                if (dd_lift_dot4(K, L) > dd_lift_power_err(ma, Wa)) {
+#ifdef DD_TEST_BUILD
+                    if (dd_cell_power_conflict_fast(t, c, dd_pt(t, apex), t->wt[apex])) __builtin_trap();
+#endif
+                    continue;
+                }
+            }
+            stack->a[stack->n++] = 4 * c + j;
+        }
     }
     return 1;
 }
@@ -402,7 +468,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
     const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
     const int moved = old[0] != p[0] || old[1] != p[1] || old[2] != p[2];
     put_point(t, v, p, w);
-    if (!star_test_power(&f, v, moved)) {
+    if (!star_test_power(&f, v, p, w, moved)) {
         put_point(t, v, old, wold);
         return 0;
     }
@@ -412,7 +478,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
     int ok = *err == DD_OK && lawson(&f, err);
     dd_vec *homes = f.stack;                 /* empty once Lawson's loop succeeded */
     if (ok && t->hid && t->hid->keep)
-        ok = dd_hidden_flips_hold(t, f.made, f.gone, f.replaced, moved, homes, err);
+        ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.replaced, moved, homes, err);
     if (!ok) {
         undo(&f, ncell0);
         put_point(t, v, old, wold);

@@ -30,7 +30,7 @@ void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell)
     *cell = c;
 }
 
-/* Whether hidden points a and b carry the same weighted point. */
+/* Whether points a and b carry the same weighted point. */
 static int same_weighted(const dd_tri *t, uint32_t a, uint32_t b)
 {
     const double *x = dd_pt(t, a), *y = dd_pt(t, b);
@@ -42,11 +42,11 @@ int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, siz
     const dd_hidset *h = t->hid;
     if (!h || !h->keep || v >= h->vcap || h->nin[v] < 2) return 0;   /* no list yet: none */
     for (size_t i = 0; i < n; i++)
-        for (uint32_t a = h->head[star[i]]; a != DD_NONE; a = h->next[a]) {
+        for (uint32_t a = star[i] < h->ncap ? h->head[star[i]] : DD_NONE; a != DD_NONE; a = h->next[a]) {
             for (uint32_t b = h->next[a]; b != DD_NONE; b = h->next[b])
                 if (same_weighted(t, a, b)) return 1;
             for (size_t j = i + 1; j < n; j++)
-                for (uint32_t b = h->head[star[j]]; b != DD_NONE; b = h->next[b])
+                for (uint32_t b = star[j] < h->ncap ? h->head[star[j]] : DD_NONE; b != DD_NONE; b = h->next[b])
                     if (same_weighted(t, a, b)) return 1;
         }
     return 0;
@@ -64,47 +64,90 @@ static int holds(dd_tri *t, uint32_t c, const double *p)
     return 1;
 }
 
-/* Kept hidden point x of live cell c stays there: in c's closure (when
- * checked) and not in power conflict with it.                          */
-static int stays_in(dd_tri *t, uint32_t c, uint32_t x, int check_closure)
+/* Kept hidden point x is not in power conflict with live cell c. */
+static int stays_hidden(dd_tri *t, uint32_t c, uint32_t x)
 {
-    const double *p = dd_pt(t, x);
-    return (!check_closure || holds(t, c, p)) && !dd_cell_power_conflict_fast(t, c, p, t->wt[x]);
+    return !dd_cell_power_conflict_fast(t, c, dd_pt(t, x), t->wt[x]);
 }
 
-int dd_hidden_flips_hold(dd_tri *t, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+/* A live cell of the changed region (made, then the star's) whose
+ * closure holds p, or DD_NONE.                                        */
+static uint32_t find_home(dd_tri *t, const dd_vec *made, dd_mark gone_mark, const double *p)
+{
+    const dd_vec *star = &t->conflict;
+    for (size_t m = 0; m < made->n; m++) {
+        const uint32_t c = made->a[m];
+        if (t->stamp[c] != gone_mark && holds(t, c, p)) return c;
+    }
+    for (size_t m = 0; m < star->n; m++) {
+        const uint32_t c = star->a[m];
+        if (t->stamp[c] != gone_mark && !dd_is_infinite_cell(t, c) && holds(t, c, p)) return c;
+    }
+    return DD_NONE;
+}
+
+/* Hidden point x, whose cell is gone or no longer holds it, gets a new
+ * home: 1 when one holds it and it stays hidden there, the pair
+ * (x, home) then on homes; 0 otherwise (or out of memory: *err).     */
+static int rehome(dd_tri *t, const dd_vec *made, dd_mark gone_mark, uint32_t x, dd_vec *homes, dd_status *err)
+{
+    const uint32_t home = find_home(t, made, gone_mark, dd_pt(t, x));
+    if (home == DD_NONE || !stays_hidden(t, home, x)) return 0;
+    if ((*err = dd_vec_room(homes, 2)) != DD_OK) return 0;
+    homes->a[homes->n++] = x;
+    homes->a[homes->n++] = home;
+    return 1;
+}
+
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
                          dd_vec *homes, dd_status *err)
 {
     const dd_hidset *h = t->hid;
     const dd_vec *star = &t->conflict;
+    const int none = v >= h->vcap || h->nin[v] == 0;    /* no list of v's star holds a point */
     homes->n = 0;
-    for (size_t k = 0; k < star->n; k++) {
+    /* A star point with v's new weighted point: the reference's removal
+     * may bring it back and its insertion then refuse (v, p, w), or
+     * hide it under a vertex with its point, a state flips cannot give. */
+    for (size_t k = 0; k < star->n && !none; k++) {
         const uint32_t c = star->a[k];
-        if (c >= h->ncap || t->stamp[c] == gone_mark) continue;
-        for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x])
-            if (!stays_in(t, c, x, moved)) return 0;
-    }
-    for (size_t k = 0; k < gone->n; k++) {
-        const uint32_t g = gone->a[k];
-        if (g >= h->ncap) continue;
-        for (uint32_t x = h->head[g]; x != DD_NONE; x = h->next[x]) {
-            uint32_t home = DD_NONE;
-            for (size_t m = 0; m < made->n && home == DD_NONE; m++) {
-                const uint32_t c = made->a[m];
-                if (t->stamp[c] != gone_mark && holds(t, c, dd_pt(t, x))) home = c;
+        if (c >= h->ncap) continue;
+        const int live = t->stamp[c] != gone_mark;
+        for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x]) {
+            if (same_weighted(t, x, v)) return 0;
+            if (!live) continue;                              /* the loop below */
+            if (!moved || holds(t, c, dd_pt(t, x))) {
+                if (!stays_hidden(t, c, x)) return 0;
+            } else if (!rehome(t, made, gone_mark, x, homes, err)) {
+                return 0;
             }
-            if (home == DD_NONE || !stays_in(t, home, x, 0)) return 0;
-            if ((*err = dd_vec_room(homes, 2)) != DD_OK) return 0;
-            homes->a[homes->n++] = x;
-            homes->a[homes->n++] = home;
         }
     }
+    for (size_t k = 0; k < gone->n; k++) {
+        const uint32_t g = gone->a[k], *gv = dd_tv(t, g);
+        if (g >= h->ncap || (none && (gv[0] == v || gv[1] == v || gv[2] == v || gv[3] == v))) continue;
+        for (uint32_t x = h->head[g]; x != DD_NONE; x = h->next[x])
+            if (same_weighted(t, x, v) || !rehome(t, made, gone_mark, x, homes, err)) return 0;
+    }
     return 1;
+}
+
+/* Takes x off the list of its cell c. */
+static void unlink_point(dd_hidset *h, uint32_t c, uint32_t x)
+{
+    if (h->head[c] == x) {
+        h->head[c] = h->next[x];
+        return;
+    }
+    uint32_t u = h->head[c];
+    while (h->next[u] != x) u = h->next[u];
+    h->next[u] = h->next[x];
 }
 
 void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes)
 {
     dd_hidset *h = t->hid;
+    for (size_t k = 0; k < homes->n; k += 2) unlink_point(h, h->cell[homes->a[k]], homes->a[k]);
     for (size_t k = 0; k < gone->n; k++)
         if (gone->a[k] < h->ncap) h->head[gone->a[k]] = DD_NONE;
     for (size_t k = 0; k < homes->n; k += 2) {

@@ -30,10 +30,12 @@ void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell);
  * Lawson's loop ends with every facet locally regular (the mesh is then
  * the regular triangulation of its vertices: none was hidden anew, v
  * included) and, hidden points kept, each stays hidden in a cell (see
- * dd_hidden_flips_hold), and no two of the star's hidden points are
- * exact copies (dd_hidden_star_copies).  Exact, perturbation included.  O(star) plus
- * O(1) a flip and a hidden point of a cell flipped; t->conflict as
- * scratch; *err DD_ERR_NOMEM (and 0) when out of memory.               */
+ * dd_hidden_flips_hold, which also declines a star point with v's new
+ * weighted point), and no two of the star's hidden points are exact
+ * copies (dd_hidden_star_copies).  Exact, perturbation included.
+ * O(star) plus O(1) a flip and a hidden point of a cell flipped;
+ * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of
+ * memory.                                                              */
 int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err);
 
 /* 1 if the cells star[0..n) (v's star, hidden points kept) hold two
@@ -44,20 +46,24 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
  * when v's bound nin is below 2; else O(k^2) in the k points listed.   */
 int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n);
 
-/* For dd_move_power_by_flips, hidden points kept, before it commits:
- * the cells gone[0..) (stamped gone_mark) replaced by the others of
- * made[0..), over the same region, and v's point (moved) or weight
- * changed in the live cells of its star t->conflict.  1 if every kept
- * hidden point stays hidden: one of a live star cell in its closure
- * (when moved) and not in power conflict with it, one of a gone cell
- * in the closure of a live made cell and not in conflict with it; that
- * cell is its new home, written to homes as (point, cell) pairs.  Else
- * 0; *err DD_ERR_NOMEM (and 0) when homes cannot grow.  Reads only.    */
-int dd_hidden_flips_hold(dd_tri *t, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+/* For dd_move_power_by_flips of vertex v, hidden points kept, before
+ * it commits: the cells gone[0..) (stamped gone_mark) replaced by the
+ * others of made[0..), and v's point (moved) or weight changed in the
+ * live cells of its star t->conflict.  1 if every kept hidden point
+ * stays hidden: one of a live star cell still in its closure (always
+ * when !moved) and not in power conflict with it; one of a gone cell,
+ * or of a star cell that no longer holds it, in the closure of a live
+ * made or star cell and not in conflict with it, that cell its new
+ * home, written to homes as (point, cell) pairs.  Else 0 (a point
+ * comes back, left the changed region, or carries v's new weighted
+ * point); *err DD_ERR_NOMEM (and 0) when homes cannot grow.  nin[v] == 0 skips the lists of v's star.
+ * Reads only.  O(star + made) a point re-homed.                       */
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
                          dd_vec *homes, dd_status *err);
 
-/* After the flips committed (the cells gone[0..) dead): their lists
- * emptied, each point of homes in its new cell's list (room reserved
+/* After the flips committed (the cells gone[0..) dead): each point of
+ * homes off its old cell's list, the gone cells' lists emptied, each
+ * point of homes in its new cell's list (room reserved
  * by dd_hidden_room) and counted in its corners' stars (nin).
  * O(homes + gone).                                                    */
 void dd_hidden_flips_rehome(dd_tri *t, const dd_vec *gone, const dd_vec *homes);
