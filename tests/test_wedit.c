@@ -20,6 +20,8 @@
  *    hidden points): CGAL's remove() drops the dimension and the
  *    insertion raises it again; the same cells and hidden set, or both
  *    refuse (the moved set coplanar, or another vertex's weighted point);
+ *  - the course the cost model picks: a quarter of the points deleted one
+ *    at a time, most of them by the rebuild (dd_created_cells tells);
  *  - refusals (NaN or infinite weight or coordinate, unknown index,
  *    another vertex's exact weighted point, an unweighted t) with
  *    nothing changed;
@@ -236,6 +238,49 @@ static int set_step(pair *pr, tl_rng *r, double f, int course, char *why, size_t
     if (ok) ok = agree(pr, "after the re-insertions", why, nwhy);
     free(vs);
     return ok;
+}
+
+/* The course the cost model takes (release and test builds alike): a
+ * set of a quarter of the points of a weighted t is deleted one at a
+ * time (dd_created_cells lists only the cells the deletions made), one
+ * of most of them by the rebuild (it lists every cell); listed in a
+ * random order, kept hidden points among them.  Both results equal
+ * CGAL's, in both hidden modes.                                         */
+static void course_case(tl_state *st)
+{
+    for (int keep = 1; keep >= 0; keep--)
+        for (int most = 0; most <= 1; most++) {
+            char tn[64], why[320] = "";
+            snprintf(tn, sizeof tn, "set-course/%s/%s", most ? "most" : "quarter", keep ? "keep" : "discard");
+            wset s = gen_uniform(small ? 400 : 1500, 1, 90 + (uint64_t)most);
+            pair pr;
+            int ok = pair_make(&pr, &s, keep, why, sizeof why);
+            tl_rng r = {0x5EEDull + (uint64_t)most};
+            const uint32_t np = dd_num_input(pr.t);
+            uint32_t *vs = malloc(np * sizeof *vs), n = 0, nh = 0;
+            for (uint32_t i = 0; ok && i < np; i++)
+                if (present(pr.t, i) && tl_unif(&r) < (most ? 0.7 : 0.25)) vs[n++] = i, nh += dd_is_hidden(pr.t, i);
+            for (uint32_t k = n; k > 1; k--) {
+                const uint32_t j = (uint32_t)tl_int(&r, 0, k - 1), x = vs[k - 1];
+                vs[k - 1] = vs[j], vs[j] = x;
+            }
+            const dd_status ds = ok ? dd_delete_set(pr.t, vs, n) : DD_ERR_INTERNAL;
+            if (ok && ds != DD_OK) ok = 0, snprintf(why, sizeof why, "deleting %u: %s (%s)", n, dd_status_name(ds), dd_errmsg(pr.t));
+            for (uint32_t k = 0; ok && k < n; k++)
+                if (cgal_delete(pr.c, vs[k]) != 0) ok = 0, snprintf(why, sizeof why, "CGAL could not delete %u", vs[k]);
+            if (ok) ok = agree(&pr, "the set deleted", why, sizeof why);
+            const dd_cell_id *cells;
+            size_t nc = 0;
+            if (ok && dd_created_cells(pr.t, &cells, &nc) != DD_OK) ok = 0, snprintf(why, sizeof why, "no list of made cells");
+            if (ok && most != (nc == dd_num_tets(pr.t)))
+                ok = 0, snprintf(why, sizeof why, "%u of %u deleted: %zu of %zu cells listed made, expected the %s course", n, np,
+                                 nc, dd_num_tets(pr.t), most ? "rebuild" : "one-at-a-time");
+            if (ok && keep && nh == 0) ok = 0, snprintf(why, sizeof why, "no hidden point listed");
+            tl_check(st, ok, tn, "%s", why);
+            free(vs);
+            pair_free(&pr);
+            ws_free(&s);
+        }
 }
 
 /* ---- moves ---------------------------------------------------------------------- */
@@ -822,6 +867,7 @@ int main(int argc, char **argv)
     ties_case(&st);
     refusals_case(&st);
     copies_case(&st);
+    course_case(&st);
 #ifdef DD_TEST_BUILD
     fault_case(&st);
 #endif

@@ -17,6 +17,7 @@
  *  - set deletion: a random 10% and 90% of the vertices of M wuniform
  *    weighted points, dd_delete_set against CGAL's remove() one vertex at
  *    a time in the same random order.
+ * --set-only runs the set deletions alone.
  * A point hidden when its turn comes is not a vertex: it is skipped (on
  * both sides, each asked).  CGAL's figures are its calls alone, timed in
  * the shim; the bookkeeping that names vertices by index is not timed.
@@ -36,16 +37,17 @@
 
 typedef struct we_opts {
     uint64_t n, passes, m, seed;
-    int discard;
+    int discard, set_only;
 } we_opts;
 
 static int parse_opts(int argc, char **argv, we_opts *o)
 {
-    *o = (we_opts){100000, 2, 200000, 1, 0};
+    *o = (we_opts){100000, 2, 200000, 1, 0, 0};
     int k = 0;
     char *args[64];
-    for (int i = 0; i < argc && k < 64; i++)         /* the flag without a value, then the numbers */
+    for (int i = 0; i < argc && k < 64; i++)         /* the flags without a value, then the numbers */
         if (!strcmp(argv[i], "--discard-hidden")) o->discard = 1;
+        else if (!strcmp(argv[i], "--set-only")) o->set_only = 1;
         else args[k++] = argv[i];
     const num_opt opts[] = {{NULL, &o->n}, {"--passes", &o->passes}, {"--set", &o->m}, {"--seed", &o->seed}};
     int rc = parse_num_opts("wedits-bench", k, args, opts, (int)(sizeof opts / sizeof *opts));
@@ -205,10 +207,12 @@ int cmd_wedits_bench(int argc, char **argv)
     we_opts o;
     int rc = parse_opts(argc, argv, &o);
     if (rc) return rc;
-    rc |= reweighting(&o);
-    fflush(stdout);
-    rc |= moves(&o);
-    fflush(stdout);
+    if (!o.set_only) {
+        rc |= reweighting(&o);
+        fflush(stdout);
+        rc |= moves(&o);
+        fflush(stdout);
+    }
     const double fractions[2] = {0.1, 0.9};
     for (int i = 0; i < 2; i++) {
         rc |= set_deletion(&o, fractions[i]);
