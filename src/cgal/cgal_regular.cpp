@@ -288,12 +288,12 @@ int dd_cgal_rt_hidden(const dd_cgal_rt *c, uint32_t **idx, size_t *n)
         std::vector<Key> hk;
         c->rt->hidden(hk);
         std::sort(hk.begin(), hk.end());
-        hk.erase(std::unique(hk.begin(), hk.end()), hk.end());
         std::vector<uint32_t> out;
-        for (std::size_t i = 0; i < hk.size(); i++) {
+        for (std::size_t i = 0, j; i < hk.size(); i = j) {
+            for (j = i + 1; j < hk.size() && hk[j] == hk[i]; j++) {}
             std::map<Key, std::vector<uint32_t> >::const_iterator it = c->keys.find(hk[i]);
-            if (it == c->keys.end())
-                return 1;                 /* a hidden point nobody gave */
+            if (it == c->keys.end() || it->second.size() != j - i)
+                return 1;                 /* a hidden point nobody gave, or its copies miscounted */
             out.insert(out.end(), it->second.begin(), it->second.end());
         }
         return emit_indices(out, idx, n);

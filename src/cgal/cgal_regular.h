@@ -36,7 +36,10 @@ void dd_cgal_rt_free(dd_cgal_rt *c);
 
 /* Canonical cells (as dd_canonical: each cell's four input indices sorted,
  * -1 for the infinite vertex, the list sorted) and the sorted input
- * indices of the kept hidden points.  Arrays malloc'd, caller frees.     */
+ * indices of the kept hidden points.  Arrays malloc'd, caller frees.
+ * dd_cgal_rt_hidden fails (1) when CGAL hides a weighted point a number
+ * of times other than the indices the handle lists for it: its copies
+ * were dropped in a way the handle did not follow.                      */
 int dd_cgal_rt_canonical(const dd_cgal_rt *c, int32_t **tets, size_t *ntets);
 int dd_cgal_rt_hidden(const dd_cgal_rt *c, uint32_t **idx, size_t *n);
 /* The sorted input indices of the vertices (malloc'd, caller frees). */
