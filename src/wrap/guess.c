@@ -33,6 +33,10 @@ static inline uint32_t w_take_list(struct dd_wrap *w, uint32_t k, uint32_t nc)
  *  - DD_GUESS_TWO_STEP: those lists and the lists of their points, for an
  *    apex that is a neighbour of its facet's hubs only and of a neighbour
  *    of the third corner.
+ * Either way the hubs (w->hubs) are candidates too: a hub keeps no list,
+ * so an apex that is a hub is found only where a short list knows it,
+ * and on the curves the next cell round a hub's edge often has one more
+ * hub (q's neighbours along the curve) as its apex.
  * W_NONE when every corner is a hub or no candidate is beyond abc: the
  * wide guess decides that facet.  O(candidates).                         */
 uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, uint32_t c, const double m[6],
@@ -53,6 +57,11 @@ uint32_t w_guess_narrow(struct dd_wrap *w, dd_pred *pr, uint32_t a, uint32_t b, 
         if (w->nadj[v[i]] <= bound) nc = w_take_list(w, v[i], nc);
     for (uint32_t i = 0, n1 = nc; w->narrow == DD_GUESS_TWO_STEP && !W_NARROWER(w) && i < n1; i++)
         if (w->nadj[w->cand[i]] != W_ADJ_FULL) nc = w_take_list(w, w->cand[i], nc);
+    for (uint32_t i = 0; i < w->nhubs && !W_NARROWER(w); i++)   /* the hubs, a few */
+        if (w->seen[w->hubs[i]] != w->stamp) {
+            w->seen[w->hubs[i]] = w->stamp;
+            w->cand[nc++] = w->hubs[i];
+        }
     for (uint32_t k = w->nlink; k < w->n; k++)      /* the hidden sites (docs §13), a few */
         if (w->seen[k] != w->stamp) w->cand[nc++] = k;
     uint32_t uns, best = w_least_ratio(w, a, N, T, w->cand, nc, &uns);   /* a, b, c not among them */

@@ -7,7 +7,7 @@
  * Owns: the dispatch of the wide guess (wrap_guess; its passes, scalar,
  * AVX2 and single precision, are geom/lift_pass.h's), and the known-neighbour lists that the narrow guesses take
  * their candidates from (w->adj, w->nadj: up to W_ADJ_CAP per local
- * number, none for a hub): w_open_link starts them from the link
+ * number, none for a hub; the hubs listed in w->hubs): w_open_link starts them from the link
  * (w_adj_link), w_make_cell adds the edges of each new finite cell
  * (w_adj_edge).  The guess course of a facet is w_guess_apex, in run.c.
  *
@@ -83,11 +83,13 @@ static inline uint32_t wrap_guess(struct dd_wrap *w, uint32_t a, const double N[
 
 /* ---- the known neighbours ---------------------------------------------- */
 
-/* Appends v to k's known neighbours (a hub's list is left as it is).  */
+/* Appends v to k's known neighbours (a hub's list is left as it is); k
+ * becomes a hub, listed in w->hubs once, when its list overflows.       */
 static inline void w_adj_put(struct dd_wrap *w, uint32_t k, uint32_t v)
 {
     uint8_t c = w->nadj[k];
     if (c < W_ADJ_CAP) w->adj[(size_t)k * W_ADJ_CAP + c] = v;
+    else if (c == W_ADJ_CAP) w->hubs[w->nhubs++] = k;   /* at most n: once each */
     w->nadj[k] = c < W_ADJ_CAP ? (uint8_t)(c + 1) : W_ADJ_FULL;
 }
 

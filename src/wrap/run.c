@@ -91,7 +91,10 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
     dd_status s = w_ftab_reset(w, 6 * (size_t)n);
     if (s != DD_OK) return s;
     if ((s = w_reserve_recs(w, d->star.n)) != DD_OK) return s;
-    if (hub) memset(w->nadj, 0, n * sizeof *w->nadj);
+    if (hub) {
+        memset(w->nadj, 0, n * sizeof *w->nadj);
+        w->nhubs = 0;
+    }
     const int puts = hub && w->hub_last;             /* else count them (see below) */
     uint64_t kmin = UINT64_MAX;
     uint32_t rmin = 0;
@@ -141,6 +144,7 @@ dd_status w_open_link(dd_del *d, struct dd_wrap *w, uint32_t *start, int *hub)
         for (uint32_t k = 0; k < n && !*hub; k++) *hub = w->nadj[k] == W_ADJ_FULL;
         if (*hub && !puts) {                     /* the lists, from the records */
             memset(w->nadj, 0, n * sizeof *w->nadj);
+            w->nhubs = 0;
             for (uint32_t r = 0; r < w->nrec; r++) w_adj_link(w, w->tri[r], inf);
         }
         w->hub_last = *hub;

@@ -24,7 +24,7 @@ void dd_wrap_free(struct dd_wrap *w)
     dd_mfree(w->o); dd_mfree(w->wgt); dd_mfree(w->tmp); dd_mfree(w->lexr); dd_mfree(w->loc);
     dd_mfree(w->fs);
     dd_mfree(w->tri); dd_mfree(w->own); dd_mfree(w->out); dd_mfree(w->closed); dd_mfree(w->stack); dd_mfree(w->lcell); dd_mfree(w->keep);
-    dd_mfree(w->adj); dd_mfree(w->nadj); dd_mfree(w->seen); dd_mfree(w->cand); dd_mfree(w->code);
+    dd_mfree(w->adj); dd_mfree(w->nadj); dd_mfree(w->seen); dd_mfree(w->cand); dd_mfree(w->hubs); dd_mfree(w->code);
     dd_mfree(w);
 }
 
@@ -46,7 +46,7 @@ static dd_status w_reserve_n(struct dd_wrap *w, uint32_t n, uint32_t nv)
                 return DD_ERR_NOMEM;
         if (dd_grow(&w->adj, (size_t)cap * W_ADJ_CAP, sizeof *w->adj) ||
             dd_grow(&w->nadj, cap, sizeof *w->nadj) || dd_grow(&w->seen, cap, sizeof *w->seen) ||
-            dd_grow(&w->cand, cap, sizeof *w->cand))
+            dd_grow(&w->cand, cap, sizeof *w->cand) || dd_grow(&w->hubs, cap, sizeof *w->hubs))
             return DD_ERR_NOMEM;
         memset(w->seen, 0, cap * sizeof *w->seen);
         w->stamp = 0;
@@ -173,12 +173,16 @@ static dd_status w_begin(dd_del *d, struct dd_wrap *w, struct w_course *c)
 /* After a refuted guess, the next one (docs/gift-wrap.md §3 FILL): the
  * short lists, then two steps, then the wide guess; a wide guess once
  * more on shifted lifts where they are tighter, or else in full doubles
- * after a lean one.  0: none left.                                      */
+ * after a lean one.  After refuted narrow guesses the wide one is made
+ * in full doubles at once: such cavities are the curves', where a point
+ * nearly in a facet's plane is often its apex and the lean and
+ * single-precision guesses are refuted in turn.  0: none left.          */
 static int w_next_guess(dd_del *d, struct dd_wrap *w)
 {
     if (w->narrow != DD_GUESS_WIDE) {
         d->sstat[DD_WS_NARROW_REFUTED]++;
         w->narrow = w->narrow == DD_GUESS_SHORT ? DD_GUESS_TWO_STEP : DD_GUESS_WIDE;
+        if (w->narrow == DD_GUESS_WIDE) w->lean = w->f32 = 0;
         return 1;
     }
     d->sstat[DD_WS_SINGLE_REFUTED] |= w->f32 && w->f32_kept > 0;

@@ -176,6 +176,8 @@ struct dd_wrap {
     uint8_t *nadj;                /* their number; W_ADJ_FULL: a hub      */
     uint32_t *seen, stamp;        /* seen[k] == stamp: k is a candidate   */
     uint32_t *cand;               /* the candidates of one facet          */
+    uint32_t *hubs, nhubs;        /* the hubs, each once (w_adj_put), made
+                                     with the lists (w_open_link)         */
     int hub_last;                 /* the last link asked had a hub        */
     uint32_t lead;                /* local number of the least vertex id  */
 #ifdef DD_TEST_BUILD
