@@ -387,7 +387,7 @@ static void commit(flip_state *f)
 /* What move_star prefetches besides the star's cells: the cell across
  * each link facet (for the link facets' tests), the vertices' points and
  * weights (for the star test's rows), the heads of the cells' lists of
- * hidden points (t->hid kept; for dd_hidden_flips_hold).              */
+ * hidden points (t->hid kept and nin[v] > 0: for dd_hidden_flips_hold). */
 enum { DD_STAR_LINK = 1, DD_STAR_POINTS = 2, DD_STAR_LISTS = 4 };
 
 /* v's star into out, as dd_star_cells (breadth first from t->vcell[v]),
@@ -406,8 +406,13 @@ static dd_status move_star(dd_tri *t, uint32_t v, dd_vec *out, int what)
     uint32_t *a = out->a, n = 1;
     a[0] = t->vcell[v];
     set_add(set, a[0]);
+    int lists = what & DD_STAR_LISTS;
     for (uint32_t k = 0; k < n; k++) {
         const uint32_t *tv = dd_tv(t, a[k]), *tn = dd_tn(t, a[k]);
+        if (k == 0 && lists) {      /* the lists are read only when v's bound says some hold points */
+            lists = v < t->hid->vcap && t->hid->nin[v] > 0;
+            if (lists && a[0] < t->hid->ncap) __builtin_prefetch(t->hid->head + a[0]);
+        }
         for (uint32_t j = 0; j < 4; j++) {
             const uint32_t x = tv[j], nb = tn[j] >> 2;
             if (x == v) {
@@ -420,7 +425,7 @@ static dd_status move_star(dd_tri *t, uint32_t v, dd_vec *out, int what)
             }
             if (!set_add(set, nb)) continue;
             __builtin_prefetch(dd_tv(t, nb));
-            if (what & DD_STAR_LISTS && nb < t->hid->ncap) __builtin_prefetch(t->hid->head + nb);
+            if (lists && nb < t->hid->ncap) __builtin_prefetch(t->hid->head + nb);
             a[n++] = nb;
             if (n > DD_STAR_LOCAL) return dd_star_cells(t, v, out);
         }
