@@ -291,7 +291,13 @@ static inline int dd_is_infinite(int32_t v) { return v < 0; }
  * regular triangulation of the vertices left).  A kept hidden point v
  * may be deleted too: it is forgotten, O(1) and no cell changes (CGAL
  * has no call for it; the result is the regular triangulation of the
- * points left, which it does not change).                               */
+ * points left, which it does not change).  Exact copies (one weighted
+ * point under several indices): a copy that comes back as a vertex
+ * takes the lowest index and the others are forgotten, as CGAL does;
+ * copies that stay hidden all stay hidden, where CGAL's remove(), which
+ * re-inserts the star's hidden points one at a time in its own order,
+ * may drop some of them (one that is a vertex for a while makes it drop
+ * its twins).  The hidden weighted points are CGAL's all the same.     */
 dd_status dd_delete(dd_tri *t, uint32_t v);
 dd_status dd_delete_with(dd_tri *t, uint32_t v, const char *variant);
 

@@ -49,10 +49,11 @@ typedef struct stats {
      * WOP_SET), refused by both sides alike, skipped because the engine
      * answered DD_ERR_UNSUPPORTED; per strategy the deletions done;
      * hidden points that came back; deletions and moves of kept
-     * hidden points; whole comparisons.                                 */
+     * hidden points; whole comparisons; exact copies kept here that
+     * CGAL's remove() dropped (soak_weighted.c: wp_copies_dropped).     */
     uint64_t wdone[NUM_WOPS], wrefused[NUM_WOPS], wskipped[NUM_WOPS];
     uint64_t wvariant[SOAK_MAX_VARIANTS];
-    uint64_t wreleased, whidden_ops, wchecks;
+    uint64_t wreleased, whidden_ops, wchecks, wcopies;
 } stats;
 
 typedef struct soak {

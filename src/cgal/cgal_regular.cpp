@@ -374,7 +374,11 @@ namespace {
  * that came back as a vertex took the lowest index of its weighted
  * point, and CGAL's insert of an exact copy of that vertex kept nothing:
  * those copies' indices leave keys, which keeps the vertex's index and
- * as many others as CGAL still hides copies of it.  O(n).               */
+ * as many others as CGAL still hides copies of it.  A copy may also come
+ * back for a while, its twins dropped, and be hidden again by a later
+ * re-insertion: keys then keeps the lowest indices, as many as CGAL
+ * hides (which ones is CGAL's order; the engine keeps every copy, so the
+ * comparisons accept a subset: soak_weighted.c).  O(n).                 */
 template <class Policy>
 void drop_copies(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, std::vector<Key> &back)
 {
@@ -398,6 +402,11 @@ void drop_copies(Rt_of<Policy> *r, std::map<Key, std::vector<uint32_t> > &keys, 
             if (idx[i] != it->info()) kept.push_back(idx[i]), more--;
         std::sort(kept.begin(), kept.end());
         idx.swap(kept);
+        still[k] = idx.size();             /* done: the trim below keeps it */
+    }
+    for (std::size_t i = 0; i < back.size(); i++) {
+        std::map<Key, std::vector<uint32_t> >::iterator it = keys.find(back[i]);
+        if (it != keys.end() && it->second.size() > still[back[i]]) it->second.resize(still[back[i]]);
     }
 }
 

@@ -143,11 +143,13 @@ static dd_status collect_star(dd_del *d)
             else if (d->vmark[w] != vep) {
                 d->vmark[w] = vep;
                 d->nbr.a[d->nbr.n++] = w;
+                __builtin_prefetch(t->xyz + 3 * (size_t)w);   /* the fill lifts it */
             }
             uint32_t nb = dd_tn(t, c)[j] >> 2;
             if (t->stamp[nb] != ep) {
                 t->stamp[nb] = ep;
                 d->star.a[d->star.n++] = nb;
+                __builtin_prefetch(dd_tv(t, nb));    /* read when its turn comes */
             }
         }
     }
