@@ -40,28 +40,72 @@
  * takes a few; the reinsertion it falls back to costs about a dozen).   */
 #define DD_FLIP_MAX 24
 
+/* Slots of the small sets of cells kept on the stack (open addressing,
+ * DD_NONE empty): a move's star (at most DD_STAR_LOCAL cells), the cells
+ * a repair logged (at most 6 a flip) or replaced (at most 3 a flip), so
+ * never more than 6 * DD_FLIP_MAX = 144 in a set of 256: the probes
+ * end.  They stand in for the per-cell marks, whose reads miss the
+ * cache on cells scattered through the mesh.                           */
+#define DD_SET_SLOTS 256
+
+/* Adds cell c to the open-addressing set: 1 if it was not there. */
+static int set_add(uint32_t *set, uint32_t c)
+{
+    uint32_t k = (c * 0x9E3779B1u) >> 24;
+    while (set[k] != DD_NONE) {
+        if (set[k] == c) return 0;
+        k = (k + 1) & (DD_SET_SLOTS - 1);
+    }
+    set[k] = c;
+    return 1;
+}
+
+/* Whether cell c is in the set. */
+static int set_has(const uint32_t *set, uint32_t c)
+{
+    for (uint32_t k = (c * 0x9E3779B1u) >> 24; set[k] != DD_NONE; k = (k + 1) & (DD_SET_SLOTS - 1))
+        if (set[k] == c) return 1;
+    return 0;
+}
+
 /* The repair's state: cells made, cells replaced (killed on success),
- * logged cells (id, then their 8 words as they were), the facet stack. */
+ * logged cells (id, then their 8 words as they were), the facet stack;
+ * the sets of the cells logged and replaced, emptied at the first flip
+ * (before it, both are empty).                                          */
 typedef struct flip_state {
     dd_tri *t;
     dd_vec *made, *gone, *log, *stack, *later;   /* t's scratch, reused   */
-    dd_mark touched;            /* stamp of a cell logged already          */
-    dd_mark replaced;           /* stamp of a cell a flip replaced         */
+    dd_mark replaced;           /* stamp of a cell a flip replaced, for
+                                   hidden_move.c, which reads t's marks   */
     int flips;
     int power;                  /* power tests: weighted t (DESIGN 12)    */
+    uint32_t touched_set[DD_SET_SLOTS], gone_set[DD_SET_SLOTS];
 } flip_state;
+
+/* A repair of t (power: weighted) about to start: t's scratch vectors as
+ * its lists, a fresh mark for the cells it replaces, no flip yet.  The
+ * sets are left as they are (2 KB that a move without flips never reads). */
+static void start_repair(flip_state *f, dd_tri *t, int power)
+{
+    dd_vec *sc = t->flip;
+    f->t = t;
+    f->made = &sc[0], f->gone = &sc[1], f->log = &sc[2], f->stack = &sc[3], f->later = &sc[4];
+    f->replaced = dd_new_epoch(t, 1);
+    f->flips = 0;
+    f->power = power;
+}
 
 /* Logs cell c before its first write in this repair. */
 static dd_status touch(flip_state *f, uint32_t c)
 {
     dd_tri *t = f->t;
-    if (t->stamp[c] == f->touched) return DD_OK;
+    if (set_has(f->touched_set, c)) return DD_OK;
     dd_status s = dd_vec_room(f->log, 1 + DD_CELL_WORDS);
     if (s != DD_OK) return s;
     f->log->a[f->log->n++] = c;
     memcpy(f->log->a + f->log->n, dd_tv(t, c), DD_CELL_WORDS * sizeof *f->log->a);
     f->log->n += DD_CELL_WORDS;
-    t->stamp[c] = f->touched;
+    set_add(f->touched_set, c);
     return DD_OK;
 }
 
@@ -78,7 +122,7 @@ static void undo(flip_state *f, uint32_t ncell0)
 
 static int is_gone(const flip_state *f, uint32_t c)
 {
-    return f->t->stamp[c] == f->replaced;
+    return f->flips > 0 && set_has(f->gone_set, c);
 }
 
 /* The five vertices of a flip, loc[0..5), name its facets: a facet is the
@@ -107,6 +151,10 @@ static dd_status replace(flip_state *f, const uint32_t loc[5], const uint32_t *o
 {
     dd_tri *t = f->t;
     uint32_t outside[32], pending[32], has_out = 0, has_pend = 0, bit[4];
+    if (f->flips == 0) {
+        memset(f->touched_set, 0xff, sizeof f->touched_set);
+        memset(f->gone_set, 0xff, sizeof f->gone_set);
+    }
     dd_status s = dd_vec_room(f->stack, 4 * (size_t)m);
     /* room first: a cell made and not listed in made could not be undone */
     if (s == DD_OK) s = dd_vec_room(f->made, (size_t)m);
@@ -143,6 +191,7 @@ static dd_status replace(flip_state *f, const uint32_t loc[5], const uint32_t *o
     for (int a = 0; a < k && s == DD_OK; a++) {
         s = dd_vec_push(f->gone, old[a]);
         t->stamp[old[a]] = f->replaced;
+        set_add(f->gone_set, old[a]);
     }
     f->flips++;
     return s;
@@ -329,16 +378,72 @@ static void commit(flip_state *f)
         }
 }
 
+/* ---- the star of the moved vertex ---------------------------------------- */
+
+/* Largest star collected with the local set below (at most half full);
+ * a larger one is collected by dd_star_cells with the epoch marks.     */
+#define DD_STAR_LOCAL 128
+
+/* What move_star prefetches besides the star's cells: the cell across
+ * each link facet (for the link facets' tests), the vertices' points and
+ * weights (for the star test's rows), the heads of the cells' lists of
+ * hidden points (t->hid kept and nin[v] > 0: for dd_hidden_flips_hold). */
+enum { DD_STAR_LINK = 1, DD_STAR_POINTS = 2, DD_STAR_LISTS = 4 };
+
+/* v's star into out, as dd_star_cells (breadth first from t->vcell[v]),
+ * without the per-cell marks: the cells seen are kept in a small set on
+ * the stack, and each cell found is prefetched when it is found, so the
+ * cells of a breadth-first level arrive together rather than one after
+ * the other (what = DD_STAR_* adds the other prefetches).  A star of
+ * more than DD_STAR_LOCAL cells is handed to dd_star_cells.  O(star);
+ * DD_ERR_NOMEM when out cannot grow.                                    */
+static dd_status move_star(dd_tri *t, uint32_t v, dd_vec *out, int what)
+{
+    dd_status s = dd_vec_room(out, DD_STAR_LOCAL + 4);
+    if (s != DD_OK) return s;
+    uint32_t set[DD_SET_SLOTS];
+    memset(set, 0xff, sizeof set);
+    uint32_t *a = out->a, n = 1;
+    a[0] = t->vcell[v];
+    set_add(set, a[0]);
+    int lists = what & DD_STAR_LISTS;
+    for (uint32_t k = 0; k < n; k++) {
+        const uint32_t *tv = dd_tv(t, a[k]), *tn = dd_tn(t, a[k]);
+        if (k == 0 && lists) {      /* the lists are read only when v's bound says some hold points */
+            lists = v < t->hid->vcap && t->hid->nin[v] > 0;
+            if (lists && a[0] < t->hid->ncap) __builtin_prefetch(t->hid->head + a[0]);
+        }
+        for (uint32_t j = 0; j < 4; j++) {
+            const uint32_t x = tv[j], nb = tn[j] >> 2;
+            if (x == v) {
+                if (what & DD_STAR_LINK) __builtin_prefetch(dd_tv(t, nb));
+                continue;
+            }
+            if (what & DD_STAR_POINTS && x != DD_INF) {
+                __builtin_prefetch(t->xyz + 3 * (size_t)x);
+                __builtin_prefetch(t->wt + x);
+            }
+            if (!set_add(set, nb)) continue;
+            __builtin_prefetch(dd_tv(t, nb));
+            if (lists && nb < t->hid->ncap) __builtin_prefetch(t->hid->head + nb);
+            a[n++] = nb;
+            if (n > DD_STAR_LOCAL) return dd_star_cells(t, v, out);
+        }
+    }
+    out->n = n;
+    return DD_OK;
+}
+
 int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_status *err)
 {
     *flips = 0;
-    *err = dd_star_cells(t, v, &t->conflict);
+    *err = move_star(t, v, &t->conflict, DD_STAR_LINK);
     if (*err != DD_OK) return 0;
     dd_vec *sc = t->flip;
     for (int k = 0; k < 5; k++) sc[k].n = 0;
     if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;
-    const dd_mark mark = dd_new_epoch(t, 2);
-    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0, 0};
+    flip_state f;                            /* the sets: emptied at the first flip */
+    start_repair(&f, t, 0);
     double *x = t->xyz + 3 * (size_t)v, old[3] = {x[0], x[1], x[2]};
     x[0] = p[0], x[1] = p[1], x[2] = p[2];
     if (!star_test(&f, v, p)) {
@@ -360,44 +465,63 @@ int dd_move_by_flips(dd_tri *t, uint32_t v, const double p[3], int *flips, dd_st
 
 /* ---- weighted moves --------------------------------------------------- */
 
-/* Star cells ahead of the one tested whose apex across the link is
- * prefetched: its cell, prefetched first, has arrived by then.        */
-#define DD_STAR_AHEAD 4
+/* A link facet's power test put off until the apex's point has arrived:
+ * star cell c's cofactors K and its frame's m and W, the facet j, the
+ * apex across it.                                                      */
+typedef struct link_test {
+    double K[4], m, W;
+    uint32_t c, j, apex;
+} link_test;
 
-/* Prefetches the point and weight of the apex across star cell c's link
- * facet (the vertex opposite v in the cell there).                      */
-static void prefetch_apex(const dd_tri *t, uint32_t c, uint32_t v)
+/* Pushes facet j of c unless the lifted filter certifies apex (finite)
+ * not in power conflict with c: K . L[apex] beyond dd_lift_power_err. */
+static void test_facet_power(flip_state *f, const double K[4], double m, double W, uint32_t c, uint32_t j,
+                             uint32_t apex, const double *p, double wv)
 {
-    const uint32_t g = dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)], o = dd_tv(t, g >> 2)[g & 3];
-    if (o == DD_INF) return;
-    __builtin_prefetch(t->xyz + 3 * (size_t)o);
-    __builtin_prefetch(t->wt + o);
+    dd_tri *t = f->t;
+    double L[4];
+    const double dw = t->wt[apex] - wv;
+    const double Wa = dd_lift_max(W, fabs(dw));
+    const double ma = dd_lift_max(m, dd_lift_row_power(L, dd_pt(t, apex), p, dw));
+    if (dd_lift_dot4(K, L) > dd_lift_power_err(ma, Wa)) {
+#ifdef DD_TEST_BUILD
+        if (dd_cell_power_conflict_fast(t, c, dd_pt(t, apex), t->wt[apex])) __builtin_trap();
+#endif
+        return;
+    }
+    f->stack->a[f->stack->n++] = 4 * c + j;
 }
 
 /* The weighted counterpart of star_test, v now at (p, w): every finite
  * star cell positively oriented (unchanged when only the weight changed:
- * !moved, no test) and each facet of the star locally regular.  In the
- * frame lifted at (p, w), a vertex x's row is (x - p, |x - p|^2 -
- * (w_x - w)) (lift.h's weighted lift), v's is 0, and a cell's power
- * test against an apex o is K . L[o] as in star_test, certified beyond
- * dd_lift_power_err of the frame's m and W = max |w_x - w| (the cell's
- * three rows and the apex's).  Pushes the facets the filter cannot
- * certify, or that fail, on f->stack (room made by the caller) for
- * Lawson's exact power tests; hull cells go there whole.  0 when a star
- * cell is not positively oriented.                                      */
-static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv, int moved)
+ * how != DD_MOVE_POINT, no test) and each facet of the star locally
+ * regular.  In the frame lifted at (p, w), a vertex x's row is (x - p,
+ * |x - p|^2 - (w_x - w)) (lift.h's weighted lift), v's is 0, and a
+ * cell's power test against an apex o is K . L[o] as in star_test,
+ * certified beyond dd_lift_power_err of the frame's m and W = max |w_x -
+ * w| (the cell's three rows and the apex's).  Pushes the facets the
+ * filter cannot certify, or that fail, on f->stack (room made by the
+ * caller) for Lawson's exact power tests; hull cells go there whole.
+ *
+ * A lighter v (DD_MOVE_LIGHTER) leaves every link facet of a finite star
+ * cell locally regular, untested: with barycentric coordinates l wrt the
+ * cell, the lifted plane of the cell at a point x moves by l_v(x) times
+ * the rise of v's lift (w_old - w > 0), and the apex o across the link
+ * facet has l_v(o) < 0 (the cell across is not flat), so o, which was
+ * not below that plane, is strictly above it now.
+ *
+ * The link facets' tests come last: the apex's point is prefetched when
+ * its cell is tested, and read once the rest of the star is done.
+ * 0 when a star cell is not positively oriented.                       */
+static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv, int how)
 {
     dd_tri *t = f->t;
     const dd_vec *star = &t->conflict;
     dd_vec *stack = f->stack;
-    const uint32_t *head = t->hid && t->hid->keep ? t->hid->head : NULL, ncap = head ? t->hid->ncap : 0;
-    for (size_t k = 0; k < star->n; k++) {     /* the cells across the link, and the lists read after */
-        const uint32_t c = star->a[k];
-        __builtin_prefetch(dd_tv(t, dd_tn(t, c)[dd_slot_of(dd_tv(t, c), v)] >> 2));
-        if (c < ncap) __builtin_prefetch(head + c);
-    }
+    link_test lt[DD_STAR_LOCAL + 4];
+    size_t nl = 0;
+    const int defer = star->n <= DD_STAR_LOCAL + 4, links = how != DD_MOVE_LIGHTER;
     for (size_t k = 0; k < star->n; k++) {
-        if (k + DD_STAR_AHEAD < star->n) prefetch_apex(t, star->a[k + DD_STAR_AHEAD], v);
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
         const uint32_t i = dd_slot_of(w, v);
         if (has(w, DD_INF)) {
@@ -413,7 +537,7 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
             m = dd_lift_max(m, dd_lift_row_power(R[a], dd_pt(t, x), p, dw));
         }
         dd_lift_minors(mi, R[0], R[1]);
-        if (!moved) {
+        if (how != DD_MOVE_POINT) {
 #ifdef DD_TEST_BUILD
             if (orient4(t, w) <= 0) __builtin_trap();   /* a weight alone turns no cell */
 #endif
@@ -426,23 +550,28 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
         }
         dd_lift_cofactors(K, R[2], mi);
         for (uint32_t j = 0; j < 4; j++) {
+            if (j == i && !links) {
+#ifdef DD_TEST_BUILD
+                if (facet_bad(f, c, j)) __builtin_trap();   /* the argument above */
+#endif
+                continue;
+            }
             if (j != i && c > nb[j] >> 2) continue;
             const uint32_t apex = dd_tv(t, nb[j] >> 2)[nb[j] & 3];
-            if (apex != DD_INF) {
-                double L[4];
-                const double dw = t->wt[apex] - wv;
-                const double Wa = dd_lift_max(W, fabs(dw));
-                const double ma = dd_lift_max(m, dd_lift_row_power(L, dd_pt(t, apex), p, dw));
-                if (dd_lift_dot4(K, L) > dd_lift_power_err(ma, Wa)) {
-#ifdef DD_TEST_BUILD
-                    if (dd_cell_power_conflict_fast(t, c, dd_pt(t, apex), t->wt[apex])) __builtin_trap();
-#endif
-                    continue;
-                }
+            if (apex == DD_INF) {
+                stack->a[stack->n++] = 4 * c + j;
+            } else if (j == i && defer) {
+                __builtin_prefetch(t->xyz + 3 * (size_t)apex);
+                __builtin_prefetch(t->wt + apex);
+                link_test *l = &lt[nl++];
+                memcpy(l->K, K, sizeof K);
+                l->m = m, l->W = W, l->c = c, l->j = j, l->apex = apex;
+            } else {
+                test_facet_power(f, K, m, W, c, j, apex, p, wv);
             }
-            stack->a[stack->n++] = 4 * c + j;
         }
     }
+    for (size_t k = 0; k < nl; k++) test_facet_power(f, lt[k].K, lt[k].m, lt[k].W, lt[k].c, lt[k].j, lt[k].apex, p, wv);
     return 1;
 }
 
@@ -457,18 +586,23 @@ static void put_point(dd_tri *t, uint32_t v, const double p[3], double w)
 int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err)
 {
     *flips = 0;
-    *err = dd_star_cells(t, v, &t->conflict);
+    const double *x = dd_pt(t, v);
+    const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
+    const int how = old[0] != p[0] || old[1] != p[1] || old[2] != p[2] ? DD_MOVE_POINT
+                    : w < wold                                         ? DD_MOVE_LIGHTER
+                                                                       : DD_MOVE_HEAVIER;
+    const int keep = t->hid && t->hid->keep;
+    if (keep && v < t->hid->vcap) __builtin_prefetch(t->hid->nin + v);   /* read after the star */
+    *err = move_star(t, v, &t->conflict,
+                     (how == DD_MOVE_LIGHTER ? DD_STAR_POINTS : DD_STAR_POINTS | DD_STAR_LINK) | (keep ? DD_STAR_LISTS : 0));
     if (*err != DD_OK || dd_hidden_star_copies(t, v, t->conflict.a, t->conflict.n)) return 0;
     dd_vec *sc = t->flip;
     for (int k = 0; k < 5; k++) sc[k].n = 0;
     if ((*err = dd_vec_room(&sc[3], 4 * t->conflict.n)) != DD_OK) return 0;
-    const dd_mark mark = dd_new_epoch(t, 2);
-    flip_state f = {t, &sc[0], &sc[1], &sc[2], &sc[3], &sc[4], mark, (dd_mark)(mark + 1), 0, 1};
-    const double *x = dd_pt(t, v);
-    const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
-    const int moved = old[0] != p[0] || old[1] != p[1] || old[2] != p[2];
+    flip_state f;                            /* the sets: emptied at the first flip */
+    start_repair(&f, t, 1);
     put_point(t, v, p, w);
-    if (!star_test_power(&f, v, p, w, moved)) {
+    if (!star_test_power(&f, v, p, w, how)) {
         put_point(t, v, old, wold);
         return 0;
     }
@@ -478,7 +612,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
     int ok = *err == DD_OK && lawson(&f, err);
     dd_vec *homes = f.stack;                 /* empty once Lawson's loop succeeded */
     if (ok && t->hid && t->hid->keep)
-        ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.replaced, moved, homes, err);
+        ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.replaced, how, homes, err);
     if (!ok) {
         undo(&f, ncell0);
         put_point(t, v, old, wold);

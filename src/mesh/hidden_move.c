@@ -99,7 +99,7 @@ static int rehome(dd_tri *t, const dd_vec *made, dd_mark gone_mark, uint32_t x, 
     return 1;
 }
 
-int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int how,
                          dd_vec *homes, dd_status *err)
 {
     const dd_hidset *h = t->hid;
@@ -111,12 +111,16 @@ int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec
      * hide it under a vertex with its point, a state flips cannot give. */
     for (size_t k = 0; k < star->n && !none; k++) {
         const uint32_t c = star->a[k];
-        if (c >= h->ncap) continue;
+        if (c >= h->ncap || h->head[c] == DD_NONE) continue;
         const int live = t->stamp[c] != gone_mark;
         for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x]) {
             if (same_weighted(t, x, v)) return 0;
             if (!live) continue;                              /* the loop below */
-            if (!moved || holds(t, c, dd_pt(t, x))) {
+            if (how == DD_MOVE_HEAVIER) {
+#ifdef DD_TEST_BUILD
+                if (!stays_hidden(t, c, x)) __builtin_trap();   /* the argument in hidden_move.h */
+#endif
+            } else if (how != DD_MOVE_POINT || holds(t, c, dd_pt(t, x))) {
                 if (!stays_hidden(t, c, x)) return 0;
             } else if (!rehome(t, made, gone_mark, x, homes, err)) {
                 return 0;

@@ -21,6 +21,13 @@
  * its cell's list).                                                    */
 void dd_hidden_forget(dd_tri *t, uint32_t v, uint32_t *cell);
 
+/* What a weighted move changes (dd_move_power_by_flips picks it): v's
+ * point, or only its weight, down or up.  A weight alone turns no cell;
+ * a lighter v (lift raised) leaves the link facets of its star locally
+ * regular, a heavier one (lift lowered) the hidden points of its star
+ * hidden (flip.c, dd_hidden_flips_hold).                               */
+enum { DD_MOVE_POINT = 1, DD_MOVE_LIGHTER = 2, DD_MOVE_HEAVIER = 3 };
+
 /* Moves vertex v of the weighted t to (p, w) and repairs the mesh by
  * 2-3 and 3-2 flips with power tests (flip.c): 1 when that yields the
  * state a removal of v and an insertion of (p, w) reach, in either
@@ -48,17 +55,22 @@ int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, siz
 
 /* For dd_move_power_by_flips of vertex v, hidden points kept, before
  * it commits: the cells gone[0..) (stamped gone_mark) replaced by the
- * others of made[0..), and v's point (moved) or weight changed in the
- * live cells of its star t->conflict.  1 if every kept hidden point
- * stays hidden: one of a live star cell still in its closure (always
- * when !moved) and not in power conflict with it; one of a gone cell,
+ * others of made[0..), and v's point or weight changed (how, a
+ * DD_MOVE_*) in the live cells of its star t->conflict.  1 if every
+ * kept hidden point stays hidden: one of a live star cell still in its
+ * closure (always when only the weight changed) and not in power
+ * conflict with it (always when v is heavier: the lifted plane of the
+ * cell at a point x of its closure moves by l_v(x) >= 0, the point's
+ * barycentric coordinate, times the fall of v's lift, so x, not below
+ * it before, is not below it after, with the same sign when l_v(x) =
+ * 0; untested then); one of a gone cell,
  * or of a star cell that no longer holds it, in the closure of a live
  * made or star cell and not in conflict with it, that cell its new
  * home, written to homes as (point, cell) pairs.  Else 0 (a point
  * comes back, left the changed region, or carries v's new weighted
  * point); *err DD_ERR_NOMEM (and 0) when homes cannot grow.  nin[v] == 0 skips the lists of v's star.
  * Reads only.  O(star + made) a point re-homed.                       */
-int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int moved,
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int how,
                          dd_vec *homes, dd_status *err);
 
 /* After the flips committed (the cells gone[0..) dead): each point of
