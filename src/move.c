@@ -240,15 +240,16 @@ static dd_status check_point(dd_tri *t, const double p[3])
     return DD_OK;
 }
 
-/* Asks for vertex id v's words the move reads next, at once: each is in
- * an array of its own, and v is anywhere in the mesh.                  */
+/* Asks for vertex id v (a vertex id, not DD_NONE) 's words the move
+ * reads next, at once: each is in an array of its own, and v is anywhere
+ * in the mesh.  No weights on an unweighted t.                         */
 static void prefetch_vertex(const dd_tri *t, uint32_t v)
 {
     __builtin_prefetch(t->v2in + v);
     __builtin_prefetch(t->vcell + v);
     __builtin_prefetch(t->xyz + 3 * (size_t)v);
     __builtin_prefetch(t->xyz + 3 * (size_t)v + 2);
-    __builtin_prefetch(t->wt + v);
+    if (t->wt) __builtin_prefetch(t->wt + v);
     if (t->hid && v < t->hid->vcap) __builtin_prefetch(t->hid->cell + v);
 }
 
@@ -291,7 +292,7 @@ dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w)
 static dd_status move_vertex(dd_tri *t, uint32_t input, const double p[3])
 {
     if (t->wt) return move_weighted(t, input, p, 0.0, 1);
-    if (input < t->np) prefetch_vertex(t, t->in2v[input]);
+    if (input < t->np && t->in2v[input] != DD_NONE) prefetch_vertex(t, t->in2v[input]);
     dd_status s = check_point(t, p);
     if (s != DD_OK) return s;
     uint32_t v;
