@@ -394,24 +394,18 @@ static void copies_case(tl_state *st)
  * 10: 0 with why filled if not.                                        */
 static int kept_both_copies(const dd_tri *t, const dd_cgal_rt *c, int cgal_has[2], char *why, size_t nwhy)
 {
-    int32_t *a = NULL, *b = NULL;
-    uint32_t *ha = NULL, *hb = NULL;
-    size_t na = 0, nb = 0, nha = 0, nhb = 0;
-    int ok = 0;
-    if (dd_canonical(t, &a, &na) != DD_OK || dd_cgal_rt_canonical(c, &b, &nb))
-        snprintf(why, nwhy, "no canonical form");
-    else if (na != nb || memcmp(a, b, 4 * na * sizeof *a))
-        snprintf(why, nwhy, "cells differ: %zu here, %zu in CGAL", na, nb);
-    else if (dd_hidden(t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(c, &hb, &nhb))
-        snprintf(why, nwhy, "no hidden list");
-    else if (nha != 2 || ha[0] != 9 || ha[1] != 10)
+    uint32_t *ha, *hb;
+    size_t nha, nhb;
+    int ok = ws_same_cells(t, c, &ha, &nha, &hb, &nhb, why, nwhy);
+    if (ok && (nha != 2 || ha[0] != 9 || ha[1] != 10)) {
         snprintf(why, nwhy, "the engine should keep both copies 9 and 10 hidden (%zu hidden)", nha);
-    else if (nhb < 1 || nhb > 2 || hb[0] < 9 || hb[nhb - 1] > 10)
+        ok = 0;
+    } else if (ok && (nhb < 1 || nhb > 2 || hb[0] < 9 || hb[nhb - 1] > 10)) {
         snprintf(why, nwhy, "CGAL should hide 9 or 10 or both (%zu hidden)", nhb);
-    else
-        ok = 1;
+        ok = 0;
+    }
     for (size_t k = 0; ok && k < nhb; k++) cgal_has[hb[k] - 9] = 1;
-    free(a), free(b), free(ha), free(hb);
+    free(ha), free(hb);
     return ok;
 }
 

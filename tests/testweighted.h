@@ -126,23 +126,38 @@ static inline wset gen_grid(uint32_t side, uint32_t extra, int dups, uint64_t se
 
 /* ---- comparisons ------------------------------------------------------------- */
 
-static inline int same_as_cgal(const dd_tri *t, const dd_cgal_rt *c, char *why, size_t nwhy)
+/* The cells of t equal c's; then both hidden lists in *ha (t's) and *hb
+ * (c's), the caller's to free.  0 with why filled otherwise.            */
+static inline int ws_same_cells(const dd_tri *t, const dd_cgal_rt *c, uint32_t **ha, size_t *nha, uint32_t **hb,
+                                size_t *nhb, char *why, size_t nwhy)
 {
     int32_t *a = NULL, *b = NULL;
-    uint32_t *ha = NULL, *hb = NULL;
-    size_t na = 0, nb = 0, nha = 0, nhb = 0;
+    size_t na = 0, nb = 0;
     int ok = 0;
+    *ha = *hb = NULL;
+    *nha = *nhb = 0;
     if (dd_canonical(t, &a, &na) != DD_OK || dd_cgal_rt_canonical(c, &b, &nb))
         snprintf(why, nwhy, "no canonical form");
     else if (na != nb || memcmp(a, b, 4 * na * sizeof *a))
         snprintf(why, nwhy, "cells differ: %zu here, %zu in CGAL", na, nb);
-    else if (dd_hidden(t, &ha, &nha) != DD_OK || dd_cgal_rt_hidden(c, &hb, &nhb))
+    else if (dd_hidden(t, ha, nha) != DD_OK || dd_cgal_rt_hidden(c, hb, nhb))
         snprintf(why, nwhy, "no hidden list");
-    else if (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))
-        snprintf(why, nwhy, "hidden sets differ: %zu here, %zu in CGAL", nha, nhb);
     else
         ok = 1;
-    free(a), free(b), free(ha), free(hb);
+    free(a), free(b);
+    return ok;
+}
+
+static inline int same_as_cgal(const dd_tri *t, const dd_cgal_rt *c, char *why, size_t nwhy)
+{
+    uint32_t *ha, *hb;
+    size_t nha, nhb;
+    int ok = ws_same_cells(t, c, &ha, &nha, &hb, &nhb, why, nwhy);
+    if (ok && (nha != nhb || (nha && memcmp(ha, hb, nha * sizeof *ha)))) {
+        snprintf(why, nwhy, "hidden sets differ: %zu here, %zu in CGAL", nha, nhb);
+        ok = 0;
+    }
+    free(ha), free(hb);
     return ok;
 }
 
