@@ -541,10 +541,30 @@ def test_weighted_edits():
         raises("wedit/move_weighted unweighted", "DD_ERR_UNSUPPORTED", u.move_weighted, 0, xyz[0], 0.1)
 
 
+def test_weighted_copies():
+    """delete keeps every copy of a hidden weighted point that stays hidden
+    (dtdel.h: dd_delete; test_wdelete copies/dropped compares with CGAL):
+    the cube's corners, a heavy centre 8 hiding copies 9 and 10 of a and
+    a heavier 11 that hides a once 8 is gone."""
+    cube = [[k & 1, (k >> 1) & 1, (k >> 2) & 1] for k in range(8)]
+    xyz = np.array(cube + [[0.5, 0.5, 0.5], [0.45, 0.4, 0.2]], dtype=float)
+    w = np.array([0.0] * 8 + [1.5, 0.0])
+    with Triangulation(xyz, weights=w) as t:
+        c = t.insert_weighted([0.45, 0.4, 0.2], 0.0)
+        b = t.insert_weighted([0.55, 0.4, 0.2], 0.2)
+        check("wcopies/hidden before", (c, b) == (10, 11) and list(t.hidden()) == [9, 10, 11])
+        t.delete(8)
+        check("wcopies/both copies kept", list(t.hidden()) == [9, 10] and t.is_vertex(11),
+              str(list(t.hidden())))
+        t.delete(10)
+        check("wcopies/a copy forgotten", list(t.hidden()) == [9] and not t.is_vertex(10))
+        t.check()
+
+
 def main():
     for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
               test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted,
-              test_weighted_edits, test_install):
+              test_weighted_edits, test_weighted_copies, test_install):
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
