@@ -242,7 +242,8 @@ static dd_status check_point(dd_tri *t, const double p[3])
 
 /* Asks for vertex id v (a vertex id, not DD_NONE) 's words the move
  * reads next, at once: each is in an array of its own, and v is anywhere
- * in the mesh.  No weights on an unweighted t.                         */
+ * in the mesh.  No weights on an unweighted t; no word of hidden.c (a
+ * vertex is found no hidden point by its vcell).                       */
 static void prefetch_vertex(const dd_tri *t, uint32_t v)
 {
     __builtin_prefetch(t->v2in + v);
@@ -250,7 +251,6 @@ static void prefetch_vertex(const dd_tri *t, uint32_t v)
     __builtin_prefetch(t->xyz + 3 * (size_t)v);
     __builtin_prefetch(t->xyz + 3 * (size_t)v + 2);
     if (t->wt) __builtin_prefetch(t->wt + v);
-    if (t->hid && v < t->hid->vcap) __builtin_prefetch(t->hid->cell + v);
 }
 
 /* dd_move_weighted; keep_weight: dd_move's (w ignored, v's kept). */
@@ -262,7 +262,8 @@ static dd_status move_weighted(dd_tri *t, uint32_t input, const double p[3], dou
     if (s != DD_OK) return s;
     uint32_t v = input < t->np ? t->in2v[input] : DD_NONE;
     if (v != DD_NONE) prefetch_vertex(t, v);
-    const int hidden = v != DD_NONE && t->v2in[v] == input && dd_hidden_has(t, v);
+    /* a vertex (vcell set) is no hidden point: its hidden.c word unread */
+    const int hidden = v != DD_NONE && t->v2in[v] == input && t->vcell[v] == DD_NONE && dd_hidden_has(t, v);
     if (!hidden && (s = dd_del_resolve(t, input, &v)) != DD_OK) return s;
     if (keep_weight) w = t->wt[v];
     if (isnan(w)) return dd_fail(t, DD_ERR_NAN, "the new weight is NaN");

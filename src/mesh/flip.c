@@ -40,57 +40,32 @@
  * takes a few; the reinsertion it falls back to costs about a dozen).   */
 #define DD_FLIP_MAX 24
 
-/* Slots of the small sets of cells kept on the stack (open addressing,
- * DD_NONE empty): a move's star (at most DD_STAR_LOCAL cells), the cells
- * a repair logged (at most 6 a flip) or replaced (at most 3 a flip), so
- * never more than 6 * DD_FLIP_MAX = 144 in a set of 256: the probes
- * end.  They stand in for the per-cell marks, whose reads miss the
- * cache on cells scattered through the mesh.                           */
-#define DD_SET_SLOTS 256
-
-/* Adds cell c to the open-addressing set: 1 if it was not there. */
-static int set_add(uint32_t *set, uint32_t c)
-{
-    uint32_t k = (c * 0x9E3779B1u) >> 24;
-    while (set[k] != DD_NONE) {
-        if (set[k] == c) return 0;
-        k = (k + 1) & (DD_SET_SLOTS - 1);
-    }
-    set[k] = c;
-    return 1;
-}
-
-/* Whether cell c is in the set. */
-static int set_has(const uint32_t *set, uint32_t c)
-{
-    for (uint32_t k = (c * 0x9E3779B1u) >> 24; set[k] != DD_NONE; k = (k + 1) & (DD_SET_SLOTS - 1))
-        if (set[k] == c) return 1;
-    return 0;
-}
-
 /* The repair's state: cells made, cells replaced (killed on success),
  * logged cells (id, then their 8 words as they were), the facet stack;
  * the sets of the cells logged and replaced, emptied at the first flip
- * (before it, both are empty).                                          */
+ * (before it, both are empty: read them only once flips > 0).  The sets
+ * (hidden_move.h's dd_cellset, on the stack, as is a move's star of at
+ * most DD_STAR_LOCAL cells) hold at most 6 (logged) or 3 (replaced)
+ * cells a flip, so never more than 6 * DD_FLIP_MAX = 144 of their
+ * DD_SET_SLOTS = 256: the probes end.  They stand in for the per-cell
+ * marks, whose reads and writes miss the cache on cells scattered
+ * through the mesh.                                                     */
 typedef struct flip_state {
     dd_tri *t;
     dd_vec *made, *gone, *log, *stack, *later;   /* t's scratch, reused   */
-    dd_mark replaced;           /* stamp of a cell a flip replaced, for
-                                   hidden_move.c, which reads t's marks   */
     int flips;
     int power;                  /* power tests: weighted t (DESIGN 12)    */
     uint32_t touched_set[DD_SET_SLOTS], gone_set[DD_SET_SLOTS];
 } flip_state;
 
 /* A repair of t (power: weighted) about to start: t's scratch vectors as
- * its lists, a fresh mark for the cells it replaces, no flip yet.  The
- * sets are left as they are (2 KB that a move without flips never reads). */
+ * its lists, no flip yet.  The sets are left as they are (2 KB that a
+ * move without flips never reads).                                      */
 static void start_repair(flip_state *f, dd_tri *t, int power)
 {
     dd_vec *sc = t->flip;
     f->t = t;
     f->made = &sc[0], f->gone = &sc[1], f->log = &sc[2], f->stack = &sc[3], f->later = &sc[4];
-    f->replaced = dd_new_epoch(t, 1);
     f->flips = 0;
     f->power = power;
 }
@@ -99,13 +74,13 @@ static void start_repair(flip_state *f, dd_tri *t, int power)
 static dd_status touch(flip_state *f, uint32_t c)
 {
     dd_tri *t = f->t;
-    if (set_has(f->touched_set, c)) return DD_OK;
+    if (dd_cellset_has(f->touched_set, c)) return DD_OK;
     dd_status s = dd_vec_room(f->log, 1 + DD_CELL_WORDS);
     if (s != DD_OK) return s;
     f->log->a[f->log->n++] = c;
     memcpy(f->log->a + f->log->n, dd_tv(t, c), DD_CELL_WORDS * sizeof *f->log->a);
     f->log->n += DD_CELL_WORDS;
-    set_add(f->touched_set, c);
+    dd_cellset_add(f->touched_set, c);
     return DD_OK;
 }
 
@@ -122,7 +97,7 @@ static void undo(flip_state *f, uint32_t ncell0)
 
 static int is_gone(const flip_state *f, uint32_t c)
 {
-    return f->flips > 0 && set_has(f->gone_set, c);
+    return f->flips > 0 && dd_cellset_has(f->gone_set, c);
 }
 
 /* The five vertices of a flip, loc[0..5), name its facets: a facet is the
@@ -190,8 +165,7 @@ static dd_status replace(flip_state *f, const uint32_t loc[5], const uint32_t *o
     if (s == DD_OK && has_pend) return DD_ERR_INTERNAL;
     for (int a = 0; a < k && s == DD_OK; a++) {
         s = dd_vec_push(f->gone, old[a]);
-        t->stamp[old[a]] = f->replaced;
-        set_add(f->gone_set, old[a]);
+        dd_cellset_add(f->gone_set, old[a]);
     }
     f->flips++;
     return s;
@@ -405,7 +379,7 @@ static dd_status move_star(dd_tri *t, uint32_t v, dd_vec *out, int what)
     memset(set, 0xff, sizeof set);
     uint32_t *a = out->a, n = 1;
     a[0] = t->vcell[v];
-    set_add(set, a[0]);
+    dd_cellset_add(set, a[0]);
     int lists = what & DD_STAR_LISTS;
     for (uint32_t k = 0; k < n; k++) {
         const uint32_t *tv = dd_tv(t, a[k]), *tn = dd_tn(t, a[k]);
@@ -423,7 +397,7 @@ static dd_status move_star(dd_tri *t, uint32_t v, dd_vec *out, int what)
                 __builtin_prefetch(t->xyz + 3 * (size_t)x);
                 __builtin_prefetch(t->wt + x);
             }
-            if (!set_add(set, nb)) continue;
+            if (!dd_cellset_add(set, nb)) continue;
             __builtin_prefetch(dd_tv(t, nb));
             if (lists && nb < t->hid->ncap) __builtin_prefetch(t->hid->head + nb);
             a[n++] = nb;
@@ -612,7 +586,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
     int ok = *err == DD_OK && lawson(&f, err);
     dd_vec *homes = f.stack;                 /* empty once Lawson's loop succeeded */
     if (ok && t->hid && t->hid->keep)
-        ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.replaced, how, homes, err);
+        ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.flips ? f.gone_set : NULL, how, homes, err);
     if (!ok) {
         undo(&f, ncell0);
         put_point(t, v, old, wold);

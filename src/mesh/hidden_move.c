@@ -70,18 +70,24 @@ static int stays_hidden(dd_tri *t, uint32_t c, uint32_t x)
     return !dd_cell_power_conflict_fast(t, c, dd_pt(t, x), t->wt[x]);
 }
 
+/* Whether cell c is one the flips replaced (gone_set NULL: none). */
+static int is_gone(const uint32_t *gone_set, uint32_t c)
+{
+    return gone_set && dd_cellset_has(gone_set, c);
+}
+
 /* A live cell of the changed region (made, then the star's) whose
  * closure holds p, or DD_NONE.                                        */
-static uint32_t find_home(dd_tri *t, const dd_vec *made, dd_mark gone_mark, const double *p)
+static uint32_t find_home(dd_tri *t, const dd_vec *made, const uint32_t *gone_set, const double *p)
 {
     const dd_vec *star = &t->conflict;
     for (size_t m = 0; m < made->n; m++) {
         const uint32_t c = made->a[m];
-        if (t->stamp[c] != gone_mark && holds(t, c, p)) return c;
+        if (!is_gone(gone_set, c) && holds(t, c, p)) return c;
     }
     for (size_t m = 0; m < star->n; m++) {
         const uint32_t c = star->a[m];
-        if (t->stamp[c] != gone_mark && !dd_is_infinite_cell(t, c) && holds(t, c, p)) return c;
+        if (!is_gone(gone_set, c) && !dd_is_infinite_cell(t, c) && holds(t, c, p)) return c;
     }
     return DD_NONE;
 }
@@ -89,9 +95,9 @@ static uint32_t find_home(dd_tri *t, const dd_vec *made, dd_mark gone_mark, cons
 /* Hidden point x, whose cell is gone or no longer holds it, gets a new
  * home: 1 when one holds it and it stays hidden there, the pair
  * (x, home) then on homes; 0 otherwise (or out of memory: *err).     */
-static int rehome(dd_tri *t, const dd_vec *made, dd_mark gone_mark, uint32_t x, dd_vec *homes, dd_status *err)
+static int rehome(dd_tri *t, const dd_vec *made, const uint32_t *gone_set, uint32_t x, dd_vec *homes, dd_status *err)
 {
-    const uint32_t home = find_home(t, made, gone_mark, dd_pt(t, x));
+    const uint32_t home = find_home(t, made, gone_set, dd_pt(t, x));
     if (home == DD_NONE || !stays_hidden(t, home, x)) return 0;
     if ((*err = dd_vec_room(homes, 2)) != DD_OK) return 0;
     homes->a[homes->n++] = x;
@@ -99,8 +105,8 @@ static int rehome(dd_tri *t, const dd_vec *made, dd_mark gone_mark, uint32_t x, 
     return 1;
 }
 
-int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int how,
-                         dd_vec *homes, dd_status *err)
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, const uint32_t *gone_set,
+                         int how, dd_vec *homes, dd_status *err)
 {
     const dd_hidset *h = t->hid;
     const dd_vec *star = &t->conflict;
@@ -112,7 +118,7 @@ int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec
     for (size_t k = 0; k < star->n && !none; k++) {
         const uint32_t c = star->a[k];
         if (c >= h->ncap || h->head[c] == DD_NONE) continue;
-        const int live = t->stamp[c] != gone_mark;
+        const int live = !is_gone(gone_set, c);
         for (uint32_t x = h->head[c]; x != DD_NONE; x = h->next[x]) {
             if (same_weighted(t, x, v)) return 0;
             if (!live) continue;                              /* the loop below */
@@ -122,7 +128,7 @@ int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec
 #endif
             } else if (how != DD_MOVE_POINT || holds(t, c, dd_pt(t, x))) {
                 if (!stays_hidden(t, c, x)) return 0;
-            } else if (!rehome(t, made, gone_mark, x, homes, err)) {
+            } else if (!rehome(t, made, gone_set, x, homes, err)) {
                 return 0;
             }
         }
@@ -131,7 +137,7 @@ int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec
         const uint32_t g = gone->a[k], *gv = dd_tv(t, g);
         if (g >= h->ncap || (none && (gv[0] == v || gv[1] == v || gv[2] == v || gv[3] == v))) continue;
         for (uint32_t x = h->head[g]; x != DD_NONE; x = h->next[x])
-            if (same_weighted(t, x, v) || !rehome(t, made, gone_mark, x, homes, err)) return 0;
+            if (same_weighted(t, x, v) || !rehome(t, made, gone_set, x, homes, err)) return 0;
     }
     return 1;
 }

@@ -14,6 +14,33 @@
 #include "mesh/mesh.h"
 #include "mesh/hidden.h"
 
+/* A small set of cell ids on the stack, for flip.c's repair: open
+ * addressing over DD_SET_SLOTS slots, DD_NONE empty (memset to 0xff),
+ * never more than half full (the caller bounds it).  It stands in for
+ * the per-cell marks t->stamp, whose reads and writes miss the cache on
+ * cells scattered through the mesh.                                    */
+#define DD_SET_SLOTS 256
+
+/* Adds cell c to set: 1 if it was not there. */
+static inline int dd_cellset_add(uint32_t *set, uint32_t c)
+{
+    uint32_t k = (c * 0x9E3779B1u) >> 24;
+    while (set[k] != DD_NONE) {
+        if (set[k] == c) return 0;
+        k = (k + 1) & (DD_SET_SLOTS - 1);
+    }
+    set[k] = c;
+    return 1;
+}
+
+/* Whether cell c is in set. */
+static inline int dd_cellset_has(const uint32_t *set, uint32_t c)
+{
+    for (uint32_t k = (c * 0x9E3779B1u) >> 24; set[k] != DD_NONE; k = (k + 1) & (DD_SET_SLOTS - 1))
+        if (set[k] == c) return 1;
+    return 0;
+}
+
 /* Forgets kept hidden point v (dd_hidden_has(t, v)): it leaves its
  * cell's list and the list of all; *cell receives that cell, so that
  * dd_hidden_add(t, *cell, v) puts it back (the room it used is still
@@ -54,7 +81,8 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
 int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, size_t n);
 
 /* For dd_move_power_by_flips of vertex v, hidden points kept, before
- * it commits: the cells gone[0..) (stamped gone_mark) replaced by the
+ * it commits: the cells gone[0..) (the dd_cellset gone_set, NULL when
+ * gone is empty) replaced by the
  * others of made[0..), and v's point or weight changed (how, a
  * DD_MOVE_*) in the live cells of its star t->conflict.  1 if every
  * kept hidden point stays hidden: one of a live star cell still in its
@@ -70,8 +98,8 @@ int dd_hidden_star_copies(const dd_tri *t, uint32_t v, const uint32_t *star, siz
  * comes back, left the changed region, or carries v's new weighted
  * point); *err DD_ERR_NOMEM (and 0) when homes cannot grow.  nin[v] == 0 skips the lists of v's star.
  * Reads only.  O(star + made) a point re-homed.                       */
-int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, dd_mark gone_mark, int how,
-                         dd_vec *homes, dd_status *err);
+int dd_hidden_flips_hold(dd_tri *t, uint32_t v, const dd_vec *made, const dd_vec *gone, const uint32_t *gone_set,
+                         int how, dd_vec *homes, dd_status *err);
 
 /* After the flips committed (the cells gone[0..) dead): each point of
  * homes off its old cell's list, the gone cells' lists emptied, each
