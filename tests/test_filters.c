@@ -29,6 +29,7 @@
  */
 #include "testlib.h"
 #include "geom/lift_pass.h"
+#include "geom/power.h"
 #include "geom/pred.h"
 
 #include <math.h>
@@ -313,6 +314,211 @@ static void rescale(frame *fr, double to)
         for (int i = 0; i < 3; i++) fr->p[k][i] = fr->q[i] + (fr->p[k][i] - fr->q[i]) * f;
 }
 
+/* ---- dd_power_lift_filter (geom/power.h) -------------------------------
+ * The power test certified on the wrap's lifted rows, against
+ * dd_power_exact on the same five weighted points: a certified sign must
+ * be the exact one, on the rows and cofactors made by the scalar and by
+ * the SSE2 evaluations.  The five are lifted relative to a frame point q
+ * far from them (as a deletion's neighbours far from the deleted point)
+ * or near, q and the points far from the origin or not, the weights of
+ * widely different magnitudes (q's too), and y's weight set so that the
+ * power determinant is about 0 (it is linear in w_y): the exact zero in
+ * long double, then moved by a few ulps or by up to s^2 (s the cell's
+ * size), so that some are certified.  Exactly degenerate tuples too:
+ * integer points on one sphere with one weight (the determinant is 0,
+ * which no bound may certify), and y a copy of a.                      */
+
+typedef struct ptally {
+    long certified, declined, wrong;
+    char first[480];
+} ptally;
+
+/* The five weighted points lifted relative to (q, qw), then the filter on
+ * the scalar and the SSE2 cofactors, each answer against the exact sign. */
+static void check_lifted(const double pt[5][3], const double w[5], const double q[3], double qw, ptally *t)
+{
+    double col[4][8];
+    double *L[4] = {col[0], col[1], col[2], col[3]};
+    const double *pts[5] = {pt[0], pt[1], pt[2], pt[3], pt[4]};
+    double W;
+    dd_lift_rows_power(L, pts, w, 5, q, qw, &W);
+    const int exact = dd_power_exact(&pr, pt[0], pt[1], pt[2], pt[3], pt[4], w);
+    const uint32_t v[5] = {0, 1, 2, 3, 4};
+    double B[4], C[4], X[4], P[4], m[6], N[4], T[4], K[4];
+    for (int i = 0; i < 4; i++) {
+        B[i] = L[i][1] - L[i][0];
+        C[i] = L[i][2] - L[i][0];
+        X[i] = L[i][3] - L[i][0];
+        P[i] = L[i][4] - L[i][0];
+    }
+    for (int path = 0; path < 2; path++) {
+        if (path == 0) {
+            dd_lift_minors(m, B, C);
+            dd_lift_cofactors(K, X, m);
+        } else {
+            dd_lift_pencil(L, 0, 1, 2, m, N, T);
+            dd_lift_vcofactors(K, X, m);
+        }
+        const int s = dd_power_lift_filter(L, v, K, P);
+        if (s == DD_FILTER_UNSURE) {
+            t->declined++;
+            continue;
+        }
+        t->certified++;
+        if (s != exact && t->wrong++ == 0)
+            snprintf(t->first, sizeof t->first,
+                     "path %d: %d, exact %d; q (%.17g %.17g %.17g) qw %.17g, a (%.17g %.17g %.17g) w %.17g, y (%.17g "
+                     "%.17g %.17g) w %.17g",
+                     path, s, exact, q[0], q[1], q[2], qw, pt[0][0], pt[0][1], pt[0][2], w[0], pt[4][0], pt[4][1],
+                     pt[4][2], w[4]);
+    }
+}
+
+/* A weight of magnitude s2 10^e, e in [lo, hi], of either sign. */
+static double any_weight(tl_rng *r, double s2, double lo, double hi)
+{
+    const double e = lo + (hi - lo) * tl_unif(r);
+    return (tl_next(r) & 1 ? 1 : -1) * s2 * pow(10, e);
+}
+
+/* y's weight that makes the power determinant of pt, w about 0: it is
+ * det0 + w_y det1 (det1 = orient3d up to sign), both in long double. */
+static double zero_weight(const double pt[5][3], const double w[5])
+{
+    long double d[4][4];
+    for (int i = 0; i < 4; i++) {
+        long double s = 0;
+        for (int j = 0; j < 3; j++) {
+            d[i][j] = (long double)pt[i][j] - pt[4][j];
+            s += d[i][j] * d[i][j];
+        }
+        d[i][3] = s - w[i];
+    }
+    long double det0 = 0, det1 = 0;
+    for (int i = 0; i < 4; i++) {   /* along column 3 */
+        long double r3[3][3];
+        for (int a = 0, k = 0; a < 4; a++) {
+            if (a == i) continue;
+            for (int j = 0; j < 3; j++) r3[k][j] = d[a][j];
+            k++;
+        }
+        const long double minor = r3[0][0] * (r3[1][1] * r3[2][2] - r3[1][2] * r3[2][1]) -
+                                  r3[0][1] * (r3[1][0] * r3[2][2] - r3[1][2] * r3[2][0]) +
+                                  r3[0][2] * (r3[1][0] * r3[2][1] - r3[1][1] * r3[2][0]);
+        const long double sg = (i & 1) ? 1 : -1;
+        det0 += sg * d[i][3] * minor;
+        det1 += sg * minor;
+    }
+    return det1 != 0 ? (double)(-det0 / det1) : 0;
+}
+
+/* One near-degenerate tuple: a cell of size s at distance D from q
+ * (shape: 0 random, 1 an arc of a helix, 2 nearly flat), q at `off`
+ * from the origin, y's weight near the zero of the determinant.       */
+static void power_case(tl_rng *r, double s, double D, double off, int shape, ptally *t)
+{
+    double q[3], z[3], pt[5][3], w[5];
+    for (int i = 0; i < 3; i++) q[i] = off * (2 * tl_unif(r) - 1);
+    for (int i = 0; i < 3; i++) z[i] = q[i] + D * (2 * tl_unif(r) - 1);
+    const double t0 = 6.3 * tl_unif(r), R = 20 * s, h = 0.01 * s;
+    for (int k = 0; k < 5; k++) {
+        double d[3];
+        if (shape == 1) {                          /* consecutive helix points */
+            const double th = t0 + 0.05 * k;
+            d[0] = R * cos(th); d[1] = R * sin(th); d[2] = h * k;
+        } else {
+            for (int i = 0; i < 3; i++) d[i] = s * (2 * tl_unif(r) - 1);
+            if (shape == 2) d[2] *= 1e-6;
+        }
+        for (int i = 0; i < 3; i++) pt[k][i] = z[i] + d[i];
+        w[k] = any_weight(r, s * s, -14, 1);
+    }
+    const double qw = any_weight(r, s * s, -14, tl_int(r, 0, 1) ? 1 : 8);
+    const double w0 = zero_weight(pt, w);
+    w[4] = w0;
+    const int64_t k = tl_int(r, -4, 4);
+    if (tl_int(r, 0, 1)) {                         /* a few ulps from the zero */
+        for (int64_t i = 0; i < (k < 0 ? -k : k); i++) w[4] = nextafter(w[4], k < 0 ? -INFINITY : INFINITY);
+    } else {                                       /* s^2 10^-16 .. s^2 from it */
+        w[4] = w0 + (double)k * s * s * pow(10, -16 + 16 * tl_unif(r));
+    }
+    check_lifted(pt, w, q, qw, t);
+}
+
+/* Five integer points on the sphere |x|^2 = 2925 (many lie on it),
+ * scaled by 2^e and moved to c, one weight: the exact determinant is 0. */
+static void cospherical_case(tl_rng *r, int e, double cen, ptally *t)
+{
+    double pt[5][3], w[5], q[3];
+    int n = 0;
+    while (n < 5) {
+        const int64_t x = tl_int(r, -54, 54), y = tl_int(r, -54, 54), zz2 = 2925 - x * x - y * y;
+        if (zz2 < 0) continue;
+        const int64_t zz = (int64_t)llround(sqrt((double)zz2));
+        if (zz * zz != zz2) continue;
+        const double v[3] = {(double)x, (double)y, (double)(tl_next(r) & 1 ? zz : -zz)};
+        int dup = 0;
+        for (int k = 0; k < n; k++) dup |= pt[k][0] == ldexp(v[0], e) + cen && pt[k][1] == ldexp(v[1], e) + cen &&
+                                           pt[k][2] == ldexp(v[2], e) + cen;
+        if (dup) continue;
+        for (int i = 0; i < 3; i++) pt[n][i] = ldexp(v[i], e) + cen;
+        n++;
+    }
+    const double wt = ldexp((double)tl_int(r, -100, 100), 2 * e);
+    for (int k = 0; k < 5; k++) w[k] = wt;
+    for (int i = 0; i < 3; i++) q[i] = cen + ldexp((double)tl_int(r, -3000, 3000), e);
+    check_lifted(pt, w, q, ldexp((double)tl_int(r, -1000, 1000), 2 * e), t);
+}
+
+static void check_power_lift(tl_state *st, tl_rng *r, int reps)
+{
+    enum { NEAR_Q, FAR_Q, FAR_ORIGIN, EXTREME, ZERO, NCLS };
+    static const char *name[NCLS] = {"near-q", "far-from-q", "far-from-origin", "extreme", "exact-zero"};
+    ptally t[NCLS];
+    memset(t, 0, sizeof t);
+    for (int rep = 0; rep < reps; rep++) {
+        for (int i = 0; i < 3000; i++) {
+            const double s = pow(10, -6 + 9 * tl_unif(r));
+            const int shape = (int)tl_int(r, 0, 2);
+            power_case(r, s, s * pow(10, tl_unif(r)), 0, shape, &t[NEAR_Q]);
+            power_case(r, s, s * pow(10, 1 + 3 * tl_unif(r)), 0, shape, &t[FAR_Q]);
+            power_case(r, s, s * pow(10, 3 * tl_unif(r)), s * pow(10, 3 + 6 * tl_unif(r)), shape, &t[FAR_ORIGIN]);
+        }
+        const double ex[] = {1e-60, 1e-45, 1e-30, 1e25, 1e38, 1e60, 1e150};
+        for (int e = 0; e < 7; e++)
+            for (int i = 0; i < 200; i++)
+                power_case(r, ex[e], ex[e] * pow(10, 3 * tl_unif(r)), ex[e] * pow(10, 6 * tl_unif(r)),
+                           (int)tl_int(r, 0, 2), &t[EXTREME]);
+        for (int i = 0; i < 600; i++) {
+            const int e = (int)tl_int(r, -40, 40);
+            cospherical_case(r, e, i % 3 == 0 ? 0 : ldexp((double)tl_int(r, -1000000, 1000000), e + 8), &t[ZERO]);
+        }
+        for (int i = 0; i < 200; i++) {             /* y a copy of a: P = 0 */
+            double pt[5][3], w[5], q[3] = {0, 0, 0};
+            for (int k = 0; k < 4; k++) {
+                for (int j = 0; j < 3; j++) pt[k][j] = 1e3 + (2 * tl_unif(r) - 1);
+                w[k] = any_weight(r, 1, -10, 1);
+            }
+            memcpy(pt[4], pt[0], sizeof pt[0]);
+            w[4] = w[0];
+            check_lifted(pt, w, q, 0, &t[ZERO]);
+        }
+    }
+    for (int c = 0; c < NCLS; c++) {
+        char tn[96];
+        snprintf(tn, sizeof tn, "filters/power-lift/%s", name[c]);
+        tl_check(st, t[c].wrong == 0, tn, "%ld of %ld certified answers wrong, first: %s", t[c].wrong,
+                 t[c].certified, t[c].first);
+        printf("# %s: %ld certified, %ld declined\n", tn, t[c].certified, t[c].declined);
+    }
+    /* useful where the wrap asks it: small cells far from q decided
+     * (about 1 in 8 here: the rest are too near the zero for doubles) */
+    tl_check(st, 20 * t[FAR_Q].certified > t[FAR_Q].certified + t[FAR_Q].declined && t[ZERO].certified == 0,
+             "filters/power-lift/decides",
+             "far-from-q: %ld certified, %ld declined; exact zeros certified: %ld", t[FAR_Q].certified,
+             t[FAR_Q].declined, t[ZERO].certified);
+}
+
 int main(int argc, char **argv)
 {
     tl_state st = {0, 0};
@@ -410,6 +616,7 @@ int main(int argc, char **argv)
     /* where the bounds are +inf, nothing was certified */
     tl_check(&st, cls[3].t[0].certified > 0 && !isfinite(dd_lift_err(1e60)) && !isfinite(dd_lift_orient_err(1e-60)),
              "filters/extreme-declines", "the bounds are finite outside their range");
+    check_power_lift(&st, &r, reps);
     free(fr);
     dd_pred_clear(&pr);
     return tl_finish(&st);

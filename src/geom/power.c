@@ -520,3 +520,88 @@ int dd_power_compare_distance(dd_pred *ctx, const double *p, const double *a, do
     const double w[3] = {0, wa, wb};
     return run_gmp(ctx, pts, w, 3, distance_z);
 }
+
+/* ---- the power test on lifted rows ------------------------------------- */
+
+/* The larger of x and y; NaN only when y is (a NaN in the rows shows in
+ * K . P, which no bound certifies).                                     */
+static inline double max2(double x, double y) { return x > y ? x : y; }
+
+/* dd_power_lift_filter certifies the sign of K . P (power.h) with a bound
+ * made of the five sites' own rows, where a bound of the whole frame
+ * (geom/lift.h's dd_lift_power_err, scaled by the farthest site) is too
+ * wide for small cells far from q.  u = 2^-53; e = x - q and dw = w_x - w_q
+ * exactly; l the computed row of a site (power.h).
+ *
+ * Rows.  l_i = fl(e_i), so |l_i - e_i| <= u|e_i| <= 1.0001u M, M the
+ * largest |l_i| (i < 3) over the five sites.  With s = |e|^2, each square
+ * of the sum ((l0^2 + l1^2) + l2^2) carries (1 + u)^3 and the two sums
+ * (1 + u) each, so it is s within 5.0001u s; fl(dw) is dw within u|dw|;
+ * the last subtraction adds u|s~ - dw~|.  So the lift l_3 is the exact
+ * lift s - dw within 6.001u (s + |dw|).  As |dw| <= s + |s - dw| and
+ * s <= 3 M^2 (1 + 3u), s + |dw| <= (6 M^2 + T)(1 + 9u), T the largest
+ * |l_3| over the five.  So every entry of a site's row is within
+ *     eps_j = 1.01u M (j < 3),   eps_3 = 6.1u (6 M^2 + T)
+ * of its exact lift.  A row R_i = fl(l_k - l_a) is then within
+ *     D_j = 2 eps_j + 1.01u c_j
+ * of the exact row difference, c_j the largest |R_ij| over i = 1..4, and
+ * every exact or computed entry of column j is at most
+ *     h_j = 1.01 c_j + 2 eps_j.
+ *
+ * Determinant.  The exact power determinant is det4 of the exact rows
+ * (the lift relative to q differs from CGAL's relative to y by a map of
+ * determinant 1, and det4 of rows relative to a is det5 of the five
+ * points with a column of ones, equal to CGAL's with y first).  It
+ * differs from det4 of the computed rows by at most
+ *     sum_j 24 D_j prod_{l != j} h_l
+ * (change one column at a time: each of the 24 products of a mixed
+ * determinant has one factor within D_j and the others at most h_l).
+ * K . P evaluates det4 of the computed rows with at most 9 roundings on
+ * the path of any of its 24 products (2 in a minor, 3 in a cofactor, 4
+ * in the dot product; negations exact): within 9.01u 24 prod_j c_j.  As
+ * D_j <= 2 eps_j + 1.01u h_j, the whole error is below
+ *     24 (13.05u prod_j h_j + 2 sum_j eps_j prod_{l != j} h_l),
+ * and the bound below rounds the constants up by more than its own
+ * evaluation's rounding (a few u relative): 3.8e-14 >= 24 14u, 48.5 >=
+ * 24 2.01.
+ *
+ * Range.  The relative error model fails only on underflow and overflow.
+ * The filter answers only when every h_j <= 1e40 (j < 3), h_3 <= 1e80 and
+ * the bound is at least 1e-150: then nothing overflows (|K . P| <=
+ * 24e200), a rounding that underflows errs by at most 2.5e-324 and is
+ * multiplied by at most two more entries (1e160) on its way to K . P, a
+ * lift's by a 3x3 minor of columns 0-2 (6e120): all of them together
+ * stay far below the bound's rounded-up margin.  An infinite entry fails
+ * the range tests; a NaN makes K . P NaN, which no comparison certifies. */
+int dd_power_lift_filter(double *const *L, const uint32_t v[5], const double K[4], const double P[4])
+{
+    const uint32_t a = v[0];
+    double r[4], c[4], M = 0, T = 0;
+    for (int j = 0; j < 4; j++) {
+        r[j] = L[j][a];
+        c[j] = 0;
+    }
+    M = max2(max2(fabs(r[0]), fabs(r[1])), fabs(r[2]));
+    T = fabs(r[3]);
+    for (int k = 1; k < 5; k++) {
+        const uint32_t s = v[k];
+        const double l0 = L[0][s], l1 = L[1][s], l2 = L[2][s], l3 = L[3][s];
+        M = max2(M, max2(max2(fabs(l0), fabs(l1)), fabs(l2)));
+        T = max2(T, fabs(l3));
+        c[0] = max2(c[0], fabs(l0 - r[0]));
+        c[1] = max2(c[1], fabs(l1 - r[1]));
+        c[2] = max2(c[2], fabs(l2 - r[2]));
+        c[3] = max2(c[3], fabs(l3 - r[3]));
+    }
+    const double e0 = 1.1215e-16 * M, e3 = 6.78e-16 * (6 * M * M + T);   /* 1.01u M, 6.1u (6M^2 + T) */
+    const double h0 = 1.01 * c[0] + 2 * e0, h1 = 1.01 * c[1] + 2 * e0, h2 = 1.01 * c[2] + 2 * e0;
+    const double h3 = 1.01 * c[3] + 2 * e3;
+    if (!(h0 <= 1e40 && h1 <= 1e40 && h2 <= 1e40 && h3 <= 1e80)) return DD_FILTER_UNSURE;
+    const double h012 = h0 * h1 * h2;
+    const double bound = 3.8e-14 * (h012 * h3) + 48.5 * (e0 * ((h1 * h2 + h0 * h2 + h0 * h1) * h3) + e3 * h012);
+    if (!(bound >= 1e-150)) return DD_FILTER_UNSURE;
+    const double det = P[0] * K[0] + P[1] * K[1] + P[2] * K[2] + P[3] * K[3];
+    if (det > bound) return -1;
+    if (det < -bound) return 1;
+    return DD_FILTER_UNSURE;
+}
