@@ -130,19 +130,4 @@ int dd_power_circle_perturbed(dd_pred *ctx, const double *p0, const double *p1, 
 int dd_power_compare_distance(dd_pred *ctx, const double *p, const double *a, double wa, const double *b,
                               double wb);
 
-/* ---- the power test on lifted rows (the gift wrap's frame) -------------
- * The lifted rows of weighted points relative to a frame point q, as
- * geom/lift.c's dd_lift_rows_power makes them: L[i][k] = x_k,i - q_i and
- * L[3][k] = ((L0^2 + L1^2) + L2^2) - (w_k - w_q), each operation rounded
- * once.  For the five sites v[0..4] = (a, b, c, x, y), the rows R_1..R_4
- * = L[b], L[c], L[x], L[y] minus L[a] (one rounding each), P = R_4, and
- * K the cofactors of det4(R_1, R_2, R_3, P) along P, evaluated as
- * dd_lift_minors, dd_lift_cofactors and dd_lift_vcofactors do: returns
- * CGAL's power test of (a, b, c, x) and y (+1 conflict, -1 not, signs of
- * dd_power_exact), certified from K . P by a bound made of these five
- * points' own row magnitudes (power.c states it and proves it), or
- * DD_FILTER_UNSURE.  An exact 0 is never answered: the perturbation
- * stays the caller's.  O(1), about 60 flops.                             */
-int dd_power_lift_filter(double *const *L, const uint32_t v[5], const double K[4], const double P[4]);
-
 #endif

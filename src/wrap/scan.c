@@ -68,11 +68,8 @@ static inline int w_symbolic(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4
 /* w_conflicts where its filter abstains, out of line so that the rare
  * path stays out of the callers' loops: with integer cofactors the sign
  * of K . P in 128-bit integers (dd_lift_sign_kp; 0 with integer lifts,
- * whose bound is 0), a 0 going to w_symbolic; with weights, K . P again
- * against the bound of the five sites' own rows (dd_power_lift_filter:
- * the frame's bound grows with the farthest neighbour, and on the curves
- * most cells are far smaller than q's star); else the exact perturbed
- * test, counted in w->nexact.  P = L[y] - L[lv[0]].                     */
+ * whose bound is 0), a 0 going to w_symbolic; else the exact perturbed
+ * in-sphere test, counted in w->nexact.  P = L[y] - L[lv[0]].           */
 __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, const uint32_t lv[4], const double K[4],
                                                const double P[4], uint32_t y)
 {
@@ -81,15 +78,11 @@ __attribute__((noinline)) int w_conflicts_near(struct dd_wrap *w, dd_pred *pr, c
         const int sg = w->exact ? 0 : dd_lift_sign_kp(K, P);
         return sg ? sg < 0 : w_symbolic(w, pr, lv, y) > 0;
     }
+    w->nexact++;
     if (w->wmode) {                                 /* the weighted lift: the power test */
-        const uint32_t v[5] = {lv[0], lv[1], lv[2], lv[3], y};
-        const int s = dd_power_lift_filter(w->lift, v, K, P);
-        if (s != DD_FILTER_UNSURE) return s > 0;
-        w->nexact++;
         const double *wg = w->wgt, wt[5] = {wg[lv[0]], wg[lv[1]], wg[lv[2]], wg[lv[3]], wg[y]};
         return dd_power_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y], wt) > 0;
     }
-    w->nexact++;
     return dd_insphere_perturbed(pr, pt[lv[0]], pt[lv[1]], pt[lv[2]], pt[lv[3]], pt[y]) > 0;
 }
 
