@@ -246,6 +246,14 @@ for to in 1e200,0,0 -1.7e308,1.7e308,0 4.9e-324,0,-0; do
             echo "ok cli/range-move-$f-$to"; else echo "FAIL cli/range-move-$f-$to: exit $rc: $(head -c 200 "$tmp/err")"; fi
     done
 done
+# the weighted edits' two protocols (batched, --interleaved): every row as CGAL's
+for how in batched interleaved; do
+    flag=; [ $how = interleaved ] && flag=--interleaved
+    out=$("$DTDEL" wedits-bench 2000 --passes 1 --set 2000 $flag 2>/dev/null); rc=$?
+    if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -cE "^(wreweight|wmove):.*, $how\): dtdel .*; 0 mismatches")" -eq 2 ] &&
+       [ "$(echo "$out" | grep -c '^wdelete-set.*; 0 mismatches$')" -eq 2 ]; then
+        echo "ok cli/wedits-bench-$how"; else echo "FAIL cli/wedits-bench-$how: rc $rc: $out"; fi
+done
 # the benches beyond deletion: small runs, every answer as CGAL's
 out=$("$DTDEL" query-bench 3000 --inserts 500 --queries 500 --live 2000 --rounds 3 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ': yes$')" -eq 4 ] && ! echo "$out" | grep -q ': NO'; then

@@ -461,7 +461,7 @@ static const command commands[] = {
      "DIR (default results/weighted), as dtdel bench writes them.  A\n"
      "strategy refusing weighted points prints n/a.  --mode tiny: a few\n"
      "deletions on small sets, for tests.  Exit 1 on any mismatch.", cmd_wbench},
-    {"wedits-bench", "wedits-bench [N] [--passes P] [--set M] [--seed S] [--discard-hidden] [--set-only]",
+    {"wedits-bench", "wedits-bench [N] [--passes P] [--set M] [--seed S] [--discard-hidden] [--set-only] [--interleaved]",
      "Weighted edits against CGAL's Regular_triangulation_3, hidden points\n"
      "kept (--discard-hidden: forgotten): every vertex of N wuniform weighted\n"
      "points (default 100000) re-weighted by a random factor in [0.9, 1.1)\n"
@@ -470,7 +470,9 @@ static const command commands[] = {
      "CGAL's move(), or remove and insert where move() would not give the\n"
      "reference result: counted); then dd_delete_set of a random 10% and 90%\n"
      "of the vertices of M wuniform weighted points (default 200000) against\n"
-     "CGAL's remove() one by one (--set-only: these alone).  Results\n"
+     "CGAL's remove() one by one (--set-only: these alone).  The passes run\n"
+     "in batches, ours then CGAL's, each library alone with its data in\n"
+     "cache (--interleaved: each edit on both sides in turn).  Results\n"
      "compared whole (cells and hidden set) at five checkpoints a pass; exit\n"
      "1 on a mismatch.  Calls the engine refuses read n/a.", cmd_wedits_bench},
     {"variants", "variants", "Lists the deletion strategies (the first is the default), then the\n"

@@ -18,9 +18,17 @@
  *    weighted points, dd_delete_set against CGAL's remove() one vertex at
  *    a time in the same random order.
  * --set-only runs the set deletions alone.
+ * The passes run in batches of edits (a checkpoint's, cut where an input
+ * index would come twice): our side makes the batch's edits, then CGAL's
+ * side the same edits, so each library runs with its own working set in
+ * cache, as a mesh generator's pass does (the set deletions are whole
+ * calls on each side already).  --interleaved makes each edit on both
+ * sides in turn instead, each library evicting the other's data between
+ * two of its edits; the lines say which ("batched" or "interleaved").
  * A point hidden when its turn comes is not a vertex: it is skipped (on
- * both sides, each asked).  CGAL's figures are its calls alone, timed in
- * the shim; the bookkeeping that names vertices by index is not timed.
+ * both sides, each asked; a point that is a vertex on one side only is a
+ * mismatch).  CGAL's figures are its calls alone, timed in the shim; the
+ * bookkeeping that names vertices by index is not timed.
  * The results are compared whole (cells and hidden set) at five
  * checkpoints of each pass and after each set deletion; a difference is
  * a mismatch, printed, and exits 1.  A call the engine refuses
@@ -41,17 +49,18 @@
 
 typedef struct we_opts {
     uint64_t n, passes, m, seed;
-    int discard, set_only;
+    int discard, set_only, interleave;
 } we_opts;
 
 static int parse_opts(int argc, char **argv, we_opts *o)
 {
-    *o = (we_opts){100000, 2, 200000, 1, 0, 0};
+    *o = (we_opts){100000, 2, 200000, 1, 0, 0, 0};
     int k = 0;
     char *args[64];
     for (int i = 0; i < argc && k < 64; i++)         /* the flags without a value, then the numbers */
         if (!strcmp(argv[i], "--discard-hidden")) o->discard = 1;
         else if (!strcmp(argv[i], "--set-only")) o->set_only = 1;
+        else if (!strcmp(argv[i], "--interleaved")) o->interleave = 1;
         else args[k++] = argv[i];
     const num_opt opts[] = {{NULL, &o->n}, {"--passes", &o->passes}, {"--set", &o->m}, {"--seed", &o->seed}};
     int rc = parse_num_opts("wedits-bench", k, args, opts, (int)(sizeof opts / sizeof *opts));
@@ -65,6 +74,18 @@ static double unit(uint64_t *x)
     return rand_below(x, 1u << 30) / (double)(1u << 30);
 }
 
+/* q: from c by a step of length h in a random direction, uniform on
+ * the sphere.                                                          */
+static void random_step(uint64_t *x, const double c[3], double h, double q[3])
+{
+    double d[3], len;
+    do {
+        for (int k = 0; k < 3; k++) d[k] = 2 * unit(x) - 1;
+        len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    } while (len > 1 || len < 1e-3);
+    for (int k = 0; k < 3; k++) q[k] = c[k] + h * d[k] / len;
+}
+
 /* A pass's totals. */
 typedef struct tally {
     double ours, theirs;          /* seconds                            */
@@ -74,33 +95,59 @@ typedef struct tally {
     dd_status refused;            /* DD_OK, or the engine's refusal     */
 } tally;
 
-/* One edit of vertex i to (q, w) on both sides: ours (dd_move when
- * same_weight, else dd_move_weighted), then CGAL's.  A point that is no
- * vertex on CGAL's side is skipped; our side disagreeing is a mismatch. */
-static void edit_both(wpair *p, tally *s, uint32_t i, const double q[3], double w, int same_weight)
+/* One edit: input index i to (q, w); vertex: i was a vertex of ours
+ * when its turn came (so the edit was made on our side).               */
+typedef struct wedit {
+    double q[3], w;
+    uint32_t i;
+    int vertex;
+} wedit;
+
+/* Our side of edit e (dd_move when same_weight, else dd_move_weighted),
+ * made only if e->i is a vertex of ours (noted in e->vertex).           */
+static void edit_ours(wpair *p, tally *s, wedit *e, int same_weight)
 {
-    if (dd_cgal_rb_state(p->c, i) != DD_RB_VERTEX) {
-        s->bad += s->refused == DD_OK && dd_is_vertex(p->t, i);
-        return;
-    }
-    if (s->refused == DD_OK) {
-        dd_counters c0, c1;
-        dd_get_counters(p->t, &c0);
-        double t0 = now_seconds();
-        dd_status st = same_weight ? dd_move(p->t, i, q) : dd_move_weighted(p->t, i, q, w);
-        const double dt = now_seconds() - t0;
-        s->ours += dt;
-        dd_get_counters(p->t, &c1);
-        if (c1.moves_redone > c0.moves_redone) s->redone += dt, s->nredone++;
-        if (st == DD_ERR_UNSUPPORTED) s->refused = st;
-        else if (st != DD_OK) s->bad++;
-    }
+    e->vertex = dd_is_vertex(p->t, e->i);
+    if (!e->vertex || s->refused != DD_OK) return;
+    dd_counters c0, c1;
+    dd_get_counters(p->t, &c0);
+    double t0 = now_seconds();
+    dd_status st = same_weight ? dd_move(p->t, e->i, e->q) : dd_move_weighted(p->t, e->i, e->q, e->w);
+    const double dt = now_seconds() - t0;
+    s->ours += dt;
+    dd_get_counters(p->t, &c1);
+    if (c1.moves_redone > c0.moves_redone) s->redone += dt, s->nredone++;
+    if (st == DD_ERR_UNSUPPORTED) s->refused = st;
+    else if (st != DD_OK) s->bad++;
+}
+
+/* CGAL's side of edit e, made only if e->i is a vertex there; a point
+ * that is a vertex on one side only is a mismatch.                      */
+static void edit_theirs(wpair *p, tally *s, const wedit *e)
+{
+    const int vertex = dd_cgal_rb_state(p->c, e->i) == DD_RB_VERTEX;
+    if (s->refused == DD_OK) s->bad += vertex != e->vertex;
+    if (!vertex) return;
     double secs;
     int fb;
-    s->bad += dd_cgal_rb_move(p->c, i, q, w, &secs, &fb) != 0;
+    s->bad += dd_cgal_rb_move(p->c, e->i, e->q, e->w, &secs, &fb) != 0;
     s->theirs += secs;
     s->fell_back += (uint64_t)fb;
     s->done++;
+}
+
+/* A batch of edits (no input index twice) on both sides: ours, then
+ * CGAL's, so that each library runs with its own working set in cache,
+ * as a mesh generator runs it; with interleave, each edit on our side
+ * then on CGAL's, each library evicting the other's data between two
+ * of its edits.                                                         */
+static void edit_batch(wpair *p, tally *s, wedit *e, size_t n, int same_weight, int interleave)
+{
+    for (size_t k = 0; k < n; k++) {
+        edit_ours(p, s, e + k, same_weight);
+        if (interleave) edit_theirs(p, s, e + k);
+    }
+    for (size_t k = 0; k < n && !interleave; k++) edit_theirs(p, s, e + k);
 }
 
 static void print_tally(const tally *s, const char *theirs_name, int checks)
@@ -125,18 +172,24 @@ static int reweighting(const we_opts *o)
 {
     wpair p;
     if (wpair_build("wedits-bench", "wuniform", (uint32_t)o->n, o->seed, o->discard, &p)) return 1;
+    wedit *e = dd_malloc((size_t)p.np * sizeof *e);
+    if (!e) { wpair_free(&p); return 1; }
     tally s = {0};
     uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
     for (uint32_t k = 0; k < CHECKPOINTS; k++) {
         const uint32_t lo = (uint32_t)((uint64_t)p.np * k / CHECKPOINTS), hi = (uint32_t)((uint64_t)p.np * (k + 1) / CHECKPOINTS);
         for (uint32_t i = lo; i < hi; i++) {
-            const double w = p.w[i] * (0.9 + 0.2 * unit(&x));
-            edit_both(&p, &s, i, p.xyz + 3 * (size_t)i, w, 0);
+            wedit *d = &e[i - lo];
+            memcpy(d->q, p.xyz + 3 * (size_t)i, sizeof d->q);
+            d->w = p.w[i] * (0.9 + 0.2 * unit(&x));
+            d->i = i;
         }
+        edit_batch(&p, &s, e, hi - lo, 0, o->interleave);
         if (s.refused == DD_OK) s.bad += wpair_compare(p.t, p.c);
     }
-    printf("wreweight: %u wuniform weighted points, each vertex re-weighted by a random factor in [0.9, 1.1) (%s): ",
-           p.np, wmode_name(o->discard));
+    dd_mfree(e);
+    printf("wreweight: %u wuniform weighted points, each vertex re-weighted by a random factor in [0.9, 1.1) (%s, %s): ",
+           p.np, wmode_name(o->discard), o->interleave ? "interleaved" : "batched");
     print_tally(&s, "CGAL remove+insert", CHECKPOINTS);
     wpair_free(&p);
     return s.bad || s.done == 0 ? 1 : 0;
@@ -148,7 +201,8 @@ static int moves(const we_opts *o)
     wpair p;
     if (wpair_build("wedits-bench", "wuniform", (uint32_t)o->n, o->seed + 1, o->discard, &p)) return 1;
     double *cur = dd_malloc(3 * (size_t)p.np * sizeof *cur);
-    if (!cur) { wpair_free(&p); return 1; }
+    wedit *e = dd_malloc((size_t)p.np * sizeof *e);
+    if (!cur || !e) { dd_mfree(cur), dd_mfree(e), wpair_free(&p); return 1; }
     memcpy(cur, p.xyz, 3 * (size_t)p.np * sizeof *cur);
     const double h = 0.05 * cbrt(1.0 / p.np);
     tally s = {0};
@@ -156,24 +210,24 @@ static int moves(const we_opts *o)
     const uint64_t total = o->passes * p.np;
     for (uint32_t k = 0; k < CHECKPOINTS; k++) {
         const uint64_t lo = total * k / CHECKPOINTS, hi = total * (k + 1) / CHECKPOINTS;
-        for (uint64_t e = lo; e < hi; e++) {
-            const uint32_t i = (uint32_t)(e % p.np);
-            double d[3], len;
-            do {                                   /* a direction, uniform on the sphere */
-                for (int c = 0; c < 3; c++) d[c] = 2 * unit(&x) - 1;
-                len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            } while (len > 1 || len < 1e-3);
-            double q[3];
-            for (int c = 0; c < 3; c++) q[c] = cur[3 * (size_t)i + c] + h * d[c] / len;
-            if (dd_cgal_rb_state(p.c, i) == DD_RB_VERTEX) memcpy(cur + 3 * (size_t)i, q, sizeof q);
-            edit_both(&p, &s, i, q, p.w[i], 1);
+        for (uint64_t b = lo, end; b < hi; b = end) {     /* batches within a pass: no index twice */
+            end = (b / p.np + 1) * p.np < hi ? (b / p.np + 1) * p.np : hi;
+            for (uint64_t j = b; j < end; j++) {
+                wedit *d = &e[j - b];
+                d->i = (uint32_t)(j % p.np);
+                random_step(&x, cur + 3 * (size_t)d->i, h, d->q);
+                d->w = p.w[d->i];
+            }
+            edit_batch(&p, &s, e, end - b, 1, o->interleave);
+            for (uint64_t j = b; j < end; j++)                /* a point moves where it was a vertex */
+                if (e[j - b].vertex) memcpy(cur + 3 * (size_t)e[j - b].i, e[j - b].q, sizeof e->q);
         }
         if (s.refused == DD_OK) s.bad += wpair_compare(p.t, p.c);
     }
-    printf("wmove: %u wuniform weighted points, %llu passes of a step of 5%% of the mean spacing (%s): ", p.np,
-           (unsigned long long)o->passes, wmode_name(o->discard));
+    printf("wmove: %u wuniform weighted points, %llu passes of a step of 5%% of the mean spacing (%s, %s): ", p.np,
+           (unsigned long long)o->passes, wmode_name(o->discard), o->interleave ? "interleaved" : "batched");
     print_tally(&s, "CGAL move", CHECKPOINTS);
-    dd_mfree(cur);
+    dd_mfree(cur), dd_mfree(e);
     wpair_free(&p);
     return s.bad || s.done == 0 ? 1 : 0;
 }
