@@ -163,6 +163,26 @@ mkdir "$tmp/outw"
 expect runs-weighted 0 "" "$SUM" "$tmp/outw" "$tmp/toy.csv" "$tmp/other.csv" --weighted "$tmp/edges.csv"
 has pooled-title-weighted "$tmp/outw/plotdata/all-datasets.dat" "# title: all-datasets, 2 unweighted datasets, 8 deletions"
 has pooled-weighted-heading "$tmp/outw/summary.md" "## All weighted datasets"
+# What weights cost: wuniform beside uniform at n = 100000, bucket by
+# bucket, medians worked out by hand (cgal 30 and 10 us, auto 3 and 2 on
+# the weighted side at degree 13; 20 and 2.5 on the unweighted side), a
+# bucket on one side only left out; whelix beside helix at every size.
+{ echo "$H"
+  for r in 1,13,cgal,30 2,13,cgal,10 1,13,auto,3 2,13,auto,2 3,40,cgal,100 3,40,auto,10; do
+      echo "$r" | awk -F, '{ printf "wuniform,100000,%s,%s,0,%s,%s,,,,,,1\n", $1, $2, $3, $4 }'; done
+  echo "whelix,1000,1,150,0,cgal,600,,,,,,1"; echo "whelix,1000,1,150,0,auto,6,,,,,,1"; } >"$tmp/wu.csv"
+{ echo "$H"
+  echo "uniform,100000,1,14,0,cgal,20,,,,,,1"; echo "uniform,100000,1,14,0,auto,2.5,,,,,,1"
+  echo "uniform,1000,2,14,0,cgal,99,,,,,,1"; echo "uniform,1000,2,14,0,auto,99,,,,,,1"
+  echo "helix,16000,1,140,0,cgal,800,,,,,,1"; echo "helix,16000,1,140,0,auto,4,,,,,,1"; } >"$tmp/u.csv"
+mkdir "$tmp/outc"
+expect runs-weight-cost 0 "" "$SUM" "$tmp/outc" "$tmp/u.csv" --weighted "$tmp/wu.csv"
+has weight-cost-uniform "$tmp/outc/summary.md" \
+    "| wuniform / uniform, 100 000 | [12,16) | 2 / 1 | 20.0 | 20.0 | 1.00 | 2.50 | 2.50 | 1.00 | 8.00× | 8.00× |"
+has weight-cost-helix "$tmp/outc/summary.md" \
+    "| whelix / helix, every n | [128,192) | 1 / 1 | 600 | 800 | 0.75 | 6.00 | 4.00 | 1.50 | 100× | 200× |"
+if grep -q "^| wuniform / uniform, 100 000 | \[32,48)" "$tmp/outc/summary.md"; then
+    bad weight-cost-one-side "a bucket with rows on one side only has a row"; else ok weight-cost-one-side; fi
 
 # Malformed input: exit 1, FILE:LINE and what is wrong.
 printf '%s\ntoy,10,1,5,0,cgal,1,,,,,,1\ntoy,10,2,5,0,cgal,1,,,,,1\n' "$H" >"$tmp/fields.csv"

@@ -129,6 +129,7 @@ int write_readme_table(ctx *c);
 /* ---- weighted.c ---- */
 void write_refused(const ctx *c, const table *t, size_t ds, FILE *out);
 void write_weighted(const ctx *c, FILE *out);
+void write_weight_cost(const ctx *c, FILE *md);
 int write_weighted_pool(ctx *c, FILE *md);
 
 #endif

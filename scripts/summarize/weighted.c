@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/buckets.h"
 #include "summarize.h"
 
 /* On a weighted dataset: the engine deletion variants of the run with no
@@ -137,6 +138,89 @@ void write_weighted(const ctx *c, FILE *out)
     free(col), free(idx), free(sizes);
 }
 
+/* ---- what weights cost, degree by degree ---------------------------------- */
+
+/* Each weighted dataset beside the unweighted one of its kind, at size n
+ * (0: every size, pooled as in the per-degree tables; a helix's cost
+ * follows its degree, and the sizes of the two sets reach different
+ * degrees).                                                             */
+static const struct { const char *w, *u; long long n; } parity_pairs[] = {
+    {"wuniform", "uniform", 100000}, {"whelix", "helix", 0}};
+
+/* The rows of dataset ds at size n of variant var in bucket b into idx;
+ * how many.                                                             */
+static size_t rows_of(const ctx *c, size_t ds, long long n, size_t var, int b, size_t *idx)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < c->nrows; i++) {
+        const row *r = &c->rows[i];
+        if (r->ds == ds && (!n || r->n == n) && r->var == var && r->bucket == b) idx[k++] = i;
+    }
+    return k;
+}
+
+/* One bucket of a pair: the medians of cgal and auto on the weighted
+ * dataset (m[0], m[1]) and the unweighted one (m[2], m[3]); the most
+ * rows of one of them on each side in *nw, *nu.  0 if one is missing. */
+static int parity_medians(const ctx *c, const size_t ds[2], long long n, const size_t var[2], int b, size_t *idx,
+                          double m[4], size_t *nw, size_t *nu)
+{
+    *nw = *nu = 0;
+    for (int side = 0; side < 2; side++)
+        for (int v = 0; v < 2; v++) {
+            const size_t k = rows_of(c, ds[side], n, var[v], b, idx);
+            if (!k) return 0;
+            m[2 * side + v] = median_of(c, idx, k, F_US);
+            size_t *most = side ? nu : nw;
+            if (k > *most) *most = k;
+        }
+    return 1;
+}
+
+/* Per degree bucket, what weights cost CGAL and the default strategy:
+ * each weighted dataset's medians beside those of the unweighted
+ * dataset of the same kind and size (summary.md).  Where both engines
+ * pay the same share for weights, the ratio to CGAL on weighted points
+ * is the unweighted one; it can only be higher where CGAL pays more. */
+void write_weight_cost(const ctx *c, FILE *md)
+{
+    const size_t cg = find_name(&c->variants, "cgal"), au = find_name(&c->variants, "auto");
+    size_t *idx = malloc((c->nrows ? c->nrows : 1) * sizeof *idx);
+    if (!idx || cg == (size_t)-1 || au == (size_t)-1) { free(idx); return; }
+    int top = 0;
+    for (size_t i = 0; i < c->nrows; i++) top = c->rows[i].bucket > top ? c->rows[i].bucket : top;
+    int any = 0;
+    for (size_t p = 0; p < sizeof parity_pairs / sizeof *parity_pairs; p++) {
+        const size_t ds[2] = {find_name(&c->datasets, parity_pairs[p].w), find_name(&c->datasets, parity_pairs[p].u)};
+        const size_t var[2] = {cg, au};
+        if (ds[0] == (size_t)-1 || ds[1] == (size_t)-1) continue;
+        for (int b = 0; b <= top; b++) {
+            double m[4];
+            size_t nw, nu;
+            if (!parity_medians(c, ds, parity_pairs[p].n, var, b, idx, m, &nw, &nu)) continue;
+            if (!any++)
+                fprintf(md, "## What weights cost, degree by degree\n\nMedian µs per deletion in the same degree bucket: "
+                            "CGAL's regular `remove()` on the weighted dataset against its Delaunay `remove()` on the "
+                            "unweighted one of the same kind and size, and the same for `auto`. The ratio to CGAL on "
+                            "weighted points exceeds the unweighted one only as far as weights cost CGAL a larger "
+                            "share than they cost `auto` (the last two columns).\n\n"
+                            "| weighted / unweighted, size | degree | deletions | CGAL regular | CGAL Delaunay | CGAL "
+                            "w/u | auto weighted | auto unweighted | auto w/u | ratio weighted | ratio unweighted |\n"
+                            "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+            long long lo, hi;
+            dd_bucket_bounds(b, &lo, &hi);
+            char b0[40], b1[40], b2[40], b3[40], b4[40], b5[40], b6[40], b7[40], b8[40];
+            fprintf(md, "| %s / %s, %s | [%lld,%lld) | %zu / %zu | %s | %s | %s | %s | %s | %s | %s× | %s× |\n",
+                    parity_pairs[p].w, parity_pairs[p].u,
+                    parity_pairs[p].n ? fmt_int(parity_pairs[p].n, b0) : "every n", lo, hi, nw, nu,
+                    fmt_sig(m[0], b1), fmt_sig(m[2], b2), fmt_sig(m[0] / m[2], b3), fmt_sig(m[1], b4),
+                    fmt_sig(m[3], b5), fmt_sig(m[1] / m[3], b6), fmt_sig(m[0] / m[1], b7), fmt_sig(m[2] / m[3], b8));
+        }
+    }
+    if (any) fputc('\n', md);
+    free(idx);
+}
+
 /* The weighted datasets pooled, then the weighted rows of issue 44. */
 int write_weighted_pool(ctx *c, FILE *md)
 {
@@ -151,6 +235,7 @@ int write_weighted_pool(ctx *c, FILE *md)
         fprintf(md, "## Weighted points: the rows of issue 44\n");
         write_weighted(c, md);
         fputc('\n', md);
+        write_weight_cost(c, md);
     }
     free_table(&w);
     return 0;
