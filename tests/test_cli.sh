@@ -249,7 +249,7 @@ done
 # the weighted edits' two protocols (batched, --interleaved): every row as CGAL's
 for how in batched interleaved; do
     flag=; [ $how = interleaved ] && flag=--interleaved
-    out=$("$DTDEL" wedits-bench 2000 --passes 1 --set 2000 $flag 2>/dev/null); rc=$?
+    out=$("$DTDEL" wedits-bench 500 --passes 1 --set 500 $flag 2>/dev/null); rc=$?
     if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -cE "^(wreweight|wmove):.*, $how\): dtdel .*; 0 mismatches")" -eq 2 ] &&
        [ "$(echo "$out" | grep -c '^wdelete-set.*; 0 mismatches$')" -eq 2 ]; then
         echo "ok cli/wedits-bench-$how"; else echo "FAIL cli/wedits-bench-$how: rc $rc: $out"; fi
