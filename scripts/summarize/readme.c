@@ -272,6 +272,29 @@ static void readme_regular_row(const char *line, FILE *out)
                 fmt_int(n, b), fmt_int(n0, b2), cgal);
 }
 
+/* The README row of a smoothing line of edits.txt (dtdel edit-bench):
+ * "smoothing: ..." in input order, the headline (DESIGN §10), or
+ * "smoothing (Morton order): ...", the row beside it; 1 if the line is
+ * one, else 0.                                                          */
+static int readme_smoothing_row(const char *line, FILE *out)
+{
+    static const char input[] = "smoothing: ", morton[] = "smoothing (Morton order): ";
+    const int in_input = !strncmp(line, input, sizeof input - 1);
+    if (!in_input && strncmp(line, morton, sizeof morton - 1)) return 0;
+    char ok[8], b[40];
+    long long n, k;
+    double ours, cgal, rc;
+    if (sscanf(line + (in_input ? sizeof input : sizeof morton) - 1,
+               "%lld uniform points, %lld passes of a random step of 5%% of the mean spacing: dtdel %lf us, CGAL "
+               "move_if_no_collision %lf us (%lfx); kept by the filter %*f%%; identical to CGAL: %7s",
+               &n, &k, &ours, &cgal, &rc, ok) != 6)
+        return 0;
+    fprintf(out, "| move (smoothing %s points, %lld passes, %s)%s | %.2f | %.2f | %.1f× | | |\n", fmt_int(n, b), k,
+            in_input ? "input order" : "Morton order", strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours,
+            cgal, rc);
+    return 1;
+}
+
 /* One README row of a line of queries.txt, edits.txt, refine.txt or
  * regular.txt (dtdel query-bench, edit-bench, refine-bench,
  * regular-bench), or none; *header says whether the table's head was
@@ -280,22 +303,18 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
 {
     char what[64], ok[8], b[40];
     long long k, n, mism;
-    double ours, cgal, rc, fast, rf, share, frac;
+    double ours, cgal, rc, fast, rf, frac;
     if (!*header) {
         fputs("\n| beyond deletion (uniform points) | dtdel µs | CGAL µs | ratio | CGAL Fast_location µs | ratio |\n"
               "|---|---:|---:|---:|---:|---:|\n", out);
         *header = 1;
     }
+    if (readme_smoothing_row(line, out)) return;
     if (sscanf(line, "%63[^:]: %lld: dtdel %lf us, CGAL %lf us (%lfx), CGAL Fast_location %lf us (%lfx); %*[^:]: %7s",
                what, &k, &ours, &cgal, &rc, &fast, &rf, ok) == 8)
         fprintf(out, "| %s, %s points%s | %.2f | %.2f | %.1f× | %.2f | %.1f× |\n",
                 !strcmp(what, "insert") ? "insert a new point" : !strcmp(what, "locate") ? "locate" : "nearest vertex",
                 fmt_int(nq, b), strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc, fast, rf);
-    else if (sscanf(line, "smoothing: %lld uniform points, %lld passes of a random step of 5%% of the mean spacing: "
-                          "dtdel %lf us, CGAL move_if_no_collision %lf us (%lfx); kept by the filter %lf%%; "
-                          "identical to CGAL: %7s", &n, &k, &ours, &cgal, &rc, &share, ok) == 7)
-        fprintf(out, "| move (smoothing %s points, %lld passes)%s | %.2f | %.2f | %.1f× | | |\n", fmt_int(n, b), k,
-                strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc);
     else if (sscanf(line, "delete-set %lf%%: %lld of %lld uniform points: dtdel %lf us a vertex, CGAL remove(first, "
                           "last) %lf us (%lfx); identical to CGAL: %7s", &frac, &k, &n, &ours, &cgal, &rc, ok) == 7)
         fprintf(out, "| delete a set, %.0f%% of %s%s | %.2f | %.2f | %.1f× | | |\n", frac, fmt_int(n, b),

@@ -425,8 +425,11 @@ static const command commands[] = {
      "Against CGAL, each result compared: smoothing, every vertex of N\n"
      "uniform points (default 100000) moved by a random step of 5% of the\n"
      "mean spacing, P passes (default 2), with dd_move and CGAL's\n"
-     "move_if_no_collision; then dd_delete_set of a random 10%, 50% and 90%\n"
-     "of M uniform points (default 200000) and CGAL's remove(first, last).", cmd_edit_bench},
+     "move_if_no_collision, the vertices visited in input order (random in\n"
+     "space; line \"smoothing:\"), then the same moves along a Morton curve\n"
+     "(line \"smoothing (Morton order):\"), each run on fresh triangulations;\n"
+     "then dd_delete_set of a random 10%, 50% and 90% of M uniform points\n"
+     "(default 200000) and CGAL's remove(first, last).", cmd_edit_bench},
     {"query-bench", "query-bench [N] [--inserts M] [--queries Q] [--live L] [--rounds R] [--seed S]",
      "Against CGAL (its default location and Fast_location): inserting M new\n"
      "points one at a time into DT of N uniform points (default 200000,\n"

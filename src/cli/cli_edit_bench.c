@@ -4,7 +4,18 @@
  * simplex for simplex.  What make bench writes to results/edits.txt:
  *  - smoothing: every vertex of N uniform points moved by a random step
  *    of 5% of the mean spacing, P passes, the same moves in the same
- *    order for dd_move and CGAL's move_if_no_collision;
+ *    order for dd_move and CGAL's move_if_no_collision; run twice, on a
+ *    fresh triangulation each time, with the same moves:
+ *      first in input order, the generated points numbered and visited
+ *      as they come, random in space (DESIGN §10: the headline row):
+ *        smoothing: N uniform points, P passes of a random step of 5% of
+ *        the mean spacing: dtdel A us, CGAL move_if_no_collision B us
+ *        (Rx); kept by the filter K%; identical to CGAL: yes|NO
+ *      then along a Morton curve, as a mesh may store its vertices,
+ *      reported beside it, never instead: the same line with the prefix
+ *        smoothing (Morton order): N uniform points, ...
+ *    (one line each; A and B are the mean per move over all P N moves,
+ *    K the share of moves dd_move's filter kept with no cell changed);
  *  - set deletion: a random 10%, 50% and 90% of M uniform points deleted
  *    by dd_delete_set and by CGAL's remove(first, last).
  */
@@ -30,7 +41,8 @@ static int parse_opts(int argc, char **argv, eb_opts *o)
     return 0;
 }
 
-/* Interleaves the low 21 bits of x, y, z (a Morton code). */
+/* The Morton code of a point of the unit cube: the low 21 bits of x, y,
+ * z interleaved.                                                       */
 static uint64_t morton(const double *p)
 {
     uint64_t k = 0;
@@ -39,44 +51,62 @@ static uint64_t morton(const double *p)
     return k;
 }
 
-static int by_morton(const void *a, const void *b)
+typedef struct keyed {
+    uint64_t key;
+    uint32_t i;
+} keyed;
+
+static int by_key(const void *a, const void *b)
 {
-    const uint64_t x = morton(a), y = morton(b);
-    return (x > y) - (x < y);
+    const keyed *x = a, *y = b;
+    return x->key != y->key ? (x->key > y->key) - (x->key < y->key) : (x->i > y->i) - (x->i < y->i);
 }
 
-/* The smoothing workload: the moves (vertex, new point) drawn first, then
- * replayed on both sides.  The points are numbered along a Morton curve,
- * as a mesh's vertices are stored, and each pass visits them in that
- * order, as a smoother sweeps its mesh.                                 */
-static int smoothing(const eb_opts *o)
+/* order[0..np): the generated points along a Morton curve (ties by
+ * index, so the order is the same on every machine).  0, or 1 out of
+ * memory.                                                              */
+static int sort_by_morton(const double *p, uint32_t np, uint32_t *order)
 {
-    double *p = NULL;
-    uint32_t np;
-    if (gen_points("edit-bench", "uniform", o->n, o->seed, &p, &np)) return 1;
-    qsort(p, np, 3 * sizeof *p, by_morton);
+    keyed *ks = dd_malloc((size_t)np * sizeof *ks);
+    if (!ks) return 1;
+    for (uint32_t i = 0; i < np; i++) ks[i] = (keyed){morton(p + 3 * (size_t)i), i};
+    qsort(ks, np, sizeof *ks, by_key);
+    for (uint32_t i = 0; i < np; i++) order[i] = ks[i].i;
+    dd_mfree(ks);
+    return 0;
+}
+
+/* One smoothing run: vertex i is generated point order[i], and each
+ * pass visits the vertices in index order, i = 0, 1, ...  Point j's
+ * step in pass s is step[3 (s np + j)], whatever the order, so every
+ * order makes the same moves (the same targets, bit for bit), only in
+ * another sequence.  The moves are replayed with dd_move, all timed,
+ * then with CGAL's move_if_no_collision; prints the line `label: ...`
+ * (format in the file's comment).  0, or 1 if a call failed or the
+ * result differs from CGAL's.                                          */
+static int smooth_in_order(const eb_opts *o, const double *p, uint32_t np, const uint32_t *order,
+                           const double *step, const char *label)
+{
     const uint64_t k = o->passes * np;
     uint32_t *who = dd_malloc(k * sizeof *who);
     double *to = dd_malloc(3 * k * sizeof *to), *cur = dd_malloc(3 * (size_t)np * sizeof *cur);
     dd_tri *t = NULL;
+    dd_cgalq *g = NULL;
     char msg[256];
-    dd_cgalq *g = dd_cgalq_build(p, np, 0);
-    int rc = !who || !to || !cur || !g || dd_create(&t, p, np, msg, sizeof msg) != DD_OK;
-    const double h = 0.05 * cbrt(1.0 / np);                    /* 5% of the mean spacing */
-    uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
-    for (uint64_t i = 0; !rc && i < 3 * (uint64_t)np; i++) cur[i] = p[i];
+    int rc = !who || !to || !cur;
+    for (uint32_t i = 0; !rc && i < np; i++)
+        for (int c = 0; c < 3; c++) cur[3 * (size_t)i + c] = p[3 * (size_t)order[i] + c];
+    if (!rc) g = dd_cgalq_build(cur, np, 0);
+    rc = rc || !g || dd_create(&t, cur, np, msg, sizeof msg) != DD_OK;
     for (uint64_t i = 0; !rc && i < k; i++) {
         const uint32_t v = (uint32_t)(i % np);
+        const double *s = step + 3 * (i - v + order[v]);
         who[i] = v;
-        for (int c = 0; c < 3; c++) {
-            cur[3 * v + c] += h * (2.0 * rand_below(&x, 1u << 30) / (1u << 30) - 1);
-            to[3 * i + c] = cur[3 * v + c];
-        }
+        for (int c = 0; c < 3; c++) to[3 * i + c] = cur[3 * v + c] += s[c];
     }
-    double ours = 0, theirs = 0;
     long bad = 0;
-    dd_counters c0, c1;
     if (!rc) {
+        dd_counters c0, c1;
         dd_reset_counters(t);
         dd_get_counters(t, &c0);
         double t0 = now_seconds();
@@ -85,17 +115,44 @@ static int smoothing(const eb_opts *o)
         for (uint64_t i = 0; i < k; i++) bad += dd_cgalq_move(g, who[i], to + 3 * i) != 0;
         double t2 = now_seconds();
         dd_get_counters(t, &c1);
-        ours = (t1 - t0) / (double)k, theirs = (t2 - t1) / (double)k;
+        const double ours = (t1 - t0) / (double)k, theirs = (t2 - t1) / (double)k;
         bad += !same_as_cgalq(t, g);
-        printf("smoothing: %u uniform points, %llu passes of a random step of 5%% of the mean spacing: dtdel %.2f "
-               "us, CGAL move_if_no_collision %.2f us (%.1fx); kept by the filter %.1f%%; identical to CGAL: %s\n",
-               np, (unsigned long long)o->passes, 1e6 * ours, 1e6 * theirs, theirs / ours,
+        printf("%s: %u uniform points, %llu passes of a random step of 5%% of the mean spacing: dtdel %.2f us, "
+               "CGAL move_if_no_collision %.2f us (%.1fx); kept by the filter %.1f%%; identical to CGAL: %s\n",
+               label, np, (unsigned long long)o->passes, 1e6 * ours, 1e6 * theirs, theirs / ours,
                100.0 * (double)(c1.moves_kept - c0.moves_kept) / (double)k, bad ? "NO" : "yes");
+        fflush(stdout);
     }
     dd_free(t);
     dd_cgalq_free(g);
-    dd_mfree(p), dd_mfree(who), dd_mfree(to), dd_mfree(cur);
+    dd_mfree(who), dd_mfree(to), dd_mfree(cur);
     return rc || bad;
+}
+
+/* The smoothing workload: the steps drawn first, one per point and
+ * pass, then two runs of the same moves (DESIGN §10): the headline in
+ * input order (the generated points as they come, random in space),
+ * then along a Morton curve, as a mesh may store its vertices and a
+ * smoother sweep them.                                                 */
+static int smoothing(const eb_opts *o)
+{
+    double *p = NULL;
+    uint32_t np;
+    if (gen_points("edit-bench", "uniform", o->n, o->seed, &p, &np)) return 1;
+    const uint64_t k = o->passes * np;
+    double *step = dd_malloc(3 * k * sizeof *step);
+    uint32_t *order = dd_malloc((size_t)np * sizeof *order);
+    int rc = !step || !order;
+    const double h = 0.05 * cbrt(1.0 / np);                    /* 5% of the mean spacing */
+    uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
+    for (uint64_t i = 0; !rc && i < 3 * k; i++) step[i] = h * (2.0 * rand_below(&x, 1u << 30) / (1u << 30) - 1);
+    for (uint32_t i = 0; !rc && i < np; i++) order[i] = i;
+    if (!rc) {
+        rc |= smooth_in_order(o, p, np, order, step, "smoothing");
+        rc |= sort_by_morton(p, np, order) || smooth_in_order(o, p, np, order, step, "smoothing (Morton order)");
+    }
+    dd_mfree(p), dd_mfree(step), dd_mfree(order);
+    return rc;
 }
 
 /* A random `fraction` of m uniform points deleted as a set. */
