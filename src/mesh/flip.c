@@ -55,6 +55,7 @@ typedef struct flip_state {
     dd_vec *made, *gone, *log, *stack, *later;   /* t's scratch, reused   */
     int flips;
     int power;                  /* power tests: weighted t (DESIGN 12)    */
+    int hull;                   /* the star tested has an infinite cell   */
     uint32_t touched_set[DD_SET_SLOTS], gone_set[DD_SET_SLOTS];
 } flip_state;
 
@@ -68,6 +69,7 @@ static void start_repair(flip_state *f, dd_tri *t, int power)
     f->made = &sc[0], f->gone = &sc[1], f->log = &sc[2], f->stack = &sc[3], f->later = &sc[4];
     f->flips = 0;
     f->power = power;
+    f->hull = 0;
 }
 
 /* Logs cell c before its first write in this repair. */
@@ -242,20 +244,28 @@ static int facet_bad(const flip_state *f, uint32_t c, uint32_t i)
 
 /* Lawson's loop over the stacked facets: 1 when every facet is locally
  * Delaunay, 0 to give up.  A facet not flippable now is kept aside and
- * tried again once the stack is empty.                                  */
+ * tried again once the stack is empty, unless no flip was made since
+ * the facets kept aside were last tried: the mesh is then the same, so
+ * they would all be kept aside again, and the loop gives up at once
+ * (the same answer as going round to the last round).                 */
 static int lawson(flip_state *f, dd_status *err)
 {
     dd_tri *t = f->t;
     dd_vec *later = f->later;
-    int ok = 1;
+    int ok = 1, flips0 = -1;
     later->n = 0;
     for (int round = 0; ok && (f->stack->n > 0 || later->n > 0) && round < 4; round++) {
         if (f->stack->n == 0) {              /* the facets set aside, once more */
+            if (f->flips == flips0) {        /* no flip since: stuck for good */
+                ok = 0;
+                break;
+            }
             dd_vec *s = f->stack;
             f->stack = later;
             later = s;
             later->n = 0;
         }
+        flips0 = f->flips;
         while (ok && f->stack->n > 0) {
             const uint32_t fc = f->stack->a[--f->stack->n], c = fc >> 2, i = fc & 3;
             if (dd_tv(t, c)[0] == DD_DEAD || is_gone(f, c)) continue;
@@ -501,6 +511,7 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
         if (has(w, DD_INF)) {
             for (uint32_t j = 0; j < 4; j++)
                 if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+            f->hull = 1;
             continue;
         }
         double R[3][4], mi[6], K[4], m = 0, W = 0;
@@ -557,9 +568,11 @@ static void put_point(dd_tri *t, uint32_t v, const double p[3], double w)
     t->wt[v] = w;
 }
 
-int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err)
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, int *inside,
+                           dd_status *err)
 {
     *flips = 0;
+    *inside = 0;
     const double *x = dd_pt(t, v);
     const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
     const int how = old[0] != p[0] || old[1] != p[1] || old[2] != p[2] ? DD_MOVE_POINT
@@ -580,6 +593,7 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
         put_point(t, v, old, wold);
         return 0;
     }
+    *inside = how != DD_MOVE_POINT || !f.hull;
     const uint32_t ncell0 = t->ncell;
     *err = dd_reserve_cells(t, 3 * DD_FLIP_MAX);
     if (*err == DD_OK && t->hid && t->hid->keep) *err = dd_hidden_room(t, (size_t)ncell0 + 3 * DD_FLIP_MAX);

@@ -69,8 +69,13 @@ enum { DD_MOVE_POINT = 1, DD_MOVE_LIGHTER = 2, DD_MOVE_HEAVIER = 3 };
  * copies (dd_hidden_star_copies).  Exact, perturbation included.
  * O(star) plus O(1) a flip and a hidden point of a cell flipped;
  * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of
- * memory.                                                              */
-int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err);
+ * memory.  *inside, set either way: 1 when the star test showed that no
+ * vertex but v has point p (p is v's own point, or every star cell is
+ * finite and positively oriented with v at p: p lies inside the star,
+ * where v is the only vertex), so that a removal of v and an insertion
+ * of (p, w) can skip their duplicate check against other vertices.  */
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, int *inside,
+                           dd_status *err);
 
 /* 1 if the cells star[0..n) (v's star, hidden points kept) hold two
  * hidden points with the same weighted point.  A removal of v may bring
