@@ -21,7 +21,8 @@
  * itself).  Two courses:
  *  1. the relocation filter and a few 2-3 and 3-2 flips with power tests
  *     (mesh/flip.c, dd_move_power_by_flips): when v's star stays
- *     positive, the flips make every facet locally regular and every
+ *     positive (or is made so by flipping away a turned cell or two
+ *     first), the flips make every facet locally regular and every
  *     kept hidden point stays hidden (re-homed in the cells flipped),
  *     nothing is hidden anew: the reference's state, O(star) plus O(1)
  *     a flip;
