@@ -21,7 +21,8 @@
  * itself).  Two courses:
  *  1. the relocation filter and a few 2-3 and 3-2 flips with power tests
  *     (mesh/flip.c, dd_move_power_by_flips): when v's star stays
- *     positive, the flips make every facet locally regular and every
+ *     positive (or is made so by flipping away a turned cell or two
+ *     first), the flips make every facet locally regular and every
  *     kept hidden point stays hidden (re-homed in the cells flipped),
  *     nothing is hidden anew: the reference's state, O(star) plus O(1)
  *     a flip;
@@ -202,11 +203,13 @@ static dd_status move_by_rebuild(dd_tri *t, uint32_t v, const double p[3], doubl
  * refuses it with nothing changed: deleting first would forget for good
  * the exact copies of the points the deletion releases (delete.c).  Onto
  * a point the deletion itself releases, the insertion is refused after
- * it, as CGAL's remove() then insert() are, and v is put back.          */
-static dd_status move_by_removal(dd_tri *t, uint32_t v, const double p[3], double w)
+ * it, as CGAL's remove() then insert() are, and v is put back.  inside:
+ * the flips' star test showed that no vertex but v has point p (hidden_move.h,
+ * dd_move_power_by_flips), so the walk that looks for one is skipped.   */
+static dd_status move_by_removal(dd_tri *t, uint32_t v, const double p[3], double w, int inside)
 {
     const double old[3] = {dd_pt(t, v)[0], dd_pt(t, v)[1], dd_pt(t, v)[2]}, wold = t->wt[v];
-    const uint32_t dup = vertex_with(t, v, p, w);
+    const uint32_t dup = inside ? DD_NONE : vertex_with(t, v, p, w);
     if (dup != DD_NONE)
         return dd_fail(t, DD_ERR_DUPLICATE, "moving point %u: the new weighted point is point %u's", t->v2in[v],
                        t->v2in[dup]);
@@ -271,15 +274,15 @@ static dd_status move_weighted(dd_tri *t, uint32_t input, const double p[3], dou
     const double *x = dd_pt(t, v);
     if (x[0] == p[0] && x[1] == p[1] && x[2] == p[2] && t->wt[v] == w) return DD_OK;
     if (hidden) return move_hidden(t, v, p, w);
-    int flips;
-    if (dd_move_power_by_flips(t, v, p, w, &flips, &s)) {
+    int flips, inside;
+    if (dd_move_power_by_flips(t, v, p, w, &flips, &inside, &s)) {
         dd_grid_note(t, v);
         if (flips) t->moves_flipped++;
         else t->moves_kept++;
         return DD_OK;
     }
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
-    return move_by_removal(t, v, p, w);
+    return move_by_removal(t, v, p, w, inside);
 }
 
 dd_status dd_move_weighted(dd_tri *t, uint32_t v, const double p[3], double w)

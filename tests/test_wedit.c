@@ -12,7 +12,9 @@
  *    moves: small steps (the relocation filter's path, whose use is
  *    checked), large ones, onto another vertex's position with another
  *    weight, re-weightings up and down (v hidden, or hiding others),
- *    moves of kept hidden points; after every step the cells and the
+ *    moves of kept hidden points, moves just past the nearest facet of
+ *    the link (a star cell inverts: flipped away first, or the removal
+ *    and insertion); after every step the cells and the
  *    hidden set equal CGAL's (a move's reference: remove, then insert
  *    under the same index, DESIGN 12) and dd_check passes;
  *  - moves of an apex whose removal leaves only coplanar points (a grid
@@ -586,6 +588,83 @@ static void flips_case(tl_state *st, const char *name, const wset *s, int need_f
     }
 }
 
+/* Where v's move to q inverts a cell of its star: q just past the plane
+ * of the link facet nearest v (its cell's distance from v times 1.1
+ * from v), or 0 when that facet is farther than 0.2 h (the move would
+ * not be small).                                                      */
+static int past_link(const pair *pr, uint32_t v, double q[3])
+{
+    int32_t *tets = NULL;
+    size_t nt = 0;
+    if (dd_local_canonical(pr->t, &v, 1, &tets, &nt) != DD_OK) return 0;
+    const double *x = pr->p + 3 * (size_t)v;
+    double best = INFINITY;
+    for (size_t k = 0; k < nt; k++) {
+        const int32_t *c = tets + 4 * k;
+        const double *a[4];
+        int na = 0;
+        for (int j = 0; j < 4; j++)
+            if (c[j] >= 0 && (uint32_t)c[j] != v) a[na++] = pr->p + 3 * (size_t)c[j];
+        if (na != 3) continue;                 /* a hull cell */
+        double e1[3], e2[3], n[3];
+        for (int j = 0; j < 3; j++) e1[j] = a[1][j] - a[0][j], e2[j] = a[2][j] - a[0][j];
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (!(nn > 0)) continue;
+        const double d = ((x[0] - a[0][0]) * n[0] + (x[1] - a[0][1]) * n[1] + (x[2] - a[0][2]) * n[2]) / sqrt(nn);
+        if (fabs(d) >= best) continue;
+        best = fabs(d);
+        for (int j = 0; j < 3; j++) q[j] = x[j] - 1.1 * d * n[j] / sqrt(nn);
+    }
+    free(tets);
+    return best <= 0.2 * pr->h;
+}
+
+/* Moves that invert a cell of the moved vertex's star (past_link): the
+ * flip course takes them when flipping that cell away first (flip.c's
+ * unturn) leaves a positive star, else the removal and insertion do.
+ * Both modes, each step equal to CGAL; some of these moves must be done
+ * by flips (the flip course took none of them before unturn).         */
+static void turn_case(tl_state *st)
+{
+    wset s = gen_uniform(small ? 300 : 1000, 1, 81);
+    for (int keep = 1; keep >= 0; keep--) {
+        char tn[64], why[256] = "";
+        snprintf(tn, sizeof tn, "turn/uniform-w1/%s", keep ? "keep" : "discard");
+        pair pr;
+        int ok = pair_make(&pr, &s, keep, why, sizeof why);
+        tl_rng r = {0x7e11 + (uint64_t)keep};
+        uint64_t moved = 0, flipped = 0;
+        const uint32_t steps = small ? 80 : 300;
+        for (uint32_t m = 0; m < steps && ok; m++) {
+            const uint32_t v = pick(pr.t, &r, 1);
+            double q[3];
+            if (v == UINT32_MAX) break;
+            if (!past_link(&pr, v, q)) continue;
+            dd_counters c0, c1;
+            dd_get_counters(pr.t, &c0);
+            const dd_status ds = dd_move(pr.t, v, q);
+            const int cr = dd_cgal_rt_move(pr.c, v, q, pr.w[v]);
+            if (ds == DD_ERR_DUPLICATE && cr == 2) continue;
+            if (ds != DD_OK || cr != 0) {
+                ok = 0, snprintf(why, sizeof why, "move %u: %s, CGAL %d", v, dd_status_name(ds), cr);
+                break;
+            }
+            dd_get_counters(pr.t, &c1);
+            memcpy(pr.p + 3 * (size_t)v, q, sizeof q);
+            moved++, flipped += c1.moves_flipped - c0.moves_flipped;
+            ok = agree(&pr, "a move past a link facet", why, sizeof why);
+        }
+        if (ok && flipped == 0)
+            ok = 0, snprintf(why, sizeof why, "none of %llu moves past a link facet was done by flips",
+                             (unsigned long long)moved);
+        tl_check(st, ok, tn, "%s", why);
+        if (ok) fprintf(stderr, "  %s: %llu of %llu moves by flips\n", tn, (unsigned long long)flipped, (unsigned long long)moved);
+        pair_free(&pr);
+    }
+    ws_free(&s);
+}
+
 /* Power ties in the relocation filter (flip.c's star_test_power): an
  * integer grid with one weight, so that the corners of every cube lie
  * on one power sphere.  Each step moves a vertex off its grid point and
@@ -864,6 +943,7 @@ int main(int argc, char **argv)
     s = gen_grid(small ? 4 : 6, small ? 30 : 100, 1, 8);
     flips_case(&st, "grid-dups", &s, 0);
     ws_free(&s);
+    turn_case(&st);
     ties_case(&st);
     refusals_case(&st);
     copies_case(&st);

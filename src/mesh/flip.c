@@ -12,9 +12,16 @@
  * is locally Delaunay (the others kept their points and cells), so the
  * mesh is the perturbed DT of the moved set: the Delaunay lemma.
  *
+ * A weighted move whose star cell inverts first flips that cell away
+ * (unturn: a 2-3 or 3-2 flip with the cell across its link facet, valid
+ * as a triangulation once its new cells are positively oriented), then
+ * tests the new star as a whole; the facets Lawson's loop gets are the
+ * same as for a star that stayed positive.
+ *
  * In 3D a facet may stay unflippable (Lawson's flips can get stuck), and
  * the perturbed predicates are not used for flat configurations: then, or
- * when a star cell inverts, a hull facet fails (the hull would change),
+ * when a star cell inverts (and, weighted, unturn cannot remove it), a
+ * hull facet fails (the hull would change),
  * or the flips pass DD_FLIP_MAX, the repair gives up and the mesh is put
  * back exactly: touched cells are logged before their first write, the
  * cells a flip replaces are only killed once the repair succeeds, and the
@@ -55,6 +62,7 @@ typedef struct flip_state {
     dd_vec *made, *gone, *log, *stack, *later;   /* t's scratch, reused   */
     int flips;
     int power;                  /* power tests: weighted t (DESIGN 12)    */
+    int hull;                   /* the star tested has an infinite cell   */
     uint32_t touched_set[DD_SET_SLOTS], gone_set[DD_SET_SLOTS];
 } flip_state;
 
@@ -68,6 +76,7 @@ static void start_repair(flip_state *f, dd_tri *t, int power)
     f->made = &sc[0], f->gone = &sc[1], f->log = &sc[2], f->stack = &sc[3], f->later = &sc[4];
     f->flips = 0;
     f->power = power;
+    f->hull = 0;
 }
 
 /* Logs cell c before its first write in this repair. */
@@ -242,20 +251,28 @@ static int facet_bad(const flip_state *f, uint32_t c, uint32_t i)
 
 /* Lawson's loop over the stacked facets: 1 when every facet is locally
  * Delaunay, 0 to give up.  A facet not flippable now is kept aside and
- * tried again once the stack is empty.                                  */
+ * tried again once the stack is empty, unless no flip was made since
+ * the facets kept aside were last tried: the mesh is then the same, so
+ * they would all be kept aside again, and the loop gives up at once
+ * (the same answer as going round to the last round).                 */
 static int lawson(flip_state *f, dd_status *err)
 {
     dd_tri *t = f->t;
     dd_vec *later = f->later;
-    int ok = 1;
+    int ok = 1, flips0 = -1;
     later->n = 0;
     for (int round = 0; ok && (f->stack->n > 0 || later->n > 0) && round < 4; round++) {
         if (f->stack->n == 0) {              /* the facets set aside, once more */
+            if (f->flips == flips0) {        /* no flip since: stuck for good */
+                ok = 0;
+                break;
+            }
             dd_vec *s = f->stack;
             f->stack = later;
             later = s;
             later->n = 0;
         }
+        flips0 = f->flips;
         while (ok && f->stack->n > 0) {
             const uint32_t fc = f->stack->a[--f->stack->n], c = fc >> 2, i = fc & 3;
             if (dd_tv(t, c)[0] == DD_DEAD || is_gone(f, c)) continue;
@@ -486,8 +503,9 @@ static void test_facet_power(flip_state *f, const double K[4], double m, double 
  *
  * The link facets' tests come last: the apex's point is prefetched when
  * its cell is tested, and read once the rest of the star is done.
- * 0 when a star cell is not positively oriented.                       */
-static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv, int how)
+ * DD_NONE when every finite star cell is positively oriented, else the
+ * first that is not (the stack then holds only part of the facets).    */
+static uint32_t star_test_power(flip_state *f, uint32_t v, const double *p, double wv, int how)
 {
     dd_tri *t = f->t;
     const dd_vec *star = &t->conflict;
@@ -495,12 +513,14 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
     link_test lt[DD_STAR_LOCAL + 4];
     size_t nl = 0;
     const int defer = star->n <= DD_STAR_LOCAL + 4, links = how != DD_MOVE_LIGHTER;
+    f->hull = 0;
     for (size_t k = 0; k < star->n; k++) {
         const uint32_t c = star->a[k], *w = dd_tv(t, c), *nb = dd_tn(t, c);
         const uint32_t i = dd_slot_of(w, v);
         if (has(w, DD_INF)) {
             for (uint32_t j = 0; j < 4; j++)
                 if (j == i || c < nb[j] >> 2) stack->a[stack->n++] = 4 * c + j;
+            f->hull = 1;
             continue;
         }
         double R[3][4], mi[6], K[4], m = 0, W = 0;
@@ -520,7 +540,7 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
             if (orient4(t, w) <= 0) __builtin_trap();   /* the filter is never wrong */
 #endif
         } else if (orient4(t, w) <= 0) {
-            return 0;
+            return c;
         }
         dd_lift_cofactors(K, R[2], mi);
         for (uint32_t j = 0; j < 4; j++) {
@@ -546,7 +566,7 @@ static int star_test_power(flip_state *f, uint32_t v, const double *p, double wv
         }
     }
     for (size_t k = 0; k < nl; k++) test_facet_power(f, lt[k].K, lt[k].m, lt[k].W, lt[k].c, lt[k].j, lt[k].apex, p, wv);
-    return 1;
+    return DD_NONE;
 }
 
 /* Writes (p, w) as v's point and weight. */
@@ -557,9 +577,80 @@ static void put_point(dd_tri *t, uint32_t v, const double p[3], double w)
     t->wt[v] = w;
 }
 
-int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err)
+/* Turned star cells a move removes by unturn before it gives up: a
+ * small move turns one or two; more seldom end in a repair.           */
+#define DD_UNTURN_MAX 2
+
+/* Star cell c (finite) of v, now at p, is not positively oriented:
+ * flipped away with the cell across its link facet F (apex o), keeping
+ * a triangulation of the same vertices.  When o is no vertex of v's
+ * star t->conflict, by a 2-3 flip: c and that cell become the three
+ * cells (o, v, an edge of F) (edge vo is new, so are their faces).
+ * When o is one, by a 3-2 flip around an edge pq of F whose only other
+ * cell is (v, o, p, q): the three become (r, v, o, p) and (r, v, o, q),
+ * r the third vertex of F, provided no star cell has the face rvo
+ * already.  Either way the union's boundary stays, each new cell is c
+ * or that cell with one vertex traded (its orientation so taken) and
+ * must be positively oriented with v at p, and the facets to test are
+ * all facets of v's new star: the caller collects it and runs the star
+ * test again.  The flip is logged as Lawson's are (undone with them).
+ * 1 when done; 0 with nothing changed when o is infinite, neither flip
+ * applies, or a new cell is not positively oriented (or out of
+ * memory: *err).                                                     */
+static int unturn(flip_state *f, uint32_t v, uint32_t c, dd_status *err)
+{
+    dd_tri *t = f->t;
+    const uint32_t *cv = dd_tv(t, c);
+    const uint32_t i = dd_slot_of(cv, v), g = dd_tn(t, c)[i], n = g >> 2, o = dd_tv(t, n)[g & 3];
+    if (o == DD_INF || f->flips >= DD_FLIP_MAX) return 0;
+    const dd_vec *star = &t->conflict;
+    int linked = 0;
+    for (size_t k = 0; k < star->n && !linked; k++) linked = has(dd_tv(t, star->a[k]), o);
+    const uint32_t tri[3] = {cv[dd_facet[i][0]], cv[dd_facet[i][1]], cv[dd_facet[i][2]]};
+    const uint32_t loc[5] = {tri[0], tri[1], tri[2], o, v};
+    uint32_t nv[3][4];
+    if (!linked) {
+        for (int e = 0; e < 3; e++) {     /* as flip's 2-3, v the apex of c */
+            nv[e][0] = tri[e], nv[e][1] = tri[(e + 1) % 3], nv[e][2] = o, nv[e][3] = v;
+            if (orient4(t, nv[e]) <= 0) return 0;
+        }
+        const uint32_t old[2] = {c, n};
+        *err = replace(f, loc, old, 2, (const uint32_t(*)[4])nv, 3);
+        return *err == DD_OK;
+    }
+    for (int e = 0; e < 3; e++) {
+        const uint32_t p = tri[e], q = tri[(e + 1) % 3], r = tri[(e + 2) % 3];
+        const uint32_t m = dd_tn(t, c)[(uint32_t)dd_index_of(t, c, r)] >> 2;
+        if (!has(dd_tv(t, m), o) || is_gone(f, m)) continue;
+        int face = 0;                       /* rvo a face already: the flip would repeat it */
+        for (size_t k = 0; k < star->n && !face; k++) face = has(dd_tv(t, star->a[k]), o) && has(dd_tv(t, star->a[k]), r);
+        if (face) return 0;
+        for (int a = 0; a < 4; a++) {
+            nv[0][a] = cv[a] == q ? o : cv[a];
+            nv[1][a] = cv[a] == p ? o : cv[a];
+        }
+        if (orient4(t, nv[0]) <= 0 || orient4(t, nv[1]) <= 0) return 0;
+        const uint32_t old[3] = {c, n, m};
+        *err = replace(f, loc, old, 3, (const uint32_t(*)[4])nv, 2);
+        return *err == DD_OK;
+    }
+    return 0;
+}
+
+/* Room for a repair of DD_FLIP_MAX flips: cells, and the hidden
+ * points' lists of the cells from ncell0 on.                          */
+static dd_status reserve_repair(dd_tri *t, uint32_t ncell0)
+{
+    dd_status s = dd_reserve_cells(t, 3 * DD_FLIP_MAX);
+    if (s == DD_OK && t->hid && t->hid->keep) s = dd_hidden_room(t, (size_t)ncell0 + 3 * DD_FLIP_MAX);
+    return s;
+}
+
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, int *inside,
+                           dd_status *err)
 {
     *flips = 0;
+    *inside = 0;
     const double *x = dd_pt(t, v);
     const double old[3] = {x[0], x[1], x[2]}, wold = t->wt[v];
     const int how = old[0] != p[0] || old[1] != p[1] || old[2] != p[2] ? DD_MOVE_POINT
@@ -576,19 +667,37 @@ int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, i
     flip_state f;                            /* the sets: emptied at the first flip */
     start_repair(&f, t, 1);
     put_point(t, v, p, w);
-    if (!star_test_power(&f, v, p, w, how)) {
-        put_point(t, v, old, wold);
-        return 0;
+    const uint32_t ncell0 = t->ncell, vcell0 = t->vcell[v];
+    int ok = 1, room = 0;
+    for (int k = 0; ok; k++) {               /* turned cells flipped away, the star tested again */
+        const uint32_t turned = star_test_power(&f, v, p, w, how);
+        if (turned == DD_NONE) break;
+        ok = k < DD_UNTURN_MAX && how == DD_MOVE_POINT && t->conflict.n <= DD_STAR_LOCAL;
+        if (ok && !room) {
+            *err = reserve_repair(t, ncell0);
+            ok = *err == DD_OK, room = 1;
+        }
+        ok = ok && unturn(&f, v, turned, err);
+        if (ok) {
+            t->vcell[v] = f.made->a[f.made->n - 1];
+            f.stack->n = 0;
+            *err = move_star(t, v, &t->conflict, DD_STAR_POINTS | DD_STAR_LINK | (keep ? DD_STAR_LISTS : 0));
+            if (*err == DD_OK) *err = dd_vec_room(f.stack, 4 * t->conflict.n);
+            ok = *err == DD_OK && t->conflict.n <= DD_STAR_LOCAL;
+        }
     }
-    const uint32_t ncell0 = t->ncell;
-    *err = dd_reserve_cells(t, 3 * DD_FLIP_MAX);
-    if (*err == DD_OK && t->hid && t->hid->keep) *err = dd_hidden_room(t, (size_t)ncell0 + 3 * DD_FLIP_MAX);
-    int ok = *err == DD_OK && lawson(&f, err);
+    if (ok && !room) {
+        *err = reserve_repair(t, ncell0);
+        ok = *err == DD_OK;
+    }
+    if (ok) *inside = how != DD_MOVE_POINT || !f.hull;
+    ok = ok && lawson(&f, err);
     dd_vec *homes = f.stack;                 /* empty once Lawson's loop succeeded */
     if (ok && t->hid && t->hid->keep)
         ok = dd_hidden_flips_hold(t, v, f.made, f.gone, f.flips ? f.gone_set : NULL, how, homes, err);
     if (!ok) {
         undo(&f, ncell0);
+        t->vcell[v] = vcell0;
         put_point(t, v, old, wold);
         return 0;
     }

@@ -60,8 +60,11 @@ enum { DD_MOVE_POINT = 1, DD_MOVE_LIGHTER = 2, DD_MOVE_HEAVIER = 3 };
  * state a removal of v and an insertion of (p, w) reach, in either
  * hidden mode (*flips of them; 0 flips: the relocation filter), else 0
  * with the mesh, the hidden points and v's point and weight unchanged.
- * It yields that state when every star cell stays positively oriented,
- * Lawson's loop ends with every facet locally regular (the mesh is then
+ * It yields that state when every star cell stays positively oriented
+ * (or, v's point moved, at most DD_UNTURN_MAX turned cells are flipped
+ * away first by flip.c's unturn, each flip's new cells positive: the
+ * mesh is a triangulation of the same vertices again), Lawson's loop
+ * ends with every facet locally regular (the mesh is then
  * the regular triangulation of its vertices: none was hidden anew, v
  * included) and, hidden points kept, each stays hidden in a cell (see
  * dd_hidden_flips_hold, which also declines a star point with v's new
@@ -69,8 +72,14 @@ enum { DD_MOVE_POINT = 1, DD_MOVE_LIGHTER = 2, DD_MOVE_HEAVIER = 3 };
  * copies (dd_hidden_star_copies).  Exact, perturbation included.
  * O(star) plus O(1) a flip and a hidden point of a cell flipped;
  * t->conflict as scratch; *err DD_ERR_NOMEM (and 0) when out of
- * memory.                                                              */
-int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, dd_status *err);
+ * memory.  *inside, set either way: 1 when the star test showed that no
+ * vertex but v has point p (p is v's own point, or every cell of v's
+ * star, after the flips that removed turned cells, is finite and
+ * positively oriented with v at p: p lies inside that star, where v is
+ * the only vertex), so that a removal of v and an insertion
+ * of (p, w) can skip their duplicate check against other vertices.  */
+int dd_move_power_by_flips(dd_tri *t, uint32_t v, const double p[3], double w, int *flips, int *inside,
+                           dd_status *err);
 
 /* 1 if the cells star[0..n) (v's star, hidden points kept) hold two
  * hidden points with the same weighted point.  A removal of v may bring
