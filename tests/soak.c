@@ -3,7 +3,7 @@
  * and (soak_weighted.c, numbered after these cases) weighted deletions
  * and moves checked against CGAL's regular triangulation.
  *
- *   build/tests/soak [--scale F] [--jobs J] [--case K] [--seed S] [--quiet]
+ *   build/tests/soak [--scale F] [--jobs J] [--case K] [--weighted] [--seed S] [--quiet]
  *
  * Owns: the soak's case table and its driver.  Not part of `make test`
  * (it runs for tens of minutes at scale 1); SOAK_SCALE=F (or --scale)
@@ -869,13 +869,19 @@ static int cmp_cost(const void *a, const void *b)
 /* Writes the case numbers to the queue, dearest first: the workers take
  * them one at a time (4-byte reads of a pipe filled before they start,
  * so each read takes one whole number), which keeps them busy to the end. */
-static int fill_queue(int fd, long only)
+static int fill_queue(int fd, long only, int weighted_only)
 {
     size_t n = num_cases();
     uint32_t *order = malloc(n * sizeof *order);
     if (!order) return -1;
     for (size_t k = 0; k < n; k++) order[k] = (uint32_t)k;
     qsort(order, n, sizeof *order, cmp_cost);
+    if (weighted_only) {                   /* the weighted cases, in the same order */
+        size_t m = 0;
+        for (size_t k = 0; k < n; k++)
+            if (order[k] >= num_unweighted()) order[m++] = order[k];
+        n = m;
+    }
     if (only >= 0) {
         order[0] = (uint32_t)only;
         n = 1;
@@ -899,14 +905,15 @@ static int run_worker(soak *s, double scale, uint64_t seed, int queue)
 
 static void usage(void)
 {
-    fprintf(stderr, "usage: soak [--scale F] [--jobs J] [--case K] [--seed S] [--quiet]\n"
+    fprintf(stderr, "usage: soak [--scale F] [--jobs J] [--case K] [--weighted] [--seed S] [--quiet]\n"
+                    "  --weighted: only the weighted cases (soak_weighted.c)\n"
                     "  SOAK_SCALE=F in the environment is the default scale (1: about 10^6 deletions)\n");
 }
 
 int main(int argc, char **argv)
 {
     double scale = 1;
-    int jobs = 1, quiet = 0;
+    int jobs = 1, quiet = 0, weighted_only = 0;
     long only = -1;
     uint64_t seed = 1;
     const char *env = getenv("SOAK_SCALE");
@@ -917,6 +924,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--case") && i + 1 < argc) only = atol(argv[++i]);
         else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 10);
         else if (!strcmp(argv[i], "--quiet")) quiet = 1;
+        else if (!strcmp(argv[i], "--weighted")) weighted_only = 1;
         else { usage(); return 2; }
     }
     if (!(scale > 0) || scale > 1000 || jobs < 1 || jobs > SOAK_MAX_JOBS || only >= (long)num_cases()) {
@@ -926,7 +934,7 @@ int main(int argc, char **argv)
     if (only >= 0) jobs = 1;
     setvbuf(stdout, NULL, _IOLBF, 0);
     double t0 = now_s();
-    printf("soak: scale %g, %zu cases, %d worker%s, %s\n", scale, only >= 0 ? (size_t)1 : num_cases(), jobs,
+    printf("soak: scale %g, %zu cases, %d worker%s, %s\n", scale, only >= 0 ? (size_t)1 : weighted_only ? soak_num_weighted() : num_cases(), jobs,
            jobs > 1 ? "s" : "", dd_cgal_version());
 
     soak proto;
@@ -941,7 +949,7 @@ int main(int argc, char **argv)
      * pipe as one binary record                                          */
     int fds[2], queue[2];
     if (pipe(fds) || pipe(queue)) { perror("soak: pipe"); return 1; }
-    if (fill_queue(queue[1], only)) { perror("soak: queue"); return 1; }
+    if (fill_queue(queue[1], only, weighted_only)) { perror("soak: queue"); return 1; }
     close(queue[1]);
     pid_t pids[SOAK_MAX_JOBS];
     for (int w = 0; w < jobs; w++) {
