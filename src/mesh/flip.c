@@ -191,6 +191,22 @@ static int orient4(dd_tri *t, const uint32_t *v)
     return dd_orient3d(&t->pred, dd_pt(t, v[0]), dd_pt(t, v[1]), dd_pt(t, v[2]), dd_pt(t, v[3]));
 }
 
+/* The three cells of a 2-3 flip of facet tri between apexes x and o:
+ * nv[e] = (edge e of tri, o, x).  -2 when one is flat, else the last
+ * edge e whose cell is negatively oriented (the union's reflex edge),
+ * or -1 when all three are positive (the union is convex).            */
+static int cells_2_3(dd_tri *t, const uint32_t tri[3], uint32_t o, uint32_t x, uint32_t nv[3][4])
+{
+    int reflex = -1;
+    for (int e = 0; e < 3; e++) {
+        nv[e][0] = tri[e], nv[e][1] = tri[(e + 1) % 3], nv[e][2] = o, nv[e][3] = x;
+        const int s = orient4(t, nv[e]);
+        if (s == 0) return -2;
+        if (s < 0) reflex = e;
+    }
+    return reflex;
+}
+
 /* Flips facet i of cell c (apex x) with neighbour n (apex o), both finite:
  * 2-3 when the union is convex, else 3-2 around its reflex edge when that
  * edge has three cells.  0 when done, 1 when not flippable now, -1 when
@@ -202,13 +218,8 @@ static int flip(flip_state *f, uint32_t c, uint32_t i, dd_status *err)
     const uint32_t tri[3] = {dd_tv(t, c)[dd_facet[i][0]], dd_tv(t, c)[dd_facet[i][1]], dd_tv(t, c)[dd_facet[i][2]]};
     const uint32_t loc[5] = {tri[0], tri[1], tri[2], o, x};
     uint32_t nv[3][4];
-    int reflex = -1;
-    for (int e = 0; e < 3; e++) {     /* cell (p, q, o, x) for edge pq of the facet */
-        nv[e][0] = tri[e], nv[e][1] = tri[(e + 1) % 3], nv[e][2] = o, nv[e][3] = x;
-        const int s = orient4(t, nv[e]);
-        if (s == 0) return -1;
-        if (s < 0) reflex = e;
-    }
+    const int reflex = cells_2_3(t, tri, o, x, nv);
+    if (reflex == -2) return -1;
     if (reflex < 0) {
         const uint32_t old[2] = {c, n};
         *err = replace(f, loc, old, 2, (const uint32_t(*)[4])nv, 3);
@@ -610,10 +621,7 @@ static int unturn(flip_state *f, uint32_t v, uint32_t c, dd_status *err)
     const uint32_t loc[5] = {tri[0], tri[1], tri[2], o, v};
     uint32_t nv[3][4];
     if (!linked) {
-        for (int e = 0; e < 3; e++) {     /* as flip's 2-3, v the apex of c */
-            nv[e][0] = tri[e], nv[e][1] = tri[(e + 1) % 3], nv[e][2] = o, nv[e][3] = v;
-            if (orient4(t, nv[e]) <= 0) return 0;
-        }
+        if (cells_2_3(t, tri, o, v, nv) != -1) return 0;    /* flip's 2-3, v the apex of c */
         const uint32_t old[2] = {c, n};
         *err = replace(f, loc, old, 2, (const uint32_t(*)[4])nv, 3);
         return *err == DD_OK;
