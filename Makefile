@@ -51,9 +51,9 @@ VERSION  := $(call version_part,MAJOR).$(call version_part,MINOR).$(call version
 SONAME   := libdtdel.so.$(call version_part,MAJOR)
 
 # The engine's layers, bottom up (docs/architecture.md): each folder of
-# src/ uses only those before it; variants/ and src/api.c sit on top.
+# src/ uses only those before it; variants/ and src/api/ sit on top.
 LAYERS   = geom mesh delete wrap
-LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/*.c)
+LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/api/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
 DATA_SRC = $(wildcard datasets/*.c)
 SHIM_SRC = $(wildcard src/cgal/*.cpp)

@@ -7,7 +7,7 @@
 # belongs to a layer, bottom up (docs/architecture.md):
 #
 #   src/dtdel (the shared types), src/geom, src/mesh, src/delete, src/wrap,
-#   variants, src/*.c and src/*.h (the API), and, on top, the CLI's side:
+#   variants, src/api and src/*.h (the API), and, on top, the CLI's side:
 #   src/cli, datasets and src/cgal, which the library must not use at all.
 #
 # Two checks, each failing the run:
@@ -39,7 +39,7 @@ function rank(p) {
     if (p ~ /^src\/delete\//) return 3
     if (p ~ /^src\/wrap\//) return 4
     if (p ~ /^variants\//) return 5
-    if (p ~ /^src\/[^\/]*$/) return 6
+    if (p ~ /^src\/api\// || p ~ /^src\/[^\/]*$/) return 6
     if (p ~ /^(src\/cli|src\/cgal|datasets)\//) return 7
     return 9
 }

@@ -44,13 +44,13 @@ fresh; plant variants/auto.c 'static void *z_(void *p) { return realloc (p, 8); 
 check realloc-blank FAIL "variants/auto.c:"
 fresh; plant src/cli/cli.c 'static char *w_(const char *s) { return strdup(s); }'
 check strdup-cli FAIL "src/cli/cli.c:"
-fresh; plant src/api.c 'static void *v_(void) { return calloc(1, 8); }'
-check calloc FAIL "src/api.c:"
+fresh; plant src/api/api.c 'static void *v_(void) { return calloc(1, 8); }'
+check calloc FAIL "src/api/api.c:"
 fresh
-plant src/api.c '/* a comment may say free(p) or malloc(n) */'
-plant src/api.c 'static const char *u_ = "free (recorded) malloc(\"x\")";'
-plant src/api.c 'struct k_ { void (*free)(void *); }; static void t_(struct k_ *k, void *p) { k->free(p); }'
-plant src/api.c 'static void s_(void *p) { dd_mfree(p); (void)dd_malloc(1); }'
+plant src/api/api.c '/* a comment may say free(p) or malloc(n) */'
+plant src/api/api.c 'static const char *u_ = "free (recorded) malloc(\"x\")";'
+plant src/api/api.c 'struct k_ { void (*free)(void *); }; static void t_(struct k_ *k, void *p) { k->free(p); }'
+plant src/api/api.c 'static void s_(void *p) { dd_mfree(p); (void)dd_malloc(1); }'
 check words-not-calls ok ""
 fresh; printf 'void q_(void *p) { free(p); }\n' >>"$tmp/w/src/cgal/cgal_shim.cpp"
 check cgal-excluded ok ""

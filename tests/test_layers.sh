@@ -113,16 +113,16 @@ plant_include src/delete/grr.c '#include "datasets/datasets.h"'
 run include-datasets FAIL 'src/delete/grr.c (delete) includes "datasets/datasets.h"'
 
 fresh
-plant_include src/api.c '#include "cgal/cgal_shim.h"'
-run include-cgal FAIL 'src/api.c (the API) includes "cgal/cgal_shim.h"'
+plant_include src/api/api.c '#include "cgal/cgal_shim.h"'
+run include-cgal FAIL 'src/api/api.c (the API) includes "cgal/cgal_shim.h"'
 
 fresh
 plant_call src/mesh/planted.c dd_gen
 run call-datasets FAIL 'src/mesh/planted.o (mesh) calls dd_gen, defined in datasets/'
 
 fresh
-plant_call src/planted.c dd_cgal_build
-run call-cgal FAIL 'src/planted.o (the API) calls dd_cgal_build, defined in src/cgal/'
+plant_call src/api/planted.c dd_cgal_build
+run call-cgal FAIL 'src/api/planted.o (the API) calls dd_cgal_build, defined in src/cgal/'
 
 fresh
 plant_call src/mesh/planted.c dd_wrap_fill
