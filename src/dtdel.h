@@ -421,6 +421,85 @@ dd_status dd_locate_from(const dd_tri *t, const double p[3], dd_cell_id hint, dd
  * succeeded.  O(1).                                                   */
 dd_status dd_created_cells(const dd_tri *t, const dd_cell_id **cells, size_t *n);
 
+/* ---- hinted and whole-array calls ---------------------------------------- */
+
+/* dd_insert / dd_insert_weighted with the walk starting at cell `hint`
+ * (a live id, or -1: the library's choice, as dd_insert).  Same result,
+ * index and statuses as those, plus DD_ERR_UNKNOWN_CELL if hint is
+ * neither -1 nor alive (checked after p, before any change).  Cost: the
+ * cells crossed from hint to p plus the update, so O(1) beyond the update
+ * when p is in conflict with hint (a refinement loop inserting the
+ * circumcentre of the cell it holds).                                  */
+dd_status dd_insert_from(dd_tri *t, const double p[3], dd_cell_id hint, uint32_t *index);
+dd_status dd_insert_weighted_from(dd_tri *t, const double p[3], double w, dd_cell_id hint, uint32_t *index);
+
+/* Inserts the m points xyz[3i..3i+3) (weights w[i]; w NULL: weight 0 on
+ * a weighted t; w non-NULL on an unweighted t: DD_ERR_UNSUPPORTED).
+ * The triangulation, and indices[i], the input index of point i, are
+ * those of inserting the points one at a time in the given order with
+ * dd_insert / dd_insert_weighted, except that a point equal to a vertex
+ * (its weighted point, on a weighted t) or to an earlier point of the
+ * batch is no error: it gets that vertex's or point's index and is
+ * counted in *merged (NULL allowed), as dd_create merges duplicates.
+ * The work is done in an order of the call's own (along a Hilbert curve,
+ * in BRIO rounds when m is large against the vertices there are),
+ * except under DD_DISCARD_HIDDEN, where the given order is the one
+ * honoured (what is forgotten depends on it).  All or nothing: a NaN or
+ * infinite coordinate or weight anywhere refuses the whole batch
+ * (DD_ERR_NAN / DD_ERR_INFINITE, the message naming its position),
+ * checked before any change; DD_ERR_NOMEM leaves t as it was (see
+ * DD_ERR_INTERNAL above).  m = 0 succeeds and changes nothing.
+ * dd_created_cells lists the live cells the batch made.  Cost: that of
+ * the m insertions, each walking from the last one's cells, so O(1)
+ * cells a walk on spread points, plus O(m) for the order.             */
+dd_status dd_insert_many(dd_tri *t, const double *xyz, const double *w, size_t m, uint32_t *indices,
+                         size_t *merged);
+
+/* Moves input vertex vs[i] to xyz[3i..3i+3) (with weight w[i] on a
+ * weighted t; w NULL keeps each weight; w non-NULL on an unweighted t:
+ * DD_ERR_UNSUPPORTED), each keeping its index.  The result is the
+ * triangulation of the moved point set (the regular triangulation and
+ * hidden set of the moved weighted points), CGAL's, whatever the order;
+ * the call chooses its own (along a Hilbert curve of the targets), but
+ * under DD_DISCARD_HIDDEN the given order is honoured, as m dd_move_weighted
+ * calls would.  A vertex may move onto the old point of another one of
+ * the batch.  Refused before any change: DD_ERR_NAN / DD_ERR_INFINITE
+ * (naming the position), DD_ERR_UNKNOWN_VERTEX (vs[i] neither a vertex
+ * nor a kept hidden point), DD_ERR_ARG (a vertex listed twice, naming
+ * both positions), DD_ERR_DUPLICATE (two final positions equal, naming
+ * the pair).  DD_ERR_DUPLICATE also when a final position is a vertex's
+ * that does not move (found on the way: the moves made are undone), and
+ * DD_ERR_DIMENSION as dd_move; DD_ERR_NOMEM.  All or nothing.  m = 0
+ * succeeds.  Cost: that of the m moves, O(degree) each for a small move,
+ * plus O(m log m) for the checks and the order.                       */
+dd_status dd_move_many(dd_tri *t, const uint32_t *vs, const double *xyz, const double *w, size_t m);
+
+/* Read-only, const and thread-safe like every read.  cells[i] receives a
+ * cell whose closure holds point xyz[3i..3i+3) (dd_locate_from's answer
+ * class, -1 where the point is NaN or infinite), nearest[i] a vertex
+ * nearest to it (least power distance on a weighted t, as
+ * dd_nearest_vertex; UINT32_MAX where the point is bad).  The queries
+ * are answered along a Hilbert curve, each walk starting from the last
+ * answer.  DD_ERR_NAN / DD_ERR_INFINITE if some point was bad (the
+ * others answered), DD_ERR_NOMEM (nothing answered).  Cost: O(m log m)
+ * for the order plus the walks, O(1) cells each for queries spread like
+ * the points; O(m) scratch.                                          */
+dd_status dd_locate_many(const dd_tri *t, const double *xyz, size_t m, dd_cell_id *cells);
+dd_status dd_nearest_many(const dd_tri *t, const double *xyz, size_t m, uint32_t *nearest);
+
+/* Every input point's coordinates: xyz[3i..3i+3) for i < dd_num_input(t)
+ * (a duplicate's are its vertex's), NaN for an index that names no point
+ * now (a deleted vertex, a forgotten hidden point), and on a weighted t
+ * the weights into w (NULL allowed; 0 on an unweighted t, NaN where xyz
+ * is).  Read-only.  O(n).                                              */
+dd_status dd_points(const dd_tri *t, double *xyz, double *w);
+
+/* The vertices of cells ids[0..n), as dd_cell gives them, into
+ * verts[4k..4k+4): with dd_created_cells, the new cells of an edit in one
+ * call.  DD_ERR_UNKNOWN_CELL (naming nothing: verts of the cells before
+ * it written) at the first id not alive.  Read-only.  O(n).            */
+dd_status dd_cells_vertices(const dd_tri *t, const dd_cell_id *ids, size_t n, int32_t *verts);
+
 /* ---- mesh files ------------------------------------------------------------ */
 
 /* Writes the finite cells and the vertices to path, the format chosen by

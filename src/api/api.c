@@ -12,6 +12,7 @@
 #include "mesh/hidden_move.h"
 #include "geom/expansion.h"
 #include "dtdel/alloc.h"
+#include "api/api_int.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -96,17 +97,7 @@ static uint32_t hidden_id(const dd_tri *t, uint32_t input)
     return t->v2in[v] == input && dd_hidden_has(t, v) ? v : DD_NONE;
 }
 
-/* Whether vertex id v is in t now: a vertex, or a kept hidden point.  */
-static int present(const dd_tri *t, uint32_t v)
-{
-    return t->vcell[v] != DD_NONE || dd_hidden_has(t, v);
-}
-
-/* Puts vertex id v (its point, and weight, as they were) back into t:
- * the undo of its deletion.  On a weighted t by CGAL's rule, so that a
- * point that was hidden is hidden again (keep mode is the regular
- * triangulation of the points in t, whatever the order).               */
-static dd_status put_back(dd_tri *t, uint32_t v)
+dd_status dd_put_back(dd_tri *t, uint32_t v)
 {
     if (!t->wt) return dd_insert_vertex(t, v);
     dd_fate fate;
@@ -208,7 +199,7 @@ static uint32_t vertices_left(const dd_tri *t, const uint32_t *ids, size_t n, ui
     uint32_t m = 0;
     size_t k = 0;
     for (uint32_t v = 0; v < t->nvid && m < max; v++) {
-        if (!present(t, v)) continue;
+        if (!dd_present(t, v)) continue;
         if (k < n && ids[k] == v) { k++; continue; }
         left[m++] = v;
     }
@@ -360,7 +351,7 @@ static dd_status delete_each(dd_tri *t, const uint32_t *ids, size_t n, const dd_
         char why[sizeof t->err];
         memcpy(why, t->err, sizeof why);
         int undone = 1;
-        while (done > 0 && undone) undone = put_back(t, ids[--done]) == DD_OK;
+        while (done > 0 && undone) undone = dd_put_back(t, ids[--done]) == DD_OK;
         memcpy(t->err, why, sizeof why);
         if (!undone)   /* a re-insertion failed too: not as it was (dtdel.h, NOMEM) */
             s = dd_fail(t, DD_ERR_INTERNAL, "deleting the set failed (%s) and could not be undone", why);
@@ -538,7 +529,7 @@ static dd_status reinsert(dd_tri *t, uint32_t input)
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already a vertex", input);
     if (dd_hidden_has(t, v))
         return dd_fail(t, DD_ERR_DUPLICATE, "point %u is already in the triangulation, hidden", input);
-    dd_status s = put_back(t, v);   /* weighted: it may end hidden, or forgotten */
+    dd_status s = dd_put_back(t, v);   /* weighted: it may end hidden, or forgotten */
     if (s == DD_OK) (void)dd_grid_ready(t);     /* the queries' starts (locate.c) */
     return s;
 }
@@ -551,10 +542,7 @@ dd_status dd_reinsert(dd_tri *t, uint32_t v)
 
 
 
-/* A vertex id for a new point: a deleted one to reuse (*reused = 1;
- * never with DD_STABLE_INDICES, whose vfree stays empty), or the next
- * unused one, the vertex arrays grown if needed.                         */
-static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
+dd_status dd_new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
 {
     while (t->vfree.n > 0) {
         const uint32_t x = t->vfree.a[--t->vfree.n];
@@ -574,21 +562,35 @@ static dd_status new_vertex_id(dd_tri *t, uint32_t *v, int *reused)
     return DD_OK;
 }
 
-static dd_status insert_point(dd_tri *t, const double p[3], uint32_t *index)
+dd_status dd_insert_start(dd_tri *t, const double p[3], dd_cell_id hint, uint32_t *start)
 {
     for (int c = 0; c < 3; c++) {
         if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
         if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
     }
-    uint32_t v = 0;
-    int reused = 0;
+    if (hint != -1 && !dd_cell_alive(t, hint))
+        return dd_fail(t, DD_ERR_UNKNOWN_CELL, "the hint %lld is not a live cell", (long long)hint);
+    if (hint != -1) {
+        *start = (uint32_t)hint;
+        return DD_OK;
+    }
     dd_status s = dd_grid_ready(t);
     if (s != DD_OK) return dd_fail(t, s, "out of memory");
-    if ((s = new_vertex_id(t, &v, &reused)) != DD_OK) return s;
+    *start = dd_start_near(t, p);
+    return DD_OK;
+}
+
+static dd_status insert_point(dd_tri *t, const double p[3], dd_cell_id hint, uint32_t *index)
+{
+    uint32_t v = 0, start;
+    int reused = 0;
+    dd_status s = dd_insert_start(t, p, hint, &start);
+    if (s != DD_OK) return s;
+    if ((s = dd_new_vertex_id(t, &v, &reused)) != DD_OK) return s;
     double old[3];                                   /* a reused slot's point, kept */
     memcpy(old, t->xyz + 3 * (size_t)v, sizeof old);
     memcpy(t->xyz + 3 * (size_t)v, p, sizeof old);
-    s = dd_insert_vertex_at(t, v, dd_start_near(t, p));
+    s = dd_insert_vertex_at(t, v, start);
     if (s != DD_OK) {                                /* nothing changes */
         memcpy(t->xyz + 3 * (size_t)v, old, sizeof old);
         if (reused) (void)dd_vec_push(&t->vfree, v);
@@ -603,9 +605,14 @@ static dd_status insert_point(dd_tri *t, const double p[3], uint32_t *index)
     return DD_OK;
 }
 
+dd_status dd_insert_from(dd_tri *t, const double p[3], dd_cell_id hint, uint32_t *index)
+{
+    if (t->wt) return dd_insert_weighted_from(t, p, 0.0, hint, index);    /* weight 0 */
+    dd_edit_begin(t);
+    return dd_edit_end(t, insert_point(t, p, hint, index));
+}
+
 dd_status dd_insert(dd_tri *t, const double p[3], uint32_t *index)
 {
-    if (t->wt) return dd_insert_weighted(t, p, 0.0, index);    /* weight 0 */
-    dd_edit_begin(t);
-    return dd_edit_end(t, insert_point(t, p, index));
+    return dd_insert_from(t, p, -1, index);
 }

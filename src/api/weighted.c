@@ -7,6 +7,7 @@
 #include "dtdel.h"
 #include "mesh/mesh.h"
 #include "mesh/hidden.h"
+#include "api/api_int.h"
 
 #include <math.h>
 #include <string.h>
@@ -35,18 +36,16 @@ dd_status dd_hidden(const dd_tri *t, uint32_t **idx, size_t *n) { return dd_hidd
  * none: *index names that vertex and nothing changes, as CGAL's insert
  * returns it (an exact copy of a hidden point is hidden, under its own
  * index, as in CGAL).                                                   */
-static dd_status insert_weighted(dd_tri *t, const double p[3], double w, uint32_t *index)
+static dd_status insert_weighted(dd_tri *t, const double p[3], double w, dd_cell_id hint, uint32_t *index)
 {
     if (!t->wt)
         return dd_fail(t, DD_ERR_UNSUPPORTED, "dd_insert_weighted needs a weighted triangulation (dd_create_ex)");
-    for (int c = 0; c < 3; c++) {
-        if (isnan(p[c])) return dd_fail(t, DD_ERR_NAN, "coordinate %c is NaN", "xyz"[c]);
-        if (isinf(p[c])) return dd_fail(t, DD_ERR_INFINITE, "coordinate %c is infinite", "xyz"[c]);
-    }
+    uint32_t start;
+    dd_status s = dd_insert_start(t, p, hint, &start);
+    if (s != DD_OK) return s;
     if (isnan(w)) return dd_fail(t, DD_ERR_NAN, "the weight is NaN");
     if (isinf(w)) return dd_fail(t, DD_ERR_INFINITE, "the weight is infinite");
-    dd_status s = dd_grid_ready(t);
-    if (s == DD_OK) s = dd_reserve_vertex(t);
+    s = dd_reserve_vertex(t);
     if (s != DD_OK) return dd_fail(t, s, "out of memory or too many points");
     const uint32_t v = t->nvid;
     memcpy(t->xyz + 3 * (size_t)v, p, 3 * sizeof *p);
@@ -55,7 +54,7 @@ static dd_status insert_weighted(dd_tri *t, const double p[3], double w, uint32_
     t->v2in[v] = t->np;
     dd_fate fate;
     uint32_t dup = DD_NONE;
-    if ((s = dd_insert_power(t, v, dd_start_near(t, p), 1, &fate, &dup)) != DD_OK) return s;
+    if ((s = dd_insert_power(t, v, start, 1, &fate, &dup)) != DD_OK) return s;
     if (fate == DD_FATE_DUPLICATE) {          /* nothing changed: that vertex */
         *index = t->v2in[dup];
         return DD_OK;
@@ -67,8 +66,13 @@ static dd_status insert_weighted(dd_tri *t, const double p[3], double w, uint32_
     return DD_OK;
 }
 
-dd_status dd_insert_weighted(dd_tri *t, const double p[3], double w, uint32_t *index)
+dd_status dd_insert_weighted_from(dd_tri *t, const double p[3], double w, dd_cell_id hint, uint32_t *index)
 {
     dd_edit_begin(t);
-    return dd_edit_end(t, insert_weighted(t, p, w, index));
+    return dd_edit_end(t, insert_weighted(t, p, w, hint, index));
+}
+
+dd_status dd_insert_weighted(dd_tri *t, const double p[3], double w, uint32_t *index)
+{
+    return dd_insert_weighted_from(t, p, w, -1, index);
 }

@@ -136,16 +136,22 @@ static uint64_t brio_round(uint32_t i, uint32_t depth)
     return depth - level;
 }
 
-/* Reorders ids[0..n) (ascending input indices) into BRIO rounds, smallest
- * first, each along the Hilbert curve of the kept points' bounding box.
- * One sequential pass over the coordinates, then an LSD radix sort of
- * (round << 48 | hilbert, id), stable.  Cost O(n), 32n bytes of scratch. */
-static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
+static int cmp_keyed(const void *a, const void *b)
+{
+    const keyed *x = a, *y = b;
+    return x->key < y->key ? -1 : x->key > y->key ? 1 : (x->id > y->id) - (x->id < y->id);
+}
+
+/* Below this many points a comparison sort of the keys beats the radix
+ * sort's 128 KiB of counters.                                            */
+#define RADIX_MIN 2048
+
+dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int brio)
 {
     if (n < 2) return DD_OK;
     /* as many factor-8 rounds as take n down to 64 points or fewer */
     uint32_t depth = 0;
-    for (uint32_t hi = n; hi > 64; hi /= 8) depth++;
+    for (uint32_t hi = n; brio && hi > 64; hi /= 8) depth++;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (uint32_t k = 0; k < n; k++) {
         const double *p = pts + 3 * (size_t)ids[k];
@@ -168,9 +174,10 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         eh = half > 0 ? ilogb(half) : 0;
         scale = half > 0 ? 65535.0 / ldexp(half, -eh) : 0.0;
     }
+    const int radix = n >= RADIX_MIN;
     keyed *a = dd_malloc(2 * (size_t)n * sizeof *a);
-    uint32_t *count = dd_calloc((size_t)NPASS * NDIGIT, sizeof *count);
-    if (!a || !count) { dd_mfree(a); dd_mfree(count); return DD_ERR_NOMEM; }
+    uint32_t *count = radix ? dd_calloc((size_t)NPASS * NDIGIT, sizeof *count) : NULL;
+    if (!a || (radix && !count)) { dd_mfree(a); dd_mfree(count); return DD_ERR_NOMEM; }
     keyed *const buf = a;
     keyed *b = a + n;
     for (uint32_t k = 0; k < n; k++) {
@@ -183,10 +190,11 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
         uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, 16);
         a[k].key = key;
         a[k].id = ids[k];
-        for (uint32_t d = 0; d < NPASS; d++)
+        for (uint32_t d = 0; radix && d < NPASS; d++)
             count[d * NDIGIT + ((key >> (d * DIGIT_BITS)) & (NDIGIT - 1))]++;
     }
-    for (uint32_t d = 0; d < NPASS; d++) {
+    if (!radix) qsort(a, n, sizeof *a, cmp_keyed);
+    for (uint32_t d = 0; radix && d < NPASS; d++) {
         uint32_t shift = d * DIGIT_BITS, *cnt = count + d * NDIGIT;
         if (cnt[(a[0].key >> shift) & (NDIGIT - 1)] == n) continue; /* one digit */
         uint32_t sum = 0;
@@ -202,9 +210,7 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
 
 /* ---- validation and duplicates ------------------------------------------- */
 
-/* first[i] = the smallest input index holding the same point as input i;
- * writes the kept inputs (first[i] == i, ascending) to ids[0..*nkept).
- * Open addressing with linear probing on a table of kept ids, at most
+/* dd_dedup_points (mesh.h): open addressing with linear probing on a table of kept ids, at most
  * half full; the inputs are scanned in order, so the id found for a point
  * is its first occurrence.  A slot keeps the high half of the point's hash
  * beside the id: a probe compares coordinates (a read at a random place
@@ -212,7 +218,7 @@ static dd_status brio_order(const double *pts, uint32_t *ids, uint32_t n)
  * fetched ahead (the table, 16 bytes a point, is out of cache for large
  * n).  Cost O(n) expected.                                               */
 #define DEDUP_AHEAD 16
-static dd_status dedup(dd_tri *t, const double *pts, const double *w, uint32_t n, uint32_t *first,
+dd_status dd_dedup_points(dd_tri *t, const double *pts, const double *w, uint32_t n, uint32_t *first,
                        uint32_t *ids, uint32_t *nkept)
 {
     size_t cap = 16;
@@ -358,8 +364,8 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights,
     /* Input order -> insertion order: drop duplicates, BRIO + Hilbert, the
      * first tetrahedron in front.  Vertex id k is then input ids[k].      */
     uint32_t m = 0;
-    s = dedup(t, xyz, weights, n, first, ids, &m);
-    if (s == DD_OK) s = brio_order(xyz, ids, m);
+    s = dd_dedup_points(t, xyz, weights, n, first, ids, &m);
+    if (s == DD_OK) s = dd_spatial_order(xyz, ids, m, 1);
     if (s == DD_OK) s = dd_pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
     if (s == DD_OK && weights && make_weighted(t, weights, ids, m) != DD_OK)

@@ -807,7 +807,7 @@ void dd_clear_cells(dd_tri *t)
 /* dd_insert_vertex, dd_insert_vertex_at (from `start`) and dd_build_insert
  * (ahead = 1: the conflict search fetches cells ahead): locate, refuse a
  * duplicate, find the conflict region, reserve, fill the star.          */
-static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead)
+static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead, uint32_t *dup)
 {
     const double *p = dd_pt(t, v);
     if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
@@ -817,8 +817,12 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, con
     if (!dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t w = dd_tv(t, c0)[k];
-            if (dd_lex_cmp(dd_pt(t, w), p) == 0)
-                return dd_fail(t, DD_ERR_DUPLICATE, "point %u equals vertex %u", t->v2in[v], t->v2in[w]);
+            if (dd_lex_cmp(dd_pt(t, w), p) != 0) continue;
+            if (dup) {
+                *dup = w;
+                return DD_ERR_DUPLICATE;
+            }
+            return dd_fail(t, DD_ERR_DUPLICATE, "point %u equals vertex %u", t->v2in[v], t->v2in[w]);
         }
     s = ahead ? find_conflicts_ahead(t, p, c0) : dd_find_conflicts(t, p, c0);
     if (s == DD_OK) s = dd_reserve_star(t);
@@ -830,17 +834,22 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, con
 
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, t->hint, 0);
+    return insert_vertex(t, v, t->hint, 0, NULL);
 }
 
 dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start)
 {
-    return insert_vertex(t, v, start, 1);
+    return insert_vertex(t, v, start, 1, NULL);
+}
+
+dd_status dd_insert_vertex_dup(dd_tri *t, uint32_t v, uint32_t start, uint32_t *dup)
+{
+    return insert_vertex(t, v, start, 1, dup);
 }
 
 dd_status dd_build_insert(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, t->hint, 1);
+    return insert_vertex(t, v, t->hint, 1, NULL);
 }
 
 /* ---- vertex storage ------------------------------------------------------- */

@@ -502,6 +502,24 @@ void dd_fill_star(dd_tri *t, uint32_t v);
  * (dd_insert_vertex) or at cell `start` (dd_insert_vertex_at).           */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
 dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
+/* dd_insert_vertex_at, the conflict cells fetched ahead, refusing a
+ * duplicate quietly: DD_ERR_DUPLICATE with no message, *dup the vertex
+ * whose point v's is, nothing changed (a batch merges it).              */
+dd_status dd_insert_vertex_dup(dd_tri *t, uint32_t v, uint32_t start, uint32_t *dup);
+
+/* Reorders ids[0..n) (ids of points pts[3 id..]; ascending when brio) along
+ * the Hilbert curve of their bounding box, in BRIO rounds (smallest
+ * first, a round drawn from a hash of the id) when brio, else in one.
+ * Stable.  Cost O(n) (a radix sort; O(n log n) below 2048 points), 16n
+ * bytes of scratch plus 128 KiB from 2048 points on.  DD_ERR_NOMEM.   */
+dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int brio);
+
+/* first[i] = the smallest i' holding the same point as point i of
+ * pts[0..3n) (with w not NULL, the same weighted point); writes the kept
+ * ones (first[i] == i, ascending) to ids[0..*nkept).  O(n) expected, 16
+ * bytes a point of scratch; DD_ERR_NOMEM with t's message.             */
+dd_status dd_dedup_points(dd_tri *t, const double *pts, const double *w, uint32_t n, uint32_t *first,
+                          uint32_t *ids, uint32_t *nkept);
 
 /* ---- regular triangulations (regular.c; DESIGN 12) ----------------------- */
 
