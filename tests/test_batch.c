@@ -301,7 +301,7 @@ static void test_insert_many(void)
     insert_many_case("molecule-points", mol.p, mol.n / 3, mol.n - mol.n / 3, 0, 0);
     for (int keep = 1; keep >= 0; keep--) {
         insert_many_weighted("molecule", &mol, mol.n / 3, keep);
-        wset g = gen_grid(9, 300, 1, 7);
+        wset g = gen_grid(9, 300, 0, 7);
         insert_many_weighted("wgrid", &g, 200, keep);
         ws_free(&g);
         wset u = gen_uniform(4000, 3.0, 8);
