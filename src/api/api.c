@@ -590,7 +590,7 @@ static dd_status insert_point(dd_tri *t, const double p[3], dd_cell_id hint, uin
     double old[3];                                   /* a reused slot's point, kept */
     memcpy(old, t->xyz + 3 * (size_t)v, sizeof old);
     memcpy(t->xyz + 3 * (size_t)v, p, sizeof old);
-    s = dd_insert_vertex_at(t, v, start);
+    s = hint != -1 ? dd_insert_vertex_from(t, v, start) : dd_insert_vertex_at(t, v, start);
     if (s != DD_OK) {                                /* nothing changes */
         memcpy(t->xyz + 3 * (size_t)v, old, sizeof old);
         if (reused) (void)dd_vec_push(&t->vfree, v);

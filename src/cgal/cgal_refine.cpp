@@ -20,6 +20,7 @@
 #include <CGAL/Triangulation_data_structure_3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cstdlib>
 #include <iterator>
@@ -59,6 +60,7 @@ struct Refiner {
     Dt dt;
     uint32_t next = 0;
     uint64_t gen = 0;
+    double core = 0;      /* seconds in find_conflicts + insert_in_hole */
     std::priority_queue<Entry, std::vector<Entry>, Later> queue;
     std::vector<Cell> hole;
     std::vector<Facet> bound, outside;
@@ -90,6 +92,7 @@ struct Refiner {
     int insert(const Entry &e, const double lo[3], const double hi[3], dd_cgalr_rule rule)
     {
         const Point p(e.p[0], e.p[1], e.p[2]);
+        const auto t0 = std::chrono::steady_clock::now();
         Cell c = e.c;
         if (dt.side_of_sphere(c, p) != CGAL::ON_BOUNDED_SIDE) {
             Dt::Locate_type lt;
@@ -105,6 +108,7 @@ struct Refiner {
         for (Cell h : hole) h->info() = 0;
         Dt::Vertex_handle v = dt.insert_in_hole(p, hole.begin(), hole.end(), bound[0].first, bound[0].second);
         v->info() = next++;
+        core += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         for (const Facet &f : outside) consider(f.first->neighbor(f.second), lo, hi, rule);
         return 1;
     }
@@ -137,6 +141,10 @@ dd_cgalr *dd_cgalr_build(const double *xyz, uint32_t n)
 void dd_cgalr_free(dd_cgalr *g)
 {
     delete g;
+}
+double dd_cgalr_core_seconds(const dd_cgalr *g)
+{
+    return g->r.core;
 }
 
 int dd_cgalr_refine(dd_cgalr *g, uint32_t k, const double lo[3], const double hi[3], dd_cgalr_rule rule,

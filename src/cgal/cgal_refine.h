@@ -35,6 +35,9 @@ void dd_cgalr_free(dd_cgalr *g);
  * new points numbered n, n + 1, ...; *done: how many were inserted.    */
 int dd_cgalr_refine(dd_cgalr *g, uint32_t k, const double lo[3], const double hi[3], dd_cgalr_rule rule,
                     uint32_t *done);
+/* Seconds the loop spent in the triangulation's part: the location of a
+ * point not in conflict with its cell, find_conflicts, insert_in_hole. */
+double dd_cgalr_core_seconds(const dd_cgalr *g);
 /* Canonical form (as dd_canonical): malloc'd, the caller frees.         */
 int dd_cgalr_canonical(const dd_cgalr *g, int32_t **tets, size_t *ntets);
 

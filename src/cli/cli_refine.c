@@ -43,6 +43,9 @@ typedef struct refiner {
     size_t capstamp;
     double *pts;
     size_t cappts;
+    int32_t *verts;       /* the new cells' vertices, 4 a cell */
+    size_t capverts;
+    double core;          /* seconds in dd_insert_from + reading new cells */
 } refiner;
 
 static int grow(void *pp, size_t *cap, size_t need, size_t size)
@@ -93,15 +96,18 @@ static entry heap_pop(refiner *r)
 }
 
 /* Stamps and queues the cells the last edit made. */
-static int queue_created(refiner *r)
+static int queue_created(refiner *r, double t0)
 {
     const dd_cell_id *cells;
     size_t n;
     if (dd_created_cells(r->t, &cells, &n) != DD_OK) return -1;
+    if (grow(&r->verts, &r->capverts, 4 * n, sizeof *r->verts)) return -1;
+    if (dd_cells_vertices(r->t, cells, n, r->verts) != DD_OK) return -1;
+    r->core += now_seconds() - t0;
     if (grow(&r->stamp, &r->capstamp, (size_t)dd_cell_end(r->t), sizeof *r->stamp)) return -1;
     for (size_t k = 0; k < n; k++) {
         entry e;
-        if (dd_cell(r->t, cells[k], e.v, NULL) != DD_OK) return -1;
+        memcpy(e.v, r->verts + 4 * k, sizeof e.v);
         r->stamp[cells[k]] = ++r->gen;
         if (e.v[0] < 0 || e.v[1] < 0 || e.v[2] < 0 || e.v[3] < 0) continue;
         for (int i = 1; i < 4; i++)                                /* ascending indices */
@@ -125,12 +131,14 @@ static int queue_created(refiner *r)
 static int refine_ours(refiner *r, uint32_t k, uint32_t *done)
 {
     *done = 0;
-    if (queue_created(r)) return -1;
+    if (queue_created(r, now_seconds())) return -1;
+    r->core = 0;
     while (*done < k && r->nheap > 0) {
         const entry e = heap_pop(r);
         if (!dd_cell_alive(r->t, e.c) || r->stamp[e.c] != e.stamp) continue;
         uint32_t index;
-        const dd_status s = dd_insert(r->t, e.p, &index);
+        const double t0 = now_seconds();
+        const dd_status s = dd_insert_from(r->t, e.p, e.c, &index);
         if (s == DD_ERR_DUPLICATE) continue;
         if (s != DD_OK) {
             fprintf(stderr, "dtdel refine-bench: %s\n", dd_errmsg(r->t));
@@ -139,7 +147,7 @@ static int refine_ours(refiner *r, uint32_t k, uint32_t *done)
         if (grow(&r->pts, &r->cappts, 3 * ((size_t)index + 1), sizeof *r->pts)) return -1;
         memcpy(r->pts + 3 * (size_t)index, e.p, sizeof e.p);
         ++*done;
-        if (queue_created(r)) return -1;
+        if (queue_created(r, t0)) return -1;
     }
     return 0;
 }
@@ -176,15 +184,20 @@ int cmd_refine_bench(int argc, char **argv)
     int same = !rc && dd_canonical(r.t, &a, &na) == DD_OK && !dd_cgalr_canonical(g, &b, &nb) &&
                ours_done == cgal_done && same_canonical(a, na, b, nb);
     const int mismatches = !same;
+    const double core_c = dd_cgalr_core_seconds(g);
     printf("refine: %u uniform points, %u circumcentres of the largest cell inserted (CGAL %u); "
-           "dtdel %.2f us an insertion (queue fed by dd_created_cells), CGAL find_conflicts + insert_in_hole "
-           "%.2f us (%.2fx); hashes %016llx / %016llx; %d mismatches\n",
+           "dtdel %.2f us an insertion (dd_insert_from the queued cell, queue fed by dd_created_cells), "
+           "CGAL find_conflicts + insert_in_hole %.2f us (%.2fx); triangulation part "
+           "(dd_insert_from + dd_cells_vertices vs find_conflicts + insert_in_hole) %.2f us vs %.2f us (%.2fx); "
+           "hashes %016llx / %016llx; %d mismatches\n",
            np, ours_done, cgal_done, 1e6 * (t1 - t0) / (ours_done ? ours_done : 1),
            1e6 * (t2 - t1) / (cgal_done ? cgal_done : 1), (t2 - t1) / (t1 - t0),
+           1e6 * r.core / (ours_done ? ours_done : 1), 1e6 * core_c / (cgal_done ? cgal_done : 1),
+           core_c / (r.core > 0 ? r.core : 1e-9),
            (unsigned long long)dd_canonical_hash(a, na), (unsigned long long)dd_canonical_hash(b, nb), mismatches);
     dd_mfree(a), dd_mfree(b);
     dd_cgalr_free(g);
     dd_free(r.t);
-    dd_mfree(r.heap), dd_mfree(r.stamp), dd_mfree(r.pts), dd_mfree(xyz);
+    dd_mfree(r.heap), dd_mfree(r.stamp), dd_mfree(r.pts), dd_mfree(r.verts), dd_mfree(xyz);
     return rc ? EXIT_INPUT : mismatches ? EXIT_INPUT : 0;
 }

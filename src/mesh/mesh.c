@@ -807,14 +807,27 @@ void dd_clear_cells(dd_tri *t)
 /* dd_insert_vertex, dd_insert_vertex_at (from `start`) and dd_build_insert
  * (ahead = 1: the conflict search fetches cells ahead): locate, refuse a
  * duplicate, find the conflict region, reserve, fill the star.          */
-static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead, uint32_t *dup)
+/* Whether finite cell c's open circumsphere holds p, exactly: then p is
+ * in conflict with c and no vertex (none is inside a Delaunay sphere).  */
+static int strictly_in_sphere(dd_tri *t, uint32_t c, const double *p)
+{
+    if (dd_is_outer_cell(t, c)) return 0;
+    const uint32_t *w = dd_tv(t, c);
+    return dd_insphere(&t->pred, dd_pt(t, w[0]), dd_pt(t, w[1]), dd_pt(t, w[2]), dd_pt(t, w[3]), p) > 0;
+}
+
+static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, const int ahead, uint32_t *dup,
+                                      const int in_conflict)
 {
     const double *p = dd_pt(t, v);
     if (start == DD_NONE || dd_tv(t, start)[0] == DD_DEAD) start = t->inf_cell;
     uint32_t c0 = DD_NONE;
-    dd_status s = dd_walk_locate(t, p, start, &c0);
+    dd_status s = DD_OK;
+    const int direct = in_conflict && strictly_in_sphere(t, start, p);   /* no walk, no duplicate */
+    if (direct) c0 = start;
+    else s = dd_walk_locate(t, p, start, &c0);
     if (s != DD_OK) return s;
-    if (!dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
+    if (!direct && !dd_is_outer_cell(t, c0))            /* p in the closed cell c0 */
         for (uint32_t k = 0; k < 4; k++) {
             uint32_t w = dd_tv(t, c0)[k];
             if (dd_lex_cmp(dd_pt(t, w), p) != 0) continue;
@@ -834,22 +847,27 @@ static inline dd_status insert_vertex(dd_tri *t, uint32_t v, uint32_t start, con
 
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, t->hint, 0, NULL);
+    return insert_vertex(t, v, t->hint, 0, NULL, 0);
 }
 
 dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start)
 {
-    return insert_vertex(t, v, start, 1, NULL);
+    return insert_vertex(t, v, start, 1, NULL, 0);
+}
+
+dd_status dd_insert_vertex_from(dd_tri *t, uint32_t v, uint32_t hint)
+{
+    return insert_vertex(t, v, hint, 1, NULL, 1);
 }
 
 dd_status dd_insert_vertex_dup(dd_tri *t, uint32_t v, uint32_t start, uint32_t *dup)
 {
-    return insert_vertex(t, v, start, 1, dup);
+    return insert_vertex(t, v, start, 1, dup, 0);
 }
 
 dd_status dd_build_insert(dd_tri *t, uint32_t v)
 {
-    return insert_vertex(t, v, t->hint, 1, NULL);
+    return insert_vertex(t, v, t->hint, 1, NULL, 0);
 }
 
 /* ---- vertex storage ------------------------------------------------------- */

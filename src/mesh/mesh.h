@@ -502,6 +502,9 @@ void dd_fill_star(dd_tri *t, uint32_t v);
  * (dd_insert_vertex) or at cell `start` (dd_insert_vertex_at).           */
 dd_status dd_insert_vertex(dd_tri *t, uint32_t v);
 dd_status dd_insert_vertex_at(dd_tri *t, uint32_t v, uint32_t start);
+/* dd_insert_vertex_at from a caller's cell: when p is strictly inside
+ * hint's circumsphere the conflict search starts there, with no walk. */
+dd_status dd_insert_vertex_from(dd_tri *t, uint32_t v, uint32_t hint);
 /* dd_insert_vertex_at, the conflict cells fetched ahead, refusing a
  * duplicate quietly: DD_ERR_DUPLICATE with no message, *dup the vertex
  * whose point v's is, nothing changed (a batch merges it).              */
