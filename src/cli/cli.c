@@ -163,10 +163,11 @@ int build_file(const char *cmd, const char *path, dd_tri **t)
     return 0;
 }
 
-/* `tets FILE --out OUT`: the mesh file instead of the canonical form. */
-static int write_mesh_file(dd_tri *t, const char *out)
+/* `tets FILE --out OUT [--ascii]`: the mesh file instead of the
+ * canonical form.                                                       */
+static int write_mesh_file(dd_tri *t, const char *out, unsigned wflags)
 {
-    const dd_status s = dd_write(t, out);
+    const dd_status s = dd_write_ex(t, out, wflags);
     dd_free(t);
     if (s == DD_OK) return 0;
     if (s == DD_ERR_UNKNOWN_FORMAT) {
@@ -181,11 +182,13 @@ static int cmd_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("tets");
     const char *file = NULL, *out = NULL;
-    unsigned flags = 0;
+    unsigned flags = 0, wflags = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--out")) {
             if (++i >= argc) return usage_error("tets", "--out needs a file name%s", "");
             out = argv[i];
+        } else if (!strcmp(argv[i], "--ascii")) {
+            wflags |= DD_WRITE_ASCII;
         } else if (!strcmp(argv[i], "--discard-hidden")) {
             flags |= DD_DISCARD_HIDDEN;
         } else if (!file) {
@@ -195,13 +198,14 @@ static int cmd_tets(int argc, char **argv)
         }
     }
     if (!file) return usage_error("tets", "expected one FILE%s", "");
+    if (wflags && !out) return usage_error("tets", "--ascii needs --out%s", "");
     dd_tri *t;
     int rc = build_weighted_file("tets", file, flags, &t);
     if (rc) return rc;
     if (dd_num_duplicates(t))
         fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
                 dd_num_duplicates(t));
-    if (out) return write_mesh_file(t, out);
+    if (out) return write_mesh_file(t, out, wflags);
     int32_t *tets;
     size_t n;
     if (dd_canonical(t, &tets, &n) != DD_OK) {
@@ -361,7 +365,7 @@ static const command commands[] = {
      "hidden), protecting (Mesh_3-like protecting balls on the cube's edges),\n"
      "molecule (atoms, weight = radius^2), wgrid (integer grid and weights:\n"
      "power ties, equal positions), wmoment, whelix.", cmd_gen},
-    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh] [--discard-hidden]",
+    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh [--ascii]] [--discard-hidden]",
      "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
      "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
      "ascending, -1 for the infinite vertex, lines sorted.  FILE is read by\n"
@@ -371,8 +375,9 @@ static const command commands[] = {
      "0-based order of the points in the file.\n"
      "--out OUT: instead (nothing on stdout), the finite tetrahedra as a mesh\n"
      "file, by OUT's extension: .vtu (VTK XML, ParaView; point data\n"
-     "'input_index') or .mesh (Medit, Gmsh); points in input index order,\n"
-     "coordinates exact (dd_write).  Readable by meshio.\n"
+     "'input_index'; binary, appended raw data) or .mesh (Medit, Gmsh); points\n"
+     "in input index order, coordinates exact (dd_write).  Readable by meshio.\n"
+     "--ascii: the .vtu's data arrays in ASCII (as a name ending .ascii.vtu).\n"
      "Weighted points: .xyzw (x y z w per line), .xyzr (x y z radius, weight =\n"
      "radius^2), .ply with a vertex property 'weight' or 'radius'; then the\n"
      "regular triangulation (dd_create_ex), hidden points kept, or forgotten\n"
