@@ -174,6 +174,11 @@ ratio='^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'
 bench_ok build-bench "$ratio" 3000 --reps 2
 bench_ok build-bench "$ratio" 2000 --dataset helix --reps 1
 bench_ok build-bench "$ratio" 1000 --dataset grid --reps 1
+out=$("$DTDEL" build-bench 1000 --reps 1 --write "$tmp/bb.vtu" 2>&1); rc=$?
+wline=$(echo "$out" | grep -E "^write: $tmp/bb.vtu \(dd_write\) of [0-9]+ finite cells: [0-9]+ bytes \([0-9.]+ MB\) in [0-9.]+ s$")
+if [ $rc -eq 0 ] && [ -n "$wline" ] && [ "$(echo "$wline" | sed 's/.*cells: \([0-9]*\) bytes.*/\1/')" = "$(wc -c <"$tmp/bb.vtu")" ]
+then echo "ok cli/build-bench-write"; else echo "FAIL cli/build-bench-write: rc $rc: $out"; fi
+expect build-bench-write-unwritable 1 "cannot write" "$DTDEL" build-bench 100 --reps 1 --write "$tmp/no/such/dir/m.vtu"
 expect build-bench-reps 2 "reps needs an integer from 1 to 9" "$DTDEL" build-bench 100 --reps 10
 expect build-bench-unknown-dataset 2 "dtdel build-bench: unknown dataset" "$DTDEL" build-bench 100 --dataset nosuchset
 expect build-bench-seed 2 "seed needs a non-negative integer" "$DTDEL" build-bench 100 --seed x
