@@ -86,7 +86,8 @@ DATA_OBJ_K = $(DATA_SRC:%.c=$(K)/obj/%.o)
 TESTS_R = $(TEST_C:tests/%.c=$(B)/tests/%)
 TESTS_A = $(TEST_C:tests/%.c=$(A)/tests/%)
 
-.PHONY: all deps test test-release test-asan bench bench-quick plots install clean print-goals
+.PHONY: all deps test test-release test-asan bench bench-quick plots install clean print-goals \
+	print-cflags-contract print-cflags-release
 .DEFAULT_GOAL := all
 
 all: deps $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc
@@ -218,6 +219,12 @@ test: deps
 # checks that each waits for the deps stamp).
 print-goals:
 	@echo $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
+
+# The flags of the contract and release builds (tests/test_fpeval.sh).
+print-cflags-contract:
+	@echo $(CFLAGS_CT)
+print-cflags-release:
+	@echo $(CFLAGS_R)
 
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.

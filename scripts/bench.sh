@@ -13,7 +13,8 @@
 #                                  bench-table markers), from step 3's
 #                                  OUT/readme-table.md: full run only
 #   (2b. $DTDEL bench --reps 1 on uniform, sphere, bunny -> OUT/cold/)
-#   (2c. $DTDEL build-bench -> OUT/build.txt, seq-bench -> OUT/sequence.txt,
+#   (2c. $DTDEL build-bench -> OUT/build.txt (with dd_write's .vtu of the
+#        same triangulation: size, time), seq-bench -> OUT/sequence.txt,
 #        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt,
 #        regular-bench -> OUT/regular.txt)
 #   (2d. weighted points, hidden points kept (issue 44): $DTDEL wbench ->
@@ -74,8 +75,11 @@ for ds in uniform sphere bunny; do
     "$DTDEL" bench --mode "$mode" --scale "$scale" --reps 1 --dataset "$ds" --out $out/cold || rc=$?
 done
 "$SUMMARIZE" $out/cold $out/cold/*.csv
+# and that triangulation written by dd_write as a binary .vtu, once: the
+# file's size and the time (summarize's notes); the file is removed
 n=$(by_mode 1000000 200000 2000) nh=$(by_mode 16000 4000 500)
-"$DTDEL" build-bench "$n" --reps 5 >$out/build.txt || rc=$?
+"$DTDEL" build-bench "$n" --reps 5 --write $out/build-write.vtu >$out/build.txt || rc=$?
+rm -f $out/build-write.vtu
 # and on a curve, where point location is most of the work
 echo >>$out/build.txt
 "$DTDEL" build-bench "$nh" --dataset helix >>$out/build.txt || rc=$?

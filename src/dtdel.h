@@ -14,8 +14,8 @@
  * dd_locate, dd_nearest_vertex, dd_canonical, dd_local_canonical,
  * dd_check, dd_check_msg, the cell handles' calls (dd_cell_end,
  * dd_cell_alive, dd_cell, dd_locate_from, dd_created_cells), dd_write,
- * dd_version, the weighted reads (dd_is_weighted, dd_weight, dd_is_hidden,
- * dd_hidden) and every counter or getter (dd_num_*, dd_alias,
+ * dd_write_ex, dd_version, the weighted reads (dd_is_weighted, dd_weight,
+ * dd_is_hidden, dd_hidden) and every counter or getter (dd_num_*, dd_alias,
  * dd_is_vertex, dd_memory_bytes, dd_errmsg, and dtdel_stats.h's
  * dd_last_delete_stats and dd_get_counters).  Their scratch belongs to the
  * call, not to the triangulation, so any number of threads may call them
@@ -503,17 +503,33 @@ dd_status dd_cells_vertices(const dd_tri *t, const dd_cell_id *ids, size_t n, in
 /* ---- mesh files ------------------------------------------------------------ */
 
 /* Writes the finite cells and the vertices to path, the format chosen by
- * the extension: ".vtu", VTK's XML UnstructuredGrid (ASCII; VTK_TETRA
- * cells; point data "input_index", Int32, the input index of each
- * point), for ParaView and meshio; ".mesh", Medit's (MeshVersionFormatted
- * 2, Dimension 3, Vertices with reference 0, Tetrahedra 1-based with
- * reference 0), for Gmsh, Medit and meshio.  Points are the live
- * vertices, in input index order; coordinates printed exactly (%.17g).
- * Each tetrahedron (a, b, c, d) has (b - a) x (c - a) . (d - a) > 0, the
- * positive volume both formats expect.  DD_ERR_UNKNOWN_FORMAT for
- * another extension, DD_ERR_IO if the file cannot be written (a partial
- * file may be left), DD_ERR_NOMEM.  O(cells).                          */
+ * the extension: ".vtu", VTK's XML UnstructuredGrid (VTK_TETRA cells;
+ * point data "input_index", the input index of each point), for ParaView,
+ * VTK and meshio; ".mesh", Medit's (MeshVersionFormatted 2, Dimension 3,
+ * Vertices with reference 0, Tetrahedra 1-based with reference 0), for
+ * Gmsh, Medit and meshio.  A .vtu is binary: appended raw data
+ * (header_type UInt64, the machine's byte order), points Float64, the
+ * integers Int32 (Int64 when a value passes 2^31 - 1); a name ending in
+ * ".ascii.vtu" writes ASCII data arrays instead (integers Int32 and
+ * Int64, coordinates printed %.17g), as dd_write_ex's DD_WRITE_ASCII
+ * does.  Points are the live vertices, in input index order, coordinates
+ * exact in both.  Each tetrahedron (a, b, c, d) has
+ * (b - a) x (c - a) . (d - a) > 0, the positive volume both formats
+ * expect.  DD_ERR_UNKNOWN_FORMAT for another extension, DD_ERR_IO if the
+ * file cannot be written (a partial file may be left), DD_ERR_NOMEM (no
+ * file written).  O(cells).                                            */
 dd_status dd_write(const dd_tri *t, const char *path);
+
+/* Flags of dd_write_ex. */
+enum {
+    /* A .vtu with ASCII data arrays, whatever its name (no effect on a
+     * .mesh, which is text).                                           */
+    DD_WRITE_ASCII = 1u << 0
+};
+
+/* dd_write with options: flags is 0 or DD_WRITE_ASCII (any other bit:
+ * DD_ERR_ARG).  dd_write is dd_write_ex(t, path, 0).                   */
+dd_status dd_write_ex(const dd_tri *t, const char *path, unsigned flags);
 
 /* The strategies, in registry order (i = 0, 1, ... until NULL). */
 const char *dd_variant_name(size_t i);

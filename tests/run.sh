@@ -64,6 +64,7 @@ job "release layers" sh scripts/layers.sh "$REL/obj"
 job "release layers-test" sh tests/test_layers.sh "$REL/obj"
 job "release alloc" sh tests/test_alloc.sh
 job "release make" sh tests/test_make.sh
+job "release fpeval" sh tests/test_fpeval.sh
 job "release bench-quick" sh tests/test_bench_quick.sh "$REL"
 job "release cli" sh tests/test_cli.sh "$REL/dtdel"
 job "release write" sh tests/test_write.sh "$REL/dtdel"

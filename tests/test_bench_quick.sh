@@ -39,6 +39,10 @@ nw=$(grep -cE '^(wreweight|wmove|wdelete-set 10%|wdelete-set 90%):.*(; 0 mismatc
 [ "$nw" = 4 ] && ok weighted-edits || bad weighted-edits "wedits.txt: $(head -c 400 "$q/wedits.txt" 2>/dev/null)"
 grep -q "^## All weighted datasets" "$q/summary.md" 2>/dev/null && grep -q "^| weighted edits" "$q/readme-table.md" &&
     ok weighted-summary || bad weighted-summary "no weighted rows in summary.md or readme-table.md"
+# the mesh file of build-bench --write: its size and time in the notes, the file gone
+grep -q "Written by \`dd_write\` as a binary .vtu, the triangulation of .* MB, in .* s\." "$q/readme-table.md" &&
+    [ ! -e "$q/build-write.vtu" ] && ok write-note ||
+    bad write-note "no dd_write note in readme-table.md, or results/quick/build-write.vtu left: $(grep write "$q/build.txt")"
 grep -q "results/quick/summary.md" "$tmp/err" && ok says-where ||
     bad says-where "the run does not say where its results are"
 exit $fail

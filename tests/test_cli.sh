@@ -174,6 +174,11 @@ ratio='^speed ratio dtdel/cgal: [0-9]+\.[0-9]+$'
 bench_ok build-bench "$ratio" 3000 --reps 2
 bench_ok build-bench "$ratio" 2000 --dataset helix --reps 1
 bench_ok build-bench "$ratio" 1000 --dataset grid --reps 1
+out=$("$DTDEL" build-bench 1000 --reps 1 --write "$tmp/bb.vtu" 2>&1); rc=$?
+wline=$(echo "$out" | grep -E "^write: $tmp/bb.vtu \(dd_write\) of [0-9]+ finite cells: [0-9]+ bytes \([0-9.]+ MB\) in [0-9.]+ s$")
+if [ $rc -eq 0 ] && [ -n "$wline" ] && [ "$(echo "$wline" | sed 's/.*cells: \([0-9]*\) bytes.*/\1/')" = "$(wc -c <"$tmp/bb.vtu")" ]
+then echo "ok cli/build-bench-write"; else echo "FAIL cli/build-bench-write: rc $rc: $out"; fi
+expect build-bench-write-unwritable 1 "cannot write" "$DTDEL" build-bench 100 --reps 1 --write "$tmp/no/such/dir/m.vtu"
 expect build-bench-reps 2 "reps needs an integer from 1 to 9" "$DTDEL" build-bench 100 --reps 10
 expect build-bench-unknown-dataset 2 "dtdel build-bench: unknown dataset" "$DTDEL" build-bench 100 --dataset nosuchset
 expect build-bench-seed 2 "seed needs a non-negative integer" "$DTDEL" build-bench 100 --seed x
@@ -290,6 +295,12 @@ expect tets-obj-inf 1 "inf.obj:5: vertex 3: coordinate z is infinite" "$DTDEL" t
 expect tets-out-vtu 0 "" "$DTDEL" tets "$tmp/withdup.xyz" --out "$tmp/m.vtu"
 if [ -s "$tmp/m.vtu" ] && [ ! -s "$tmp/out" ] && grep -q 'Name="input_index"' "$tmp/m.vtu"; then echo "ok cli/tets-out-vtu-written"
 else echo "FAIL cli/tets-out-vtu-written: no .vtu with input_index, or something on stdout"; fi
+grep -q '<AppendedData encoding="raw">' "$tmp/m.vtu" && ! grep -q 'format="ascii"' "$tmp/m.vtu" &&
+    echo "ok cli/tets-out-vtu-binary" || echo "FAIL cli/tets-out-vtu-binary: the .vtu is not appended raw data"
+expect tets-out-vtu-ascii 0 "" "$DTDEL" tets "$tmp/withdup.xyz" --out "$tmp/m.vtu" --ascii
+grep -q 'format="ascii"' "$tmp/m.vtu" && ! grep -q 'AppendedData' "$tmp/m.vtu" &&
+    echo "ok cli/tets-out-vtu-ascii-written" || echo "FAIL cli/tets-out-vtu-ascii-written: --ascii wrote no ASCII .vtu"
+expect tets-ascii-no-out 2 "ascii needs --out" "$DTDEL" tets "$tmp/withdup.xyz" --ascii
 expect tets-out-mesh 0 "" "$DTDEL" tets "$tmp/withdup.xyz" --out "$tmp/m.mesh"
 if head -n 1 "$tmp/m.mesh" | grep -q "MeshVersionFormatted 2" && grep -q "^Tetrahedra" "$tmp/m.mesh" && tail -n 1 "$tmp/m.mesh" | grep -q "^End"
 then echo "ok cli/tets-out-mesh-written"; else echo "FAIL cli/tets-out-mesh-written: not a Medit file"; fi
@@ -334,6 +345,7 @@ else
     nomem delete "$DTDEL" delete "$tmp/u30.xyz" --vertex 3,7,12
     nomem delete-set "$DTDEL" delete "$tmp/u30.xyz" --vertex 3,7,12 --set
     nomem tets-out "$DTDEL" tets "$tmp/u30.xyz" --out "$tmp/nomem.vtu"
+    nomem tets-out-ascii "$DTDEL" tets "$tmp/u30.xyz" --out "$tmp/nomem.vtu" --ascii
     nomem locate "$DTDEL" locate "$tmp/u30.xyz" 0.5 0.25 0.5
     nomem move "$DTDEL" move "$tmp/u30.xyz" --vertex 4 --to 0.5,0.25,0.5
 fi

@@ -18,7 +18,8 @@
  * scalar scans); dd_delete_set by both courses; dd_insert inside and
  * outside the hull; dd_reinsert; dd_move by the relocation filter, by
  * flips and by re-insertion; and the reads that allocate (dd_canonical,
- * dd_local_canonical, dd_cells, dd_nearest_vertex, dd_write).
+ * dd_local_canonical, dd_cells, dd_nearest_vertex, dd_write: a refused
+ * allocation leaves no file).
  *
  * GMP aborts when it cannot allocate, so no operation may make it
  * allocate after creation: the test installs GMP memory functions that
@@ -413,8 +414,10 @@ static dd_status do_read(const dd_tri *t, read_kind r, const char *path, int32_t
         if (s == DD_OK) *out = malloc(4 * sizeof **out), (*out)[0] = (int32_t)v, *n = 1;
         return s;
     }
-    case RD_WRITE: {
+    case RD_WRITE: {                    /* DD_ERR_NOMEM leaves no file */
+        unlink(path);
         s = dd_write(t, path);
+        if (s == DD_ERR_NOMEM && access(path, F_OK) == 0) return DD_ERR_INTERNAL;
         if (s == DD_OK) {
             FILE *f = fopen(path, "rb");
             if (!f) return DD_ERR_IO;

@@ -112,6 +112,11 @@ def test_bindings():
     if m:
         val = int(m.group(1), 0) << int(m.group(3) or 0)
         check("DD_DISCARD_HIDDEN value", val == dtdel.DISCARD_HIDDEN, m.group(0))
+    m = re.search(r"\bDD_WRITE_ASCII\b\s*=?\s*\(?\s*([0-9xXa-fA-F]+)[uU]?\s*(<<\s*(\d+))?", text)
+    check("DD_WRITE_ASCII in the header", m is not None)
+    if m:
+        val = int(m.group(1), 0) << int(m.group(3) or 0)
+        check("DD_WRITE_ASCII value", val == dtdel.WRITE_ASCII, m.group(0))
     ver = [re.search(r"#define\s+DD_VERSION_%s\s+(\d+)" % k, text) for k in ("MAJOR", "MINOR", "PATCH")]
     if all(ver):
         want = ".".join(m.group(1) for m in ver)
@@ -350,6 +355,19 @@ def test_write():
               np.array_equal(sort_rows(t.vertices()[tets]), finite), "%d tetrahedra" % m)
         raises("write an unknown extension", "DD_ERR_UNKNOWN_FORMAT", t.write,
                os.path.join(d, "m.unknown"))
+        # a .vtu is binary (appended raw data), ASCII on request
+        data = {}
+        for name, kw in (("m.vtu", {}), ("a.vtu", {"ascii": True}), ("m.ascii.vtu", {})):
+            t.write(os.path.join(d, name), **kw)
+            data[name] = open(os.path.join(d, name), "rb").read()
+        check("write .vtu binary", b'<AppendedData encoding="raw">' in data["m.vtu"]
+              and b'format="ascii"' not in data["m.vtu"], "")
+        check("write .vtu ascii=True", b'format="ascii"' in data["a.vtu"]
+              and b"AppendedData" not in data["a.vtu"], "")
+        check("write .ascii.vtu as ascii=True", data["m.ascii.vtu"] == data["a.vtu"], "")
+        code = _lib.lib.dd_write_ex(t._h, os.path.join(d, "b.vtu").encode(), 2)
+        check("write_ex an unknown flag", dtdel.STATUS_NAMES[code] == "DD_ERR_ARG"
+              and not os.path.exists(os.path.join(d, "b.vtu")), dtdel.STATUS_NAMES[code])
 
 
 def test_stable_indices():

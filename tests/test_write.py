@@ -1,14 +1,17 @@
 """test_write.py -- dd_write's files read back by real readers.
 
-    /usr/bin/python3 tests/test_write.py NAME POINTS.xyz CANON.txt OUT.vtu OUT.mesh
+    /usr/bin/python3 tests/test_write.py NAME POINTS.xyz CANON.txt OUT.vtu OUT.ascii.vtu OUT.mesh
 
-CANON.txt is `dtdel tets POINTS.xyz` (the canonical form), OUT.vtu and
-OUT.mesh are `dtdel tets POINTS.xyz --out ...`.  Both files are read with
-meshio, the .vtu also with VTK's own XML reader; each must give the live
-vertices (in input index order, coordinates exact), the finite cells of
-the canonical form, and every tetrahedron with positive volume: exactly
-((b - a) x (c - a)) . (d - a) > 0 in rationals, and by VTK's
-vtkTetra.ComputeVolume.  Prints "ok NAME" / "FAIL NAME: why" lines.
+CANON.txt is `dtdel tets POINTS.xyz` (the canonical form), OUT.vtu,
+OUT.ascii.vtu and OUT.mesh are `dtdel tets POINTS.xyz --out ...`: the
+binary .vtu (appended raw data, UInt64 headers) and the ASCII one.  Each
+.vtu is read with meshio and with VTK's own XML reader, the .mesh with
+meshio; each must give the live vertices (in input index order,
+coordinates exact), the finite cells of the canonical form, and every
+tetrahedron with positive volume: exactly ((b - a) x (c - a)) . (d - a) >
+0 in rationals, and by VTK's vtkTetra.ComputeVolume.  The binary file
+must hold no ASCII data array and the ASCII file no appended data.
+Prints "ok NAME" / "FAIL NAME: why" lines.
 """
 import sys
 from fractions import Fraction
@@ -65,24 +68,32 @@ def compare(name, points, tets, index, pts, canon):
     check(neg == 0, name + "/orientation-positive", "%d of %d tetrahedra not positive" % (neg, len(tets)))
 
 
-def main():
-    name, xyz, canon_path, vtu, mesh = sys.argv[1:6]
-    pts = read_points(xyz)
-    canon = read_canonical(canon_path)
+def encoding(path):
+    """'binary' for appended raw data and no ASCII array, 'ascii' for ASCII
+    arrays and no appended data, else what the header says."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.find(b"<AppendedData")
+    head = data[:end] if end >= 0 else data
+    if end >= 0 and b'<AppendedData encoding="raw">' in data and b'header_type="UInt64"' in head \
+            and b'format="ascii"' not in head:
+        return "binary"
+    if end < 0 and b'format="ascii"' in head and b'format="appended"' not in head:
+        return "ascii"
+    return "neither (%s)" % head[:200]
+
+
+def check_vtu(name, vtu, want, pts, canon):
+    """The .vtu at vtu, written binary or ascii (want), by meshio and VTK."""
+    enc = encoding(vtu)
+    check(enc == want, name + "/data-" + want, "the file's data arrays are %s" % enc)
     import meshio
     m = meshio.read(vtu)
     tets = [c.data for c in m.cells if c.type == "tetra"]
     others = [c.type for c in m.cells if c.type != "tetra"]
-    check(len(tets) == 1 and not others, name + "/meshio-vtu-tetra-only", "cell blocks %s" % [c.type for c in m.cells])
+    check(len(tets) == 1 and not others, name + "/meshio-tetra-only", "cell blocks %s" % [c.type for c in m.cells])
     index = np.asarray(m.point_data.get("input_index", []))
-    compare(name + "/meshio-vtu", m.points, tets[0] if tets else [], index, pts, canon)
-
-    m = meshio.read(mesh)
-    tets = [c.data for c in m.cells if c.type == "tetra"]
-    live = sorted({i for c in canon for i in c})
-    check(len(tets) == 1, name + "/meshio-mesh-tetra-only", "cell blocks %s" % [c.type for c in m.cells])
-    compare(name + "/meshio-mesh", m.points, tets[0] if tets else [], live if len(m.points) == len(live) else [],
-            pts, canon)
+    compare(name + "/meshio", m.points, tets[0] if tets else [], index, pts, canon)
 
     import vtk
     r = vtk.vtkXMLUnstructuredGridReader()
@@ -101,8 +112,24 @@ def main():
         negvol += vtk.vtkTetra.ComputeVolume(*[points[j] for j in t]) <= 0
     arr = g.GetPointData().GetArray("input_index")
     index = [int(arr.GetValue(k)) for k in range(arr.GetNumberOfTuples())] if arr else []
-    compare(name + "/vtk-vtu", points, tets, index, pts, canon)
+    compare(name + "/vtk", points, tets, index, pts, canon)
     check(negvol == 0, name + "/vtk-volume-positive", "%d tetrahedra with VTK volume <= 0" % negvol)
+
+
+def main():
+    name, xyz, canon_path, vtu, ascii_vtu, mesh = sys.argv[1:7]
+    pts = read_points(xyz)
+    canon = read_canonical(canon_path)
+    check_vtu(name + "/vtu-binary", vtu, "binary", pts, canon)
+    check_vtu(name + "/vtu-ascii", ascii_vtu, "ascii", pts, canon)
+
+    import meshio
+    m = meshio.read(mesh)
+    tets = [c.data for c in m.cells if c.type == "tetra"]
+    live = sorted({i for c in canon for i in c})
+    check(len(tets) == 1, name + "/meshio-mesh-tetra-only", "cell blocks %s" % [c.type for c in m.cells])
+    compare(name + "/meshio-mesh", m.points, tets[0] if tets else [], live if len(m.points) == len(live) else [],
+            pts, canon)
 
 
 if __name__ == "__main__":

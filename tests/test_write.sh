@@ -1,7 +1,9 @@
 #!/bin/sh
 # Mesh files (dd_write through `dtdel tets --out`) read back by real
 # readers: meshio (.vtu, .mesh) and VTK's Python module (.vtu), compared
-# with the canonical form (tests/test_write.py).  Needs Debian's
+# with the canonical form (tests/test_write.py); the .vtu binary (the
+# default) and ASCII (a name ending .ascii.vtu; --ascii writes the same
+# bytes under any name).  Needs Debian's
 # python3-meshio, python3-vtk9 and python3-numpy (scripts/deps.sh), run
 # by /usr/bin/python3.  Prints ok/FAIL lines.
 DTDEL=${1:-build/dtdel}
@@ -21,10 +23,14 @@ fi
 for ds in uniform grid cosphere dups; do
     f=$tmp/$ds.xyz
     if ! "$DTDEL" tets "$f" >"$tmp/$ds.canon" 2>"$tmp/err" || ! "$DTDEL" tets "$f" --out "$tmp/$ds.vtu" 2>>"$tmp/err" ||
+        ! "$DTDEL" tets "$f" --out "$tmp/$ds.ascii.vtu" 2>>"$tmp/err" ||
+        ! "$DTDEL" tets "$f" --out "$tmp/$ds-flag.vtu" --ascii 2>>"$tmp/err" ||
         ! "$DTDEL" tets "$f" --out "$tmp/$ds.mesh" 2>>"$tmp/err"; then
         echo "FAIL write/$ds: dtdel failed: $(head -c 300 "$tmp/err")"
         continue
     fi
-    $PY "$dir/test_write.py" "write/$ds" "$f" "$tmp/$ds.canon" "$tmp/$ds.vtu" "$tmp/$ds.mesh" 2>"$tmp/err" ||
+    cmp -s "$tmp/$ds.ascii.vtu" "$tmp/$ds-flag.vtu" && echo "ok write/$ds/ascii-flag-as-ascii-name" ||
+        echo "FAIL write/$ds/ascii-flag-as-ascii-name: --out X.vtu --ascii and --out X.ascii.vtu differ"
+    $PY "$dir/test_write.py" "write/$ds" "$f" "$tmp/$ds.canon" "$tmp/$ds.vtu" "$tmp/$ds.ascii.vtu" "$tmp/$ds.mesh" 2>"$tmp/err" ||
         echo "FAIL write/$ds: test_write.py exited $?: $(tail -n 3 "$tmp/err")"
 done

@@ -463,10 +463,17 @@ class Triangulation:
             return np.zeros(0, dtype=np.int64)
         return np.ctypeslib.as_array(p, shape=(n.value,)).copy()
 
-    def write(self, path):
-        """Writes the finite cells to a .vtu or .mesh file (dd_write)."""
-        self._check(_need("dd_write")(self._h, str(path).encode()), "write(%r)" % str(path))
+    def write(self, path, ascii=False):
+        """Writes the finite cells to a .vtu or .mesh file (dd_write); a .vtu
+        is binary, or ASCII with ascii=True or a name ending .ascii.vtu
+        (dd_write_ex, DD_WRITE_ASCII)."""
+        if not ascii:
+            self._check(_need("dd_write")(self._h, str(path).encode()), "write(%r)" % str(path))
+        else:
+            self._check(_need("dd_write_ex")(self._h, str(path).encode(), WRITE_ASCII),
+                        "write(%r, ascii=True)" % str(path))
 
 
 STABLE_INDICES = 1   # DD_STABLE_INDICES
 DISCARD_HIDDEN = 2   # DD_DISCARD_HIDDEN
+WRITE_ASCII = 1      # DD_WRITE_ASCII

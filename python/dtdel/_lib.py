@@ -71,6 +71,7 @@ PROTOTYPES = {
     "dd_locate_from": (c_int, [c_void_p, _p_double, c_int64, _p_cell_id]),
     "dd_created_cells": (c_int, [c_void_p, POINTER(_p_cell_id), POINTER(c_size_t)]),
     "dd_write": (c_int, [c_void_p, c_char_p]),
+    "dd_write_ex": (c_int, [c_void_p, c_char_p, c_uint]),
     # issue 43: weighted points (regular triangulations)
     "dd_is_weighted": (c_int, [c_void_p]),
     "dd_weight": (c_int, [c_void_p, c_uint32, _p_double]),

@@ -331,15 +331,46 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
     }
 }
 
+/* "Written by dd_write ..., 169.7 MB in 0.24 s." into note (empty if
+ * none): the mesh file of build.txt's first block (dtdel build-bench
+ * --write, the 10^6-point triangulation in make bench).                 */
+static void write_note(const ctx *c, char *note, size_t size)
+{
+    char path[4096], b[40], b2[40];
+    snprintf(path, sizeof path, "%s/build.txt", c->outdir);
+    *note = 0;
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    char *line = NULL, file[1024];
+    size_t cap = 0;
+    long long n = 0, cells, bytes;
+    double mb, secs;
+    while (!*note && read_line(f, &line, &cap) == 1) {
+        if (sscanf(line, "dataset %*[^,], n = %lld", &n) == 1) continue;
+        if (sscanf(line, "write: %1023s (dd_write) of %lld finite cells: %lld bytes (%lf MB) in %lf s", file, &cells,
+                   &bytes, &mb, &secs) == 5) {
+            const char *dot = strrchr(file, '.');
+            const int ascii = dot && dot - file >= 6 && !strncmp(dot - 6, ".ascii", 6);
+            snprintf(note, size, "Written by `dd_write` as a%s .vtu, the triangulation of %s points (%s finite "
+                                 "cells) is %.1f MB, in %.2f s.", ascii ? "n ASCII" : " binary", fmt_int(n, b),
+                     fmt_int(cells, b2), mb, secs);
+        }
+    }
+    free(line);
+    fclose(f);
+}
+
 /* The rows of OUTDIR/queries.txt, edits.txt, refine.txt and regular.txt
  * as a second table: insertion of new points, locate and nearest vertex
  * against CGAL with and without Fast_location, moves, set deletion,
  * refinement and the regular triangulation's construction and insertion
- * (weighted points), then the churn line; nothing without the files.   */
+ * (weighted points), then one paragraph of notes: the churn line and
+ * the mesh file's size and write time (write_note); nothing without the
+ * files.                                                                */
 static void readme_queries(const ctx *c, FILE *out)
 {
     static const char *const files[4] = {"queries.txt", "edits.txt", "refine.txt", "regular.txt"};
-    char path[4096], churn[512] = "", b[40];
+    char path[4096], churn[512] = "", note[512], b[40];
     int header = 0;
     for (int i = 0; i < 4; i++) {
         snprintf(path, sizeof path, "%s/%s", c->outdir, files[i]);
@@ -355,8 +386,8 @@ static void readme_queries(const ctx *c, FILE *out)
             if (sscanf(line, "churn: %lld live vertices, %lld rounds", &n, &k) == 2 && x &&
                 sscanf(x, "RSS %lf MiB after round 2, %lf MiB after round %lld (%lfx)", &r2, &rl, &last, &rss) == 4)
                 snprintf(churn, sizeof churn,
-                         "\nUnder churn (`dtdel query-bench`: %lld rounds of deleting half of %s vertices and "
-                         "inserting as many), resident memory after the last round is %.2f× that after round 2.\n",
+                         "Under churn (`dtdel query-bench`: %lld rounds of deleting half of %s vertices and "
+                         "inserting as many), resident memory after the last round is %.2f× that after round 2.",
                          k, fmt_int(n, b), rss);
             else if (strchr(line, ':'))
                 readme_extra_row(line, nq, out, &header);
@@ -364,7 +395,8 @@ static void readme_queries(const ctx *c, FILE *out)
         free(line);
         fclose(f);
     }
-    fputs(churn, out);
+    write_note(c, note, sizeof note);
+    if (*churn || *note) fprintf(out, "\n%s%s%s\n", churn, *churn && *note ? " " : "", note);
 }
 int write_readme_table(ctx *c)
 {

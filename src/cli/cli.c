@@ -7,7 +7,8 @@
  *                                    (the regular triangulation for weights)
  *   dtdel cgal-tets FILE             the same computed by CGAL
  *   (hidden, cgal-hidden: cli_regular.c)
- *   dtdel build-bench N [--seed S]   construction speed against CGAL
+ *   dtdel build-bench N [--seed S]   construction speed against CGAL (and
+ *                                    dd_write's, --write F)
  *   dtdel variants                   the deletion strategies and CGAL rows
  *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
  */
@@ -19,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 static const command *find_command(const char *name);
@@ -163,10 +165,11 @@ int build_file(const char *cmd, const char *path, dd_tri **t)
     return 0;
 }
 
-/* `tets FILE --out OUT`: the mesh file instead of the canonical form. */
-static int write_mesh_file(dd_tri *t, const char *out)
+/* `tets FILE --out OUT [--ascii]`: the mesh file instead of the
+ * canonical form.                                                       */
+static int write_mesh_file(dd_tri *t, const char *out, unsigned wflags)
 {
-    const dd_status s = dd_write(t, out);
+    const dd_status s = dd_write_ex(t, out, wflags);
     dd_free(t);
     if (s == DD_OK) return 0;
     if (s == DD_ERR_UNKNOWN_FORMAT) {
@@ -181,11 +184,13 @@ static int cmd_tets(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("tets");
     const char *file = NULL, *out = NULL;
-    unsigned flags = 0;
+    unsigned flags = 0, wflags = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--out")) {
             if (++i >= argc) return usage_error("tets", "--out needs a file name%s", "");
             out = argv[i];
+        } else if (!strcmp(argv[i], "--ascii")) {
+            wflags |= DD_WRITE_ASCII;
         } else if (!strcmp(argv[i], "--discard-hidden")) {
             flags |= DD_DISCARD_HIDDEN;
         } else if (!file) {
@@ -195,13 +200,14 @@ static int cmd_tets(int argc, char **argv)
         }
     }
     if (!file) return usage_error("tets", "expected one FILE%s", "");
+    if (wflags && !out) return usage_error("tets", "--ascii needs --out%s", "");
     dd_tri *t;
     int rc = build_weighted_file("tets", file, flags, &t);
     if (rc) return rc;
     if (dd_num_duplicates(t))
         fprintf(stderr, "dtdel tets: note: %u duplicate points merged into their first occurrence\n",
                 dd_num_duplicates(t));
-    if (out) return write_mesh_file(t, out);
+    if (out) return write_mesh_file(t, out, wflags);
     int32_t *tets;
     size_t n;
     if (dd_canonical(t, &tets, &n) != DD_OK) {
@@ -271,18 +277,40 @@ int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const ch
 
 #define BUILD_MAX_REPS 9
 
+/* `dtdel build-bench --write FILE`: the triangulation written to FILE by
+ * dd_write, timed once; its size and time on one line.                  */
+static int time_write(const dd_tri *t, const char *path)
+{
+    const double t0 = now_seconds();
+    const dd_status s = dd_write(t, path);
+    const double secs = now_seconds() - t0;
+    struct stat st;
+    if (s != DD_OK || stat(path, &st) != 0) {
+        fprintf(stderr, "dtdel build-bench: %s: %s\n", path,
+                s == DD_OK || s == DD_ERR_IO ? "cannot write the file" : dd_status_name(s));
+        return EXIT_INPUT;
+    }
+    printf("write: %s (dd_write) of %zu finite cells: %lld bytes (%.1f MB) in %.3f s\n", path,
+           dd_num_finite_tets(t), (long long)st.st_size, (double)st.st_size / 1e6, secs);
+    return 0;
+}
+
 /* `dtdel build-bench`: each engine builds R times, in turns (dtdel,
  * CGAL, dtdel, ...), so that a slow spell of the machine hits both; the
  * medians are compared, as the deletion bench compares medians, and the
- * last pair of triangulations with each other.                          */
+ * last pair of triangulations with each other; then, with --write, the
+ * last triangulation is written (time_write).                           */
 static int cmd_build_bench(int argc, char **argv)
 {
     if (wants_help(argc, argv)) return print_help("build-bench");
-    const char *dataset = "uniform";
+    const char *dataset = "uniform", *wpath = NULL;
     uint64_t n = 1000000, seed = 1, reps = 3;
     for (int i = 1, rc; i < argc; i++) {
         if (take_dataset_option("build-bench", argc, argv, &i, &dataset, &seed, &rc)) {
             if (rc) return rc;
+        } else if (!strcmp(argv[i], "--write")) {
+            if (++i >= argc) return usage_error("build-bench", "--write needs a file name%s", "");
+            wpath = argv[i];
         } else if (!strcmp(argv[i], "--reps")) {
             if (++i >= argc || parse_u64(argv[i], &reps) || reps < 1 || reps > BUILD_MAX_REPS)
                 return usage_error("build-bench", "--reps needs an integer from 1 to 9%s", "");
@@ -334,9 +362,10 @@ static int cmd_build_bench(int argc, char **argv)
            (double)dd_memory_bytes(t) / (double)dd_num_tets(t));
     printf("identical to CGAL: %s\n", same ? "yes" : "NO");
     dd_cgal_free(c);
+    const int wrc = wpath ? time_write(t, wpath) : 0;
     dd_free(t);
     dd_mfree(xyz);
-    return same ? 0 : EXIT_INPUT;
+    return same ? wrc : EXIT_INPUT;
 }
 
 static int cmd_variants(int argc, char **argv)
@@ -361,7 +390,7 @@ static const command commands[] = {
      "hidden), protecting (Mesh_3-like protecting balls on the cube's edges),\n"
      "molecule (atoms, weight = radius^2), wgrid (integer grid and weights:\n"
      "power ties, equal positions), wmoment, whelix.", cmd_gen},
-    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh] [--discard-hidden]",
+    {"tets", "tets FILE [--out OUT.vtu|OUT.mesh [--ascii]] [--discard-hidden]",
      "Writes the canonical form of DT(points in FILE) to stdout: one line\n"
      "'a b c d' per tetrahedron (finite and infinite), input indices sorted\n"
      "ascending, -1 for the infinite vertex, lines sorted.  FILE is read by\n"
@@ -371,8 +400,9 @@ static const command commands[] = {
      "0-based order of the points in the file.\n"
      "--out OUT: instead (nothing on stdout), the finite tetrahedra as a mesh\n"
      "file, by OUT's extension: .vtu (VTK XML, ParaView; point data\n"
-     "'input_index') or .mesh (Medit, Gmsh); points in input index order,\n"
-     "coordinates exact (dd_write).  Readable by meshio.\n"
+     "'input_index'; binary, appended raw data) or .mesh (Medit, Gmsh); points\n"
+     "in input index order, coordinates exact (dd_write).  Readable by meshio.\n"
+     "--ascii: the .vtu's data arrays in ASCII (as a name ending .ascii.vtu).\n"
      "Weighted points: .xyzw (x y z w per line), .xyzr (x y z radius, weight =\n"
      "radius^2), .ply with a vertex property 'weight' or 'radius'; then the\n"
      "regular triangulation (dd_create_ex), hidden points kept, or forgotten\n"
@@ -496,11 +526,13 @@ static const command commands[] = {
      "caches), with no warm-up.\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
      "--phases DIR merges such a run's phase columns into this one.", cmd_bench},
-    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R]",
+    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R] [--write FILE]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
      "range insert in the same run, R times each (default 3, at most 9),\n"
      "alternated; prints the median times in points/s, their ratio, bytes\n"
-     "per cell, and whether the two triangulations are identical.", cmd_build_bench},
+     "per cell, and whether the two triangulations are identical.\n"
+     "--write FILE: then writes DT to FILE (dd_write, by its extension), once,\n"
+     "and prints the file's size and the time it took.", cmd_build_bench},
     {"seq-bench", "seq-bench [N] [--dataset NAME] [--fraction F] [--variant NAME] [--seed S]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL,\n"
      "then deletes the same seeded random sequence of a fraction F of the\n"
