@@ -73,6 +73,7 @@ job "release exports" sh tests/test_exports.sh "$REL"
 job "release install" sh tests/test_install.sh "$REL"
 # the Python bindings (make python: python/dtdel loads the release libdtdel.so)
 job "release python" env PYTHONPATH=python /usr/bin/python3 tests/test_python.py "$REL/dtdel"
+job "release python-batch" env PYTHONPATH=python:tests /usr/bin/python3 tests/test_python_batch.py "$REL/dtdel"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     is_slow "$(basename "$t")" || job "asan $(basename "$t")" "$t" small

@@ -104,6 +104,25 @@ def _vertex_list(vs):
     return np.ascontiguousarray(a, dtype=np.uint32).reshape(-1)
 
 
+def _points(p):
+    """An (m, 3) C-contiguous float64 copy or view of p."""
+    a = np.ascontiguousarray(p, dtype=np.float64)
+    if a.ndim != 2 or a.shape[1] != 3:
+        a = a.reshape(-1, 3) if a.ndim == 1 and a.size % 3 == 0 else a
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError("points are an (m, 3) array, got shape %s" % (a.shape,))
+    return a
+
+
+def _weights(w, m):
+    if w is None:
+        return None
+    a = np.ascontiguousarray(w, dtype=np.float64).reshape(-1)
+    if a.shape != (m,):
+        raise ValueError("weights are an (%d,) array, got shape %s" % (m, a.shape))
+    return a
+
+
 def _variant(variant):
     return None if variant is None else str(variant).encode()
 
@@ -337,6 +356,46 @@ class Triangulation:
         self._check(_need("dd_insert_weighted")(self._h, _dptr(a), float(w), byref(idx)))
         return int(idx.value)
 
+    def insert_from(self, p, hint=-1):
+        """Inserts point p, the walk starting at cell id hint (-1: the
+        library's choice); returns its input index (dd_insert_from)."""
+        a = _point(p)
+        idx = c_uint32()
+        self._check(lib.dd_insert_from(self._h, _dptr(a), int(hint), byref(idx)))
+        return int(idx.value)
+
+    def insert_weighted_from(self, p, w, hint=-1):
+        """insert_weighted from cell id hint (dd_insert_weighted_from)."""
+        a = _point(p)
+        idx = c_uint32()
+        self._check(lib.dd_insert_weighted_from(self._h, _dptr(a), float(w), int(hint), byref(idx)))
+        return int(idx.value)
+
+    def insert_many(self, points, weights=None):
+        """Inserts an (m, 3) array of points (and (m,) weights) at once;
+        returns (indices, merged): each point's input index, and how many
+        equalled a vertex or an earlier point (dd_insert_many).  All or
+        nothing."""
+        a = _points(points)
+        w = _weights(weights, len(a))
+        out = np.empty(len(a), dtype=np.uint32)
+        merged = c_size_t()
+        self._check(lib.dd_insert_many(self._h, _dptr(a), None if w is None else _dptr(w), len(a),
+                                       out.ctypes.data_as(ctypes.POINTER(c_uint32)), byref(merged)))
+        return out.astype(np.int64), int(merged.value)
+
+    def move_many(self, vs, points, weights=None):
+        """Moves vertices vs to the rows of points (with weights on a
+        weighted triangulation), each keeping its index (dd_move_many).
+        All or nothing."""
+        v = _vertex_list(vs)
+        a = _points(points)
+        if len(a) != len(v):
+            raise ValueError("%d vertices, %d points" % (len(v), len(a)))
+        w = _weights(weights, len(a))
+        self._check(lib.dd_move_many(self._h, v.ctypes.data_as(ctypes.POINTER(c_uint32)), _dptr(a),
+                                     None if w is None else _dptr(w), len(a)))
+
     def reinsert(self, v):
         """Puts back deleted vertex v at its point (dd_reinsert)."""
         self._check(lib.dd_reinsert(self._h, self._vid(v)))
@@ -433,6 +492,42 @@ class Triangulation:
         return _take(p, n.value, width=1, dtype=np.int64).reshape(-1)
 
     # ---- cell handles and files (issue 42) -------------------------------------
+    def locate_many(self, points):
+        """Cell ids (int64) of cells whose closures hold the rows of points
+        (dd_locate_many); raises on a NaN or infinite row."""
+        a = _points(points)
+        out = np.empty(len(a), dtype=np.int64)
+        self._check(lib.dd_locate_many(self._h, _dptr(a), len(a),
+                                       out.ctypes.data_as(ctypes.POINTER(c_int64))), "locate_many")
+        return out
+
+    def nearest_many(self, points):
+        """Input indices (int64) of vertices nearest to the rows of points
+        (dd_nearest_many)."""
+        a = _points(points)
+        out = np.empty(len(a), dtype=np.uint32)
+        self._check(lib.dd_nearest_many(self._h, _dptr(a), len(a),
+                                        out.ctypes.data_as(ctypes.POINTER(c_uint32))), "nearest_many")
+        return out.astype(np.int64)
+
+    def input_points(self, with_weights=False):
+        """Every input index's point, an (num_input, 3) array, NaN rows for
+        indices that name no point now; with_weights: also the (num_input,)
+        weights (dd_points)."""
+        n = lib.dd_num_input(self._h)
+        xyz, w = np.empty((n, 3)), np.empty(n)
+        self._check(lib.dd_points(self._h, _dptr(xyz), _dptr(w)), "input_points()")
+        return (xyz, w) if with_weights else xyz
+
+    def cells_vertices(self, ids):
+        """The vertices of cell ids, an (n, 4) int32 array (-1 infinite;
+        dd_cells_vertices)."""
+        c = np.ascontiguousarray(ids, dtype=np.int64).reshape(-1)
+        out = np.empty((len(c), 4), dtype=np.int32)
+        self._check(lib.dd_cells_vertices(self._h, c.ctypes.data_as(ctypes.POINTER(c_int64)), len(c),
+                                          out.ctypes.data_as(ctypes.POINTER(c_int32))), "cells_vertices")
+        return out
+
     def cell_end(self):
         """Live cell ids lie in [0, cell_end()) (dd_cell_end)."""
         return int(_need("dd_cell_end")(self._h))

@@ -79,6 +79,16 @@ PROTOTYPES = {
     "dd_hidden": (c_int, [c_void_p, POINTER(_p_uint32), POINTER(c_size_t)]),
     "dd_insert_weighted": (c_int, [c_void_p, _p_double, c_double, _p_uint32]),
     "dd_move_weighted": (c_int, [c_void_p, c_uint32, _p_double, c_double]),
+    # issue 56: hinted insertion and whole-array calls
+    "dd_insert_from": (c_int, [c_void_p, _p_double, c_int64, _p_uint32]),
+    "dd_insert_weighted_from": (c_int, [c_void_p, _p_double, c_double, c_int64, _p_uint32]),
+    "dd_insert_many": (c_int, [c_void_p, _p_double, _p_double, c_size_t, _p_uint32,
+                               POINTER(c_size_t)]),
+    "dd_move_many": (c_int, [c_void_p, _p_uint32, _p_double, _p_double, c_size_t]),
+    "dd_locate_many": (c_int, [c_void_p, _p_double, c_size_t, _p_cell_id]),
+    "dd_nearest_many": (c_int, [c_void_p, _p_double, c_size_t, _p_uint32]),
+    "dd_points": (c_int, [c_void_p, _p_double, _p_double]),
+    "dd_cells_vertices": (c_int, [c_void_p, _p_cell_id, c_size_t, _p_int32]),
 }
 
 # dd_ names of dtdel.h that get no Python function of their own, and why.
