@@ -132,7 +132,7 @@ static int same_tets(const int32_t *a, size_t na, const int32_t *b, size_t nb)
 
 /* ---- the operations ---------------------------------------------------------- */
 
-typedef enum { OP_DELETE, OP_DELETE_SET, OP_INSERT, OP_REINSERT, OP_MOVE } op_kind;
+typedef enum { OP_DELETE, OP_DELETE_SET, OP_INSERT, OP_REINSERT, OP_MOVE, OP_INSERT_FROM, OP_INSERT_MANY, OP_MOVE_MANY } op_kind;
 
 typedef struct op {
     char name[128];
@@ -142,8 +142,11 @@ typedef struct op {
     uint32_t v;                 /* the vertex deleted, reinserted, moved  */
     const char *variant;        /* dd_delete_with, dd_delete_set_with     */
     double p[3];                /* dd_insert, dd_move                     */
-    const uint32_t *set;        /* dd_delete_set                          */
+    const uint32_t *set;        /* dd_delete_set, dd_move_many            */
     size_t nset;
+    const double *batch;        /* dd_insert_many's points, dd_move_many's targets */
+    size_t nbatch;
+    dd_cell_id hint;            /* dd_insert_from                         */
     long set_course;            /* DD_TEST_SET_COURSE                     */
     tl_course course;           /* the wrap's                             */
     int move_course;            /* 1 filter, 2 flips, 3 re-insertion      */
@@ -192,6 +195,12 @@ static dd_status run(dd_tri *t, const op *o, uint32_t *index)
     case OP_INSERT: return dd_insert(t, o->p, index);
     case OP_REINSERT: return dd_reinsert(t, o->v);
     case OP_MOVE: return dd_move(t, o->v, o->p);
+    case OP_INSERT_FROM: return dd_insert_from(t, o->p, o->hint, index);
+    case OP_INSERT_MANY: {
+        uint32_t idx[64];
+        return dd_insert_many(t, o->batch, NULL, o->nbatch, idx, NULL);
+    }
+    case OP_MOVE_MANY: return dd_move_many(t, o->set, o->batch, NULL, o->nset);
     }
     return DD_ERR_INTERNAL;
 }
@@ -199,14 +208,26 @@ static dd_status run(dd_tri *t, const op *o, uint32_t *index)
 /* CGAL's canonical form after o (index: what dd_insert returned). */
 static void expected(const op *o, uint32_t index, int32_t **tets, size_t *n)
 {
-    dd_cgal *c = dd_cgal_build(o->pts, o->np);
+    double all[3 * 256];              /* the batch's result, built whole */
+    if (o->kind == OP_INSERT_MANY || o->kind == OP_MOVE_MANY) {
+        memcpy(all, o->pts, 3 * o->np * sizeof *all);
+        if (o->kind == OP_INSERT_MANY) memcpy(all + 3 * o->np, o->batch, 3 * o->nbatch * sizeof *all);
+        for (size_t k = 0; o->kind == OP_MOVE_MANY && k < o->nset; k++)
+            memcpy(all + 3 * o->set[k], o->batch + 3 * k, 3 * sizeof *all);
+    }
+    const int whole = o->kind == OP_INSERT_MANY || o->kind == OP_MOVE_MANY;
+    dd_cgal *c = whole ? dd_cgal_build(all, o->np + (uint32_t)(o->kind == OP_INSERT_MANY ? o->nbatch : 0))
+                       : dd_cgal_build(o->pts, o->np);
     int ok = c != NULL;
     switch (o->kind) {
     case OP_DELETE: ok = ok && dd_cgal_remove(c, o->v) == 0; break;
     case OP_DELETE_SET:
         for (size_t k = 0; ok && k < o->nset; k++) ok = dd_cgal_remove(c, o->set[k]) == 0;
         break;
-    case OP_INSERT: ok = ok && dd_cgal_insert(c, o->p, index) == 0; break;
+    case OP_INSERT:
+    case OP_INSERT_FROM: ok = ok && dd_cgal_insert(c, o->p, index) == 0; break;
+    case OP_INSERT_MANY:
+    case OP_MOVE_MANY: break;                      /* built whole above */
     case OP_REINSERT: break;                       /* the points as given */
     case OP_MOVE: ok = ok && dd_cgal_move(c, o->v, o->p) == 0; break;
     }
@@ -386,8 +407,9 @@ static void fault_create(const char *name, const double *p, uint32_t n, int ex)
 
 /* ---- the reads that allocate ----------------------------------------------- */
 
-typedef enum { RD_CANONICAL, RD_LOCAL, RD_CELLS, RD_NEAREST, RD_WRITE, RD_NREADS } read_kind;
-static const char *const read_name[RD_NREADS] = {"canonical", "local-canonical", "cells", "nearest", "write"};
+typedef enum { RD_CANONICAL, RD_LOCAL, RD_CELLS, RD_NEAREST, RD_WRITE, RD_LOCATE_MANY, RD_NEAREST_MANY, RD_NREADS } read_kind;
+static const char *const read_name[RD_NREADS] = {"canonical", "local-canonical", "cells", "nearest", "write",
+                                                 "locate-many", "nearest-many"};
 
 /* Read r of t into a canonical-like list (for comparing answers). */
 static dd_status do_read(const dd_tri *t, read_kind r, const char *path, int32_t **out, size_t *n)
@@ -428,6 +450,23 @@ static dd_status do_read(const dd_tri *t, read_kind r, const char *path, int32_t
             (*out)[0] = (int32_t)len;
             *n = 1;
         }
+        return s;
+    }
+    case RD_LOCATE_MANY:
+    case RD_NEAREST_MANY: {             /* 3000 queries: the radix sort's path */
+        enum { Q = 3000 };
+        double *q = malloc(3 * Q * sizeof *q);
+        tl_rng qr = {23};
+        for (int i = 0; i < 3 * Q; i++) q[i] = tl_unif(&qr);
+        dd_cell_id *c = malloc(Q * sizeof *c);
+        uint32_t *v = malloc(Q * sizeof *v);
+        s = r == RD_LOCATE_MANY ? dd_locate_many(t, q, Q, c) : dd_nearest_many(t, q, Q, v);
+        if (s == DD_OK) {
+            *out = malloc(Q * sizeof **out);
+            for (int i = 0; i < Q; i++) (*out)[i] = r == RD_LOCATE_MANY ? (int32_t)c[i] : (int32_t)v[i];
+            *n = Q / 4;
+        }
+        free(q), free(c), free(v);
         return s;
     }
     default: return DD_ERR_INTERNAL;
@@ -732,6 +771,41 @@ int main(int argc, char **argv)
     fault_op(&o);
     o.p[0] = 1.7, o.p[1] = -0.4, o.p[2] = 0.5;
     snprintf(o.name, sizeof o.name, "insert/outside");
+    fault_op(&o);
+
+    memset(&o, 0, sizeof o);                 /* from a cell in conflict, from a far one */
+    o.kind = OP_INSERT_FROM, o.pts = uni, o.np = nu;
+    o.p[0] = 0.43, o.p[1] = 0.51, o.p[2] = 0.47;
+    dd_tri *h = create(uni, nu);
+    dd_locate_from(h, o.p, -1, &o.hint);
+    snprintf(o.name, sizeof o.name, "insert-from/in-conflict");
+    fault_op(&o);
+    o.p[0] = 1.7, o.p[1] = -0.4, o.p[2] = 0.5;
+    snprintf(o.name, sizeof o.name, "insert-from/far");
+    fault_op(&o);
+    dd_free(h);
+
+    /* batches: 12 new points (2 outside the hull), then every third
+     * vertex moved a little, two of them swapping places                */
+    double batch[3 * 64];
+    uint32_t mv[64];
+    tl_rng br = {17};
+    for (int k = 0; k < 12; k++)
+        for (int c = 0; c < 3; c++) batch[3 * k + c] = k < 10 ? tl_unif(&br) : 1.3 + 0.1 * k + 0.2 * c;
+    memset(&o, 0, sizeof o);
+    o.kind = OP_INSERT_MANY, o.pts = uni, o.np = nu, o.batch = batch, o.nbatch = 12;
+    snprintf(o.name, sizeof o.name, "insert-many");
+    fault_op(&o);
+    size_t nmv = 0;
+    for (uint32_t v = 0; v < nu && nmv < 14; v += 3, nmv++) {
+        mv[nmv] = v;
+        for (int c = 0; c < 3; c++) batch[3 * nmv + c] = uni[3 * v + c] + 0.02 * (tl_unif(&br) - 0.5);
+    }
+    memcpy(batch + 3 * 4, uni + 3 * mv[5], 3 * sizeof *batch);
+    memcpy(batch + 3 * 5, uni + 3 * mv[4], 3 * sizeof *batch);
+    memset(&o, 0, sizeof o);
+    o.kind = OP_MOVE_MANY, o.pts = uni, o.np = nu, o.set = mv, o.nset = nmv, o.batch = batch;
+    snprintf(o.name, sizeof o.name, "move-many/with-a-swap");
     fault_op(&o);
 
     memset(&o, 0, sizeof o);
