@@ -116,10 +116,28 @@ static uint64_t item_digest(const dd_tri *t, const work *w, uint32_t i)
     return h;
 }
 
-/* Every answer about the whole triangulation. */
-static uint64_t whole_digest(const dd_tri *t)
+/* The whole-array reads of all the queries (the NaN one included: its
+ * status), and every input point.                                      */
+static uint64_t batch_digest(const dd_tri *t, const work *w)
 {
     uint64_t h = 0xcbf29ce484222325ull;
+    dd_cell_id *cells = malloc((w->nq + 1) * sizeof *cells);
+    uint32_t *near = malloc((w->nq + 1) * sizeof *near);
+    double *pts = malloc(4 * ((size_t)dd_num_input(t) + 1) * sizeof *pts);
+    if (!cells || !near || !pts) exit(1);
+    h = mix(h, (uint32_t)dd_locate_many(t, w->q, w->nq, cells));
+    h = mix(h, (uint32_t)dd_nearest_many(t, w->q, w->nq, near));
+    for (uint32_t i = 0; i < w->nq; i++) h = mix(mix(h, (uint32_t)cells[i]), near[i]);
+    h = mix(h, (uint32_t)dd_points(t, pts, pts + 3 * (size_t)dd_num_input(t)));
+    for (size_t i = 0; i < 4 * (size_t)dd_num_input(t); i++) h = mix_d(h, pts[i]);
+    free(cells), free(near), free(pts);
+    return h;
+}
+
+/* Every answer about the whole triangulation. */
+static uint64_t whole_digest(const dd_tri *t, const work *w)
+{
+    uint64_t h = batch_digest(t, w);
     int32_t *a = NULL, *nb = NULL;
     size_t na = 0;
     dd_status s = dd_canonical(t, &a, &na);
@@ -175,7 +193,7 @@ static void *run_job(void *arg)
     const work *w = j->w;
     const uint32_t start = (uint32_t)((uint64_t)w->nq * (uint32_t)j->id / NTHREADS);
     for (int r = 0; r < w->rounds; r++) {
-        uint64_t whole = whole_digest(w->t);
+        uint64_t whole = whole_digest(w->t, w);
         if (r == 0) j->whole = whole;
         else j->later_differs |= whole != j->whole;
         for (uint32_t k = 0; k < w->nq; k++) {
@@ -271,7 +289,7 @@ static void run_set(tl_state *st, const char *name, uint32_t n, uint32_t nq, int
     work w = {t, make_queries(&r, pts, np, nq), nq, dd_num_input(t), rounds};
     /* one thread alone first */
     uint64_t *ref = malloc(nq * sizeof *ref);
-    const uint64_t whole = whole_digest(t);
+    const uint64_t whole = whole_digest(t, &w);
     for (uint32_t i = 0; i < nq; i++) ref[i] = item_digest(t, &w, i);
     int32_t *before = NULL;
     size_t nbefore = 0;
