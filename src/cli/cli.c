@@ -460,6 +460,14 @@ static const command commands[] = {
      "(line \"smoothing (Morton order):\"), each run on fresh triangulations;\n"
      "then dd_delete_set of a random 10%, 50% and 90% of M uniform points\n"
      "(default 200000) and CGAL's remove(first, last).", cmd_edit_bench},
+    {"batch-bench", "batch-bench [N] [--inserts M] [--queries Q] [--weighted NW] [--passes P] [--seed S]",
+     "Against CGAL's best for a batch, each result compared: dd_insert_many\n"
+     "of M new uniform points (default 50000) into N (default 200000) and\n"
+     "CGAL's insert(first, last); dd_locate_many of Q queries (default\n"
+     "1000000) and CGAL's spatial_sort + hinted locate loop; the same\n"
+     "insertion of wuniform weighted points against Regular_triangulation_3;\n"
+     "dd_move_many of every vertex of NW wuniform weighted points (default\n"
+     "100000), P passes (default 2), against CGAL's move loop.", cmd_batch_bench},
     {"query-bench", "query-bench [N] [--inserts M] [--queries Q] [--live L] [--rounds R] [--seed S]",
      "Against CGAL (its default location and Fast_location): inserting M new\n"
      "points one at a time into DT of N uniform points (default 200000,\n"

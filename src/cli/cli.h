@@ -122,6 +122,7 @@ int cmd_locate(int argc, char **argv);
 int cmd_move(int argc, char **argv);
 int cmd_edit_bench(int argc, char **argv);
 int cmd_query_bench(int argc, char **argv);
+int cmd_batch_bench(int argc, char **argv);
 int cmd_refine_bench(int argc, char **argv);
 int cmd_hidden(int argc, char **argv);
 int cmd_cgal_hidden(int argc, char **argv);
