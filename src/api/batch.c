@@ -108,7 +108,7 @@ static dd_status insert_plain(dd_tri *t, ins_batch *b, uint32_t i, uint32_t *dup
     double *x = t->xyz + 3 * (size_t)v;
     memcpy(b->old + 3 * (size_t)i, x, 3 * sizeof *x);
     memcpy(x, b->xyz + 3 * (size_t)i, 3 * sizeof *x);
-    s = dd_insert_vertex_dup(t, v, t->hint, dup);
+    s = dd_insert_vertex_dup(t, v, dd_start_near(t, x), dup);
     if (s != DD_OK) {
         memcpy(x, b->old + 3 * (size_t)i, 3 * sizeof *x);
         if (reused) t->vfree.a[t->vfree.n++] = v;    /* its place: no growth */

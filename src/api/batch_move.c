@@ -15,8 +15,9 @@
  * done.  A move still refused then lands on a vertex that does not move.
  *
  * Checked first, before any change: the points and weights, each vertex
- * (known, listed once) and the targets (distinct).  All or nothing
- * after: every step is logged, and a failure undoes the log, last step
+ * (known, listed once).  Two equal targets are found on the way, as a
+ * move refused to the last (its place taken by a vertex of the batch
+ * that moved there).  All or nothing after: every step is logged, and a failure undoes the log, last step
  * first (a move moved back, a parked vertex put back where it was),
  * which restores the unique triangulation of the old points; under
  * DD_DISCARD_HIDDEN the vertices the batch forgot are put back.
@@ -44,6 +45,7 @@ typedef struct step {
 typedef struct mv_batch {
     const uint32_t *vs;
     const double *xyz, *w;
+    size_t m;
     uint32_t *id, *order, *wait;   /* id[i]: vs[i]'s vertex id */
     step *log;
     uint32_t nlog;
@@ -74,54 +76,40 @@ static int cmp_u64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* A target and its position in the batch, sorted by point then weight. */
-typedef struct target {
-    double p[3], w;
-    uint32_t i;
-} target;
-
-static int cmp_target(const void *a, const void *b)
+/* A vertex listed twice (DD_ERR_ARG, naming both positions): a bitmap of
+ * the vertex ids when the batch is large against t, else a sort.       */
+static dd_status check_listed_once(dd_tri *t, const mv_batch *b, size_t m)
 {
-    const target *x = a, *y = b;
-    const int c = dd_lex_cmp(x->p, y->p);
-    if (c) return c;
-    if (x->w != y->w) return x->w < y->w ? -1 : 1;
-    return (x->i > y->i) - (x->i < y->i);
-}
-
-/* Two vertices listed at once (DD_ERR_ARG), two targets equal
- * (DD_ERR_DUPLICATE), each naming the positions.  O(m log m).          */
-static dd_status check_distinct(dd_tri *t, const mv_batch *b, size_t m)
-{
-    uint64_t *ids = dd_malloc(m * sizeof *ids);
-    target *tg = dd_malloc(m * sizeof *tg);
-    dd_status s = ids && tg ? DD_OK : dd_fail(t, DD_ERR_NOMEM, "out of memory");
-    for (size_t i = 0; i < m && s == DD_OK; i++) {
-        ids[i] = (uint64_t)b->id[i] << 32 | i;
-        memcpy(tg[i].p, b->xyz + 3 * i, sizeof tg[i].p);
-        tg[i].w = b->w ? b->w[i] : 0.0;
-        tg[i].i = (uint32_t)i;
+    const int bitmap = m >= t->nvid / 64;
+    unsigned char *seen = bitmap ? dd_calloc((size_t)t->nvid / 8 + 1, 1) : NULL;
+    uint64_t *ids = bitmap ? NULL : dd_malloc(m * sizeof *ids);
+    if (!seen && !ids) return dd_fail(t, DD_ERR_NOMEM, "out of memory");
+    size_t a = 0, c = 0;
+    int twice = 0;
+    for (size_t i = 0; bitmap && i < m && !twice; i++) {
+        const uint32_t v = b->id[i];
+        twice = seen[v / 8] >> (v % 8) & 1;
+        seen[v / 8] |= (unsigned char)(1u << (v % 8));
+        if (twice) {               /* the first: the one earlier with that id */
+            c = i;
+            while (b->id[a] != v) a++;
+        }
     }
-    if (s == DD_OK) qsort(ids, m, sizeof *ids, cmp_u64);
-    for (size_t k = 1; k < m && s == DD_OK; k++)
-        if (ids[k] >> 32 == ids[k - 1] >> 32)
-            s = dd_fail(t, DD_ERR_ARG, "point %u is listed twice in the batch, at %u and %u",
-                        b->vs[(uint32_t)ids[k]], (uint32_t)ids[k - 1], (uint32_t)ids[k]);
-    if (s == DD_OK) qsort(tg, m, sizeof *tg, cmp_target);
-    for (size_t k = 1; k < m && s == DD_OK; k++)
-        if (dd_lex_cmp(tg[k].p, tg[k - 1].p) == 0 && tg[k].w == tg[k - 1].w)
-            s = dd_fail(t, DD_ERR_DUPLICATE, "points %u and %u of the batch (at %u and %u) move to the same point",
-                        b->vs[tg[k - 1].i], b->vs[tg[k].i], tg[k - 1].i, tg[k].i);
+    for (size_t i = 0; !bitmap && i < m; i++) ids[i] = (uint64_t)b->id[i] << 32 | i;
+    if (!bitmap) qsort(ids, m, sizeof *ids, cmp_u64);
+    for (size_t k = 1; !bitmap && k < m && !twice; k++)
+        if (ids[k] >> 32 == ids[k - 1] >> 32) twice = 1, a = (uint32_t)ids[k - 1], c = (uint32_t)ids[k];
+    dd_mfree(seen);
     dd_mfree(ids);
-    dd_mfree(tg);
-    return s;
+    if (twice) return dd_fail(t, DD_ERR_ARG, "point %u is listed twice in the batch, at %zu and %zu", b->vs[c], a, c);
+    return DD_OK;
 }
 
 static dd_status check_moves(dd_tri *t, mv_batch *b, size_t m)
 {
     dd_status s = dd_check_batch(t, b->xyz, b->w, m);
     for (size_t i = 0; i < m && s == DD_OK; i++) s = resolve_moved(t, b, i, &b->id[i]);
-    return s == DD_OK ? check_distinct(t, b, m) : s;
+    return s == DD_OK ? check_listed_once(t, b, m) : s;
 }
 
 /* ---- the steps ---------------------------------------------------------- */
@@ -170,9 +158,15 @@ static dd_status place(dd_tri *t, mv_batch *b, size_t i)
         if (s == DD_OK && fate == DD_FATE_DUPLICATE) s = DD_ERR_DUPLICATE;
         if (s == DD_OK && fate == DD_FATE_VERTEX) dd_grid_note(t, v);
     }
-    if (s == DD_ERR_DUPLICATE)
+    if (s == DD_ERR_DUPLICATE) {        /* onto another target, or a fixed vertex */
+        size_t j = 0;
+        while (j < b->m && b->id[j] != dup) j++;
+        if (j < b->m)
+            return dd_fail(t, s, "points %u and %u of the batch (at %zu and %zu) move to the same point", b->vs[j],
+                           b->vs[i], j, i);
         return dd_fail(t, s, "point %u of the batch (at %zu) moves onto point %u, which does not move", b->vs[i], i,
                        t->v2in[dup]);
+    }
     if (s == DD_OK && !t->wt) dd_grid_note(t, v);
     return s;
 }
@@ -250,7 +244,7 @@ static dd_status move_many(dd_tri *t, const uint32_t *vs, const double *xyz, con
     if (m == 0) return DD_OK;
     mv_batch b;
     memset(&b, 0, sizeof b);
-    b.vs = vs, b.xyz = xyz, b.w = w, b.nvid = t->nvid;
+    b.vs = vs, b.xyz = xyz, b.w = w, b.m = m, b.nvid = t->nvid;
     const int discard = t->wt && (t->flags & DD_DISCARD_HIDDEN_FLAG);
     dd_status s = dd_check_batch(t, xyz, w, m);
     if (s != DD_OK) return s;

@@ -16,6 +16,11 @@
  *        smoothing (Morton order): N uniform points, ...
  *    (one line each; A and B are the mean per move over all P N moves,
  *    K the share of moves dd_move's filter kept with no cell changed);
+ *    then the same moves by dd_move_many, a call a pass, beside both
+ *    CGAL loops' times:
+ *        smoothing by dd_move_many: N uniform points, P passes ...: dtdel
+ *        A us a move, CGAL move_if_no_collision B us in input order (Rx),
+ *        C us in Morton order (R2x); identical to CGAL: yes|NO
  *  - set deletion: a random 10%, 50% and 90% of M uniform points deleted
  *    by dd_delete_set and by CGAL's remove(first, last).
  */
@@ -85,7 +90,7 @@ static int sort_by_morton(const double *p, uint32_t np, uint32_t *order)
  * (format in the file's comment).  0, or 1 if a call failed or the
  * result differs from CGAL's.                                          */
 static int smooth_in_order(const eb_opts *o, const double *p, uint32_t np, const uint32_t *order,
-                           const double *step, const char *label)
+                           const double *step, const char *label, double *cgal_per_move)
 {
     const uint64_t k = o->passes * np;
     uint32_t *who = dd_malloc(k * sizeof *who);
@@ -116,6 +121,7 @@ static int smooth_in_order(const eb_opts *o, const double *p, uint32_t np, const
         double t2 = now_seconds();
         dd_get_counters(t, &c1);
         const double ours = (t1 - t0) / (double)k, theirs = (t2 - t1) / (double)k;
+        *cgal_per_move = theirs;
         bad += !same_as_cgalq(t, g);
         printf("%s: %u uniform points, %llu passes of a random step of 5%% of the mean spacing: dtdel %.2f us, "
                "CGAL move_if_no_collision %.2f us (%.1fx); kept by the filter %.1f%%; identical to CGAL: %s\n",
@@ -127,6 +133,44 @@ static int smooth_in_order(const eb_opts *o, const double *p, uint32_t np, const
     dd_cgalq_free(g);
     dd_mfree(who), dd_mfree(to), dd_mfree(cur);
     return rc || bad;
+}
+
+/* The same moves (input order) by dd_move_many, one call a pass of every
+ * vertex, against the two CGAL loops' times per move; the result against
+ * CGAL's DT of the moved points.  0, or 1 on a failure or a difference. */
+static int smooth_many(const eb_opts *o, const double *p, uint32_t np, const double *step, double cgal_input,
+                       double cgal_morton)
+{
+    uint32_t *vs = dd_malloc((size_t)np * sizeof *vs);
+    double *cur = dd_malloc(3 * (size_t)np * sizeof *cur);
+    dd_tri *t = NULL;
+    char msg[256];
+    int rc = !vs || !cur || dd_create(&t, p, np, msg, sizeof msg) != DD_OK;
+    double ours = 0;
+    if (!rc) memcpy(cur, p, 3 * (size_t)np * sizeof *cur);
+    for (uint32_t i = 0; !rc && i < np; i++) vs[i] = i;
+    for (uint64_t s = 0; !rc && s < o->passes; s++) {
+        for (size_t i = 0; i < 3 * (size_t)np; i++) cur[i] += step[3 * s * np + i];
+        const double t0 = now_seconds();
+        rc = dd_move_many(t, vs, cur, NULL, np) != DD_OK;
+        ours += now_seconds() - t0;
+    }
+    dd_cgalq *g = rc ? NULL : dd_cgalq_build(cur, np, 0);
+    rc = rc || !g;
+    if (!rc) {
+        const int same = same_as_cgalq(t, g);
+        const double per = ours / (double)(o->passes * np);
+        printf("smoothing by dd_move_many: %u uniform points, %llu passes of a random step of 5%% of the mean spacing: "
+               "dtdel %.2f us a move, CGAL move_if_no_collision %.2f us in input order (%.1fx), %.2f us in Morton "
+               "order (%.1fx); identical to CGAL: %s\n",
+               np, (unsigned long long)o->passes, 1e6 * per, 1e6 * cgal_input, cgal_input / per, 1e6 * cgal_morton,
+               cgal_morton / per, same ? "yes" : "NO");
+        rc = !same;
+    }
+    dd_free(t);
+    dd_cgalq_free(g);
+    dd_mfree(vs), dd_mfree(cur);
+    return rc;
 }
 
 /* The smoothing workload: the steps drawn first, one per point and
@@ -147,9 +191,13 @@ static int smoothing(const eb_opts *o)
     uint64_t x = o->seed * 0x9E3779B97F4A7C15ull | 1;
     for (uint64_t i = 0; !rc && i < 3 * k; i++) step[i] = h * (2.0 * rand_below(&x, 1u << 30) / (1u << 30) - 1);
     for (uint32_t i = 0; !rc && i < np; i++) order[i] = i;
+    double cgal_input = 0, cgal_morton = 0;
     if (!rc) {
-        rc |= smooth_in_order(o, p, np, order, step, "smoothing");
-        rc |= sort_by_morton(p, np, order) || smooth_in_order(o, p, np, order, step, "smoothing (Morton order)");
+        rc |= smooth_in_order(o, p, np, order, step, "smoothing", &cgal_input);
+        rc |= sort_by_morton(p, np, order) ||
+              smooth_in_order(o, p, np, order, step, "smoothing (Morton order)", &cgal_morton);
+        fflush(stdout);
+        rc |= smooth_many(o, p, np, step, cgal_input, cgal_morton);
     }
     dd_mfree(p), dd_mfree(step), dd_mfree(order);
     return rc;

@@ -162,17 +162,23 @@ dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int bri
     }
     double ext = 0;
     for (int c = 0; c < 3; c++) if (hi[c] - lo[c] > ext) ext = hi[c] - lo[c];
+    /* bits per axis: 16 in a construction's rounds; else about 4 boxes a
+     * point along each axis, as fine an order with fewer steps of the key
+     * and fewer radix passes                                             */
+    int bits = 16;
+    while (!brio && bits > 4 && (1ull << (3 * (bits - 3))) > n) bits--;
+    const double top = (double)((1u << bits) - 1);
     /* The grid coordinates (x - lo) * scale in doubles, unless the extent
      * overflows (coordinates of both signs beyond DBL_MAX / 2) or its
      * reciprocal does (subnormal extents): then in halves and scaled by
      * powers of two, which nothing can overflow.                        */
-    const int plain = ext > 0 && ext <= DBL_MAX && 65535.0 / ext <= DBL_MAX;
-    double scale = plain ? 65535.0 / ext : 0.0, half = 0;
+    const int plain = ext > 0 && ext <= DBL_MAX && top / ext <= DBL_MAX;
+    double scale = plain ? top / ext : 0.0, half = 0;
     int eh = 0;
     if (!plain) {
         for (int c = 0; c < 3; c++) half = fmax(half, 0.5 * hi[c] - 0.5 * lo[c]);
         eh = half > 0 ? ilogb(half) : 0;
-        scale = half > 0 ? 65535.0 / ldexp(half, -eh) : 0.0;
+        scale = half > 0 ? top / ldexp(half, -eh) : 0.0;
     }
     const int radix = n >= RADIX_MIN;
     keyed *a = dd_malloc(2 * (size_t)n * sizeof *a);
@@ -185,9 +191,9 @@ dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int bri
         uint32_t x[3];
         for (int c = 0; c < 3; c++) {
             double q = plain ? (p[c] - lo[c]) * scale : ldexp(0.5 * p[c] - 0.5 * lo[c], -eh) * scale;
-            x[c] = !(q > 0) ? 0 : q >= 65535.0 ? 65535u : (uint32_t)q;
+            x[c] = !(q > 0) ? 0 : q >= top ? (uint32_t)top : (uint32_t)q;
         }
-        uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, 16);
+        uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, bits);
         a[k].key = key;
         a[k].id = ids[k];
         for (uint32_t d = 0; radix && d < NPASS; d++)
