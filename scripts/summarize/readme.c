@@ -295,6 +295,52 @@ static int readme_smoothing_row(const char *line, FILE *out)
     return 1;
 }
 
+/* The README rows of the whole-array calls: edit-bench's "smoothing by
+ * dd_move_many" line and batch.txt's lines (dtdel batch-bench); 1 if
+ * line was one.                                                         */
+static int readme_batch_row(const char *line, FILE *out)
+{
+    char ok[8], b[40], b2[40];
+    long long n, k;
+    double ours, cgal, rc, morton, rm;
+    const char *differs = " (**differs from CGAL**)";
+    if (sscanf(line, "smoothing by dd_move_many: %lld uniform points, %lld passes of a random step of 5%% of the mean "
+                     "spacing: dtdel %lf us a move, CGAL move_if_no_collision %lf us in input order (%lfx), %lf us in "
+                     "Morton order (%lfx); identical to CGAL: %7s", &n, &k, &ours, &cgal, &rc, &morton, &rm, ok) == 8) {
+        fprintf(out, "| dd_move_many (smoothing %s points, %lld passes) against CGAL's loop in input order%s | %.2f | "
+                     "%.2f | %.1f× | | |\n", fmt_int(n, b), k, strcmp(ok, "yes") ? differs : "", ours, cgal, rc);
+        fprintf(out, "| dd_move_many (same) against CGAL's loop in Morton order | %.2f | %.2f | %.1f× | | |\n", ours,
+                morton, rm);
+        return 1;
+    }
+    if (sscanf(line, "insert-many: %lld new uniform points into %lld: dtdel %lf us a point, CGAL insert(first, last) "
+                     "%lf us (%lfx); identical to CGAL: %7s", &k, &n, &ours, &cgal, &rc, ok) == 6 ||
+        sscanf(line, "winsert-many: %lld new wuniform weighted points into %lld: dtdel %lf us a point, CGAL "
+                     "Regular_triangulation_3 insert(first, last) %lf us (%lfx); identical to CGAL: %7s",
+               &k, &n, &ours, &cgal, &rc, ok) == 6) {
+        const int w = line[0] == 'w';
+        fprintf(out, "| dd_insert_many of %s%s into %s, against %s insert(first, last)%s | %.2f | %.2f | %.1f× | | |\n",
+                fmt_int(k, b), w ? " weighted points" : " points", fmt_int(n, b2),
+                w ? "Regular_triangulation_3's" : "CGAL's", strcmp(ok, "yes") ? differs : "", ours, cgal, rc);
+        return 1;
+    }
+    if (sscanf(line, "locate-many: %lld queries in %lld uniform points: dtdel %lf us a query, CGAL spatial_sort + "
+                     "hinted locate %lf us (%lfx); identical to CGAL: %7s", &k, &n, &ours, &cgal, &rc, ok) == 6) {
+        fprintf(out, "| dd_locate_many of %s queries in %s points, against spatial_sort + hinted locate%s | %.3f | "
+                     "%.3f | %.1f× | | |\n", fmt_int(k, b), fmt_int(n, b2), strcmp(ok, "yes") ? differs : "", ours,
+                cgal, rc);
+        return 1;
+    }
+    if (sscanf(line, "wmove-many: %lld wuniform weighted points, %lld passes of a step of 5%% of the mean spacing: "
+                     "dtdel %lf us a move, CGAL move %lf us (%lfx); identical to CGAL: %7s", &n, &k, &ours, &cgal, &rc,
+               ok) == 6) {
+        fprintf(out, "| dd_move_many (%s weighted points, %lld passes), against Regular_triangulation_3's move loop%s | "
+                     "%.2f | %.2f | %.1f× | | |\n", fmt_int(n, b), k, strcmp(ok, "yes") ? differs : "", ours, cgal, rc);
+        return 1;
+    }
+    return 0;
+}
+
 /* One README row of a line of queries.txt, edits.txt, refine.txt or
  * regular.txt (dtdel query-bench, edit-bench, refine-bench,
  * regular-bench), or none; *header says whether the table's head was
@@ -309,7 +355,7 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
               "|---|---:|---:|---:|---:|---:|\n", out);
         *header = 1;
     }
-    if (readme_smoothing_row(line, out)) return;
+    if (readme_smoothing_row(line, out) || readme_batch_row(line, out)) return;
     if (sscanf(line, "%63[^:]: %lld: dtdel %lf us, CGAL %lf us (%lfx), CGAL Fast_location %lf us (%lfx); %*[^:]: %7s",
                what, &k, &ours, &cgal, &rc, &fast, &rf, ok) == 8)
         fprintf(out, "| %s, %s points%s | %.2f | %.2f | %.1f× | %.2f | %.1f× |\n",
@@ -320,12 +366,17 @@ static void readme_extra_row(const char *line, long long nq, FILE *out, int *hea
         fprintf(out, "| delete a set, %.0f%% of %s%s | %.2f | %.2f | %.1f× | | |\n", frac, fmt_int(n, b),
                 strcmp(ok, "yes") ? " (**differs from CGAL**)" : "", ours, cgal, rc);
     else if (sscanf(line, "refine: %lld uniform points, %lld circumcentres of the largest cell inserted (CGAL %*d); "
-                          "dtdel %lf us an insertion (queue fed by dd_created_cells), CGAL find_conflicts + "
-                          "insert_in_hole %lf us (%lfx); hashes %*x / %*x; %lld mismatches",
-                    &n, &k, &ours, &cgal, &rc, &mism) == 6) {
+                          "dtdel %lf us an insertion (dd_insert_from the queued cell, queue fed by dd_created_cells), "
+                          "CGAL find_conflicts + insert_in_hole %lf us (%lfx); triangulation part (dd_insert_from + "
+                          "dd_cells_vertices vs find_conflicts + insert_in_hole) %lf us vs %lf us (%lfx); "
+                          "hashes %*x / %*x; %lld mismatches",
+                    &n, &k, &ours, &cgal, &rc, &fast, &frac, &rf, &mism) == 9) {
         char b2[40];
-        fprintf(out, "| refine (%s circumcentres of the largest cell into %s points)%s | %.2f | %.2f | %.1f× | | |\n",
+        fprintf(out, "| refine (%s circumcentres of the largest cell into %s points, dd_insert_from)%s | %.2f | %.2f | "
+                     "%.1f× | | |\n",
                 fmt_int(k, b), fmt_int(n, b2), mism ? " (**differs from CGAL**)" : "", ours, cgal, rc);
+        fprintf(out, "| refine, the triangulation's part alone (dd_insert_from + dd_cells_vertices; find_conflicts + "
+                     "insert_in_hole) | %.2f | %.2f | %.1f× | | |\n", fast, frac, rf);
     } else if (!strncmp(line, "regular-", 8)) {
         readme_regular_row(line, out);
     }
@@ -369,10 +420,10 @@ static void write_note(const ctx *c, char *note, size_t size)
  * files.                                                                */
 static void readme_queries(const ctx *c, FILE *out)
 {
-    static const char *const files[4] = {"queries.txt", "edits.txt", "refine.txt", "regular.txt"};
+    static const char *const files[5] = {"queries.txt", "edits.txt", "refine.txt", "regular.txt", "batch.txt"};
     char path[4096], churn[512] = "", note[512], b[40];
     int header = 0;
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 5; i++) {
         snprintf(path, sizeof path, "%s/%s", c->outdir, files[i]);
         FILE *f = fopen(path, "r");
         if (!f) continue;
