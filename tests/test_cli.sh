@@ -264,8 +264,9 @@ out=$("$DTDEL" query-bench 3000 --inserts 500 --queries 500 --live 2000 --rounds
 if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c ': yes$')" -eq 4 ] && ! echo "$out" | grep -q ': NO'; then
     echo "ok cli/query-bench"; else echo "FAIL cli/query-bench: rc $rc: $out"; fi
 out=$("$DTDEL" edit-bench 2000 --passes 1 --set 3000 2>&1); rc=$?
-if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c 'identical to CGAL: yes$')" -eq 5 ] &&
-    echo "$out" | grep -q '^smoothing: ' && echo "$out" | grep -q '^smoothing (Morton order): '; then
+if [ $rc -eq 0 ] && [ "$(echo "$out" | grep -c 'identical to CGAL: yes$')" -eq 6 ] &&
+    echo "$out" | grep -q '^smoothing: ' && echo "$out" | grep -q '^smoothing (Morton order): ' &&
+    echo "$out" | grep -q '^smoothing by dd_move_many: '; then
     echo "ok cli/edit-bench"; else echo "FAIL cli/edit-bench: rc $rc: $out"; fi
 
 # ---- .ply and .obj input (datasets/readers.c; binary PLY in test_readers) ---
