@@ -252,28 +252,33 @@ install: all install-python
 	install -d $(DESTDIR)$(PREFIX)/include/dtdel
 	install -m 644 src/dtdel/types.h src/dtdel/stats_types.h $(DESTDIR)$(PREFIX)/include/dtdel/
 
-# ---- Python bindings (issue 42, part 4) -------------------------------------
-# `make python` copies build/libdtdel.so into python/dtdel/, the package
-# ctypes loads it from (PYTHONPATH=python /usr/bin/python3 -c 'import
-# dtdel').  `make install` also puts the package into PYDIR, Debian
-# python3's site dir under PREFIX, recording there the installed
-# library's path, which the installed package loads.
-PYVER := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
-PYDIR ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
-PY_SRC = $(wildcard python/dtdel/*.py)
+# ---- the Python package (python/: meson-python, Cython) ----------------------
+# `make python` builds the compiled extension in place, in build/python,
+# and copies it beside the package's sources, so that PYTHONPATH=python
+# /usr/bin/python3 -c 'import dtdel' works from the top of the tree.
+# `make install` installs the package into PREFIX with pip, as a user
+# would (PIP_BUILD: pip's own meson build dir, kept so that a second
+# install compiles nothing).  The extension compiles the library's
+# sources itself (python/meson.build, python/list_sources.py).
+PYTHON  ?= /usr/bin/python3
+PY_DEPS  = python/meson.build python/pyproject.toml python/list_sources.py $(wildcard python/dtdel/*.py*) $(LIB_SRC) $(HDRS)
+PIP_BUILD = $(abspath build/pip)
+PIP_INSTALL = $(PYTHON) -m pip install --no-build-isolation --no-index --no-deps --quiet \
+	--config-settings=builddir=$(PIP_BUILD)
 .PHONY: python install-python
-python/dtdel/libdtdel.so: $(B)/libdtdel.so
-	cp $< $@
-python: $(B)/libdtdel.so python/dtdel/libdtdel.so
-install-python:
-	install -d $(DESTDIR)$(PYDIR)/dtdel
-	install -m 644 $(PY_SRC) $(DESTDIR)$(PYDIR)/dtdel/
-	rm -f $(DESTDIR)$(PYDIR)/dtdel/_libpath.py
-	echo 'LIBRARY = "$(PREFIX)/lib/$(SONAME)"' >$(DESTDIR)$(PYDIR)/dtdel/_libpath.py
+build/python/.stamp: $(PY_DEPS) | $(DEPS_STAMP)
+	@if [ ! -f build/python/build.ninja ]; then rm -rf build/python; \
+	    meson setup --buildtype=release build/python python >/dev/null || exit 1; fi
+	ninja -C build/python >/dev/null
+	cp build/python/_core*.so python/dtdel/
+	@touch $@
+python: build/python/.stamp
+install-python: | $(DEPS_STAMP)
+	$(PIP_INSTALL) --prefix=$(PREFIX) $(if $(DESTDIR),--root=$(DESTDIR)) ./python
 # ---- end of the Python block ------------------------------------------------
 
 clean:
-	rm -rf build python/dtdel/libdtdel.so python/dtdel/__pycache__
+	rm -rf build python/dtdel/_core*.so python/dtdel/__pycache__
 
 # ---- soak: a million deletions checked against CGAL (not in make test) ------
 # and weighted deletions and moves against CGAL's regular triangulation.

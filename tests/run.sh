@@ -71,9 +71,12 @@ job "release write" sh tests/test_write.sh "$REL/dtdel"
 job "release summarize" sh tests/test_summarize.sh "$REL/summarize"
 job "release exports" sh tests/test_exports.sh "$REL"
 job "release install" sh tests/test_install.sh "$REL"
-# the Python bindings (make python: python/dtdel loads the release libdtdel.so)
+# the Python package (make python: the compiled extension in place in
+# python/dtdel; test_python.py also installs it with make install and
+# into a venv with pip)
 job "release python" env PYTHONPATH=python /usr/bin/python3 tests/test_python.py "$REL/dtdel"
 job "release python-batch" env PYTHONPATH=python:tests /usr/bin/python3 tests/test_python_batch.py "$REL/dtdel"
+job "release python-scipy" env PYTHONPATH=python:tests /usr/bin/python3 tests/test_python_scipy.py "$REL/dtdel"
 for t in "$ASAN"/tests/test_*; do
     case "$t" in *.o) continue ;; esac
     is_slow "$(basename "$t")" || job "asan $(basename "$t")" "$t" small
