@@ -229,10 +229,10 @@ print-cflags-release:
 # ---- bench --------------------------------------------------------------------
 # BENCH_SCALE=4 make bench: four times as many deletions per case.
 BENCH_SCALE ?= 1
-bench: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
+bench: deps $(B)/dtdel $(K)/dtdel $(B)/summarize python
 	@CFLAGS_USED="$(CFLAGS_R)" sh scripts/bench.sh full $(BENCH_SCALE)
 
-bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize
+bench-quick: deps $(B)/dtdel $(K)/dtdel $(B)/summarize python
 	@CFLAGS_USED="$(CFLAGS_R)" sh scripts/bench.sh quick $(BENCH_SCALE)
 
 plots: $(B)/summarize

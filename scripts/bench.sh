@@ -16,7 +16,7 @@
 #   (2c. $DTDEL build-bench -> OUT/build.txt (with dd_write's .vtu of the
 #        same triangulation: size, time), seq-bench -> OUT/sequence.txt,
 #        query-bench, edit-bench, refine-bench -> OUT/queries.txt, edits.txt, refine.txt,
-#        batch-bench -> OUT/batch.txt,
+#        batch-bench -> OUT/batch.txt, scripts/pybench.py -> OUT/python.txt,
 #        regular-bench -> OUT/regular.txt)
 #   (2d. weighted points, hidden points kept (issue 44): $DTDEL wbench ->
 #        OUT/weighted/<dataset>.csv and OUT/wdelete.txt, the per-degree
@@ -109,6 +109,8 @@ run refine.txt "$DTDEL" refine-bench "$nr" --inserts "$nr"
 # (points, weighted points), sorted hinted location, the weighted move pass
 nb=$(by_mode 200000 50000 2000) mb=$(by_mode 50000 10000 500) qb=$(by_mode 1000000 200000 5000) wb=$(by_mode 100000 20000 1000)
 run batch.txt "$DTDEL" batch-bench "$nb" --inserts "$mb" --queries "$qb" --weighted "$wb"
+# the Python package (make python) against scipy.spatial.Delaunay
+run python.txt env PYTHONPATH="${DTDEL_PYTHONPATH:-$PWD/python}" /usr/bin/python3 scripts/pybench.py "$(by_mode full quick tiny)"
 # regular triangulations (weighted points, hidden points kept): the
 # construction and the insertion of new weighted points against CGAL's
 # Regular_triangulation_3; cells and hidden sets must agree

@@ -17,7 +17,7 @@ tree=$tmp/tree
 mkdir -p "$tree"
 (cd "$top" && git ls-files -z README.md scripts results datasets | xargs -0 tar cf -) | (cd "$tree" && tar xf -)
 (cd "$tree" && find README.md results -type f | sort | xargs md5sum) >"$tmp/before"
-(cd "$tree" && DTDEL="$build/dtdel" DTDEL_COUNT="$build/dtdel" SUMMARIZE="$build/summarize" \
+(cd "$tree" && DTDEL="$build/dtdel" DTDEL_COUNT="$build/dtdel" SUMMARIZE="$build/summarize" DTDEL_PYTHONPATH="$top/python" \
     BENCH_SIZES=tiny sh scripts/bench.sh quick 0.02) >"$tmp/out" 2>"$tmp/err"
 rc=$?
 [ $rc -eq 0 ] && ok runs || bad runs "scripts/bench.sh quick exited $rc: $(tail -n 5 "$tmp/err")"
@@ -43,6 +43,13 @@ grep -q "^## All weighted datasets" "$q/summary.md" 2>/dev/null && grep -q "^| w
 grep -q "Written by \`dd_write\` as a binary .vtu, the triangulation of .* MB, in .* s\." "$q/readme-table.md" &&
     [ ! -e "$q/build-write.vtu" ] && ok write-note ||
     bad write-note "no dd_write note in readme-table.md, or results/quick/build-write.vtu left: $(grep write "$q/build.txt")"
+# the Python package against scipy: its table and notes
+[ "$(grep -c '^| .* | .* | .* | .*× |$' "$q/readme-table.md" 2>/dev/null)" -gt 0 ] &&
+    grep -q "^| Python: \`dtdel.Delaunay\` against" "$q/readme-table.md" &&
+    [ "$(sed -n '/^| Python: /,/^$/p' "$q/readme-table.md" | grep -c '×')" -eq 5 ] &&
+    grep -q "An array call from Python takes .* its C call's own time" "$q/readme-table.md" &&
+    grep -q "Two threads build two triangulations" "$q/readme-table.md" &&
+    ok python-rows || bad python-rows "python.txt: $(head -c 600 "$q/python.txt" 2>/dev/null)"
 grep -q "results/quick/summary.md" "$tmp/err" && ok says-where ||
     bad says-where "the run does not say where its results are"
 exit $fail

@@ -504,6 +504,7 @@ int write_readme_table(ctx *c)
     fputc('\n', out);
     readme_queries(c, out);
     write_weighted(c, out);
+    readme_python(c, out);
     free(col);
     free(idx);
     free(sizes);

@@ -9,6 +9,7 @@
  *   summary.c   summary.md per dataset and pooled, plotdata/, the driver
  *   readme.c    readme-table.md (README.md's results table)
  *   weighted.c  the weighted datasets' pool and rows (issue 44)
+ *   python.c    the README's Python table (python.txt, scripts/pybench.py)
  */
 #ifndef SUMMARIZE_H
 #define SUMMARIZE_H
@@ -125,6 +126,9 @@ int readme_row(const ctx *c, const readme_spec *s, const size_t *col, size_t nco
 const char *fmt_int(long long v, char buf[40]);
 const char *fmt_sig(double v, char buf[40]);
 int write_readme_table(ctx *c);
+
+/* ---- python.c ---- */
+void readme_python(const ctx *c, FILE *out);
 
 /* ---- weighted.c ---- */
 void write_refused(const ctx *c, const table *t, size_t ds, FILE *out);
