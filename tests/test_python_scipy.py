@@ -324,8 +324,25 @@ def test_threads():
     check("after the threaded edits", True)
 
 
+def test_readme_example():
+    """The README's Python example runs as printed."""
+    import os
+    import re
+    top = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    text = open(os.path.join(top, "README.md")).read()
+    m = re.search(r"<!-- python-example:begin -->\n```python\n(.*?)```\n<!-- python-example:end -->", text, re.S)
+    check("README has the Python example", m is not None, "")
+    if m:
+        import contextlib
+        import io
+        env = {}
+        with contextlib.redirect_stdout(io.StringIO()):
+            exec(compile(m.group(1), "README.md", "exec"), env)
+        check("README example: smoothed, edited, checked", env["tri"].nsimplex > 0 and len(env["new"]) == 1000, "")
+
+
 def main():
-    for f in (test_against_scipy, test_degenerate, test_edits, test_weighted, test_errors, test_threads):
+    for f in (test_readme_example, test_against_scipy, test_degenerate, test_edits, test_weighted, test_errors, test_threads):
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
