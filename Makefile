@@ -218,7 +218,7 @@ test: deps
 # The files make test, bench, soak and fuzz build (tests/test_make.sh
 # checks that each waits for the deps stamp).
 print-goals:
-	@echo $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
+	@echo $(B)/python/.stamp $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
 
 # The flags of the contract and release builds (tests/test_fpeval.sh).
 print-cflags-contract:
@@ -262,17 +262,17 @@ install: all install-python
 # sources itself (python/meson.build, python/list_sources.py).
 PYTHON  ?= /usr/bin/python3
 PY_DEPS  = python/meson.build python/pyproject.toml python/list_sources.py $(wildcard python/dtdel/*.py*) $(LIB_SRC) $(HDRS)
-PIP_BUILD = $(abspath build/pip)
+PIP_BUILD = $(abspath $(B)/pip)
 PIP_INSTALL = $(PYTHON) -m pip install --no-build-isolation --no-index --no-deps --quiet \
 	--config-settings=builddir=$(PIP_BUILD)
 .PHONY: python install-python
-build/python/.stamp: $(PY_DEPS) | $(DEPS_STAMP)
-	@if [ ! -f build/python/build.ninja ]; then rm -rf build/python; \
-	    meson setup --buildtype=release build/python python >/dev/null || exit 1; fi
-	ninja -C build/python >/dev/null
-	cp build/python/_core*.so python/dtdel/
+$(B)/python/.stamp: $(PY_DEPS) | $(DEPS_STAMP)
+	@if [ ! -f $(B)/python/build.ninja ]; then rm -rf $(B)/python; \
+	    meson setup --buildtype=release $(B)/python python >/dev/null || exit 1; fi
+	ninja -C $(B)/python >/dev/null
+	cp $(B)/python/_core*.so python/dtdel/
 	@touch $@
-python: build/python/.stamp
+python: $(B)/python/.stamp
 install-python: | $(DEPS_STAMP)
 	$(PIP_INSTALL) --prefix=$(PREFIX) $(if $(DESTDIR),--root=$(DESTDIR)) ./python
 # ---- end of the Python block ------------------------------------------------
