@@ -947,59 +947,77 @@ cdef class Triangulation:
         return s
 
     # ---- the finite arrays scipy's Delaunay has ------------------------------
-    def _finite(self):
-        """One pass over the cell ids: (simplices, neighbors, cell_to_simplex,
-        vertex_to_simplex, hull): the live finite cells in id order as
-        (k, 4) intc arrays (vertices positively oriented; neighbours by
-        simplex index, -1 across the hull), each cell id's simplex index
-        (-1 for infinite or dead ids), each input index's first simplex
-        (-1 for a non-vertex), and the hull facets (h, 3), oriented so
-        that the right-hand normal points out.  O(cells)."""
+    def _simplices(self):
+        """(simplices, cell_to_simplex): the live finite cells in id order,
+        a (k, 4) intc array (positively oriented), and each cell id's
+        simplex index (-1 for an infinite or dead id).  One sequential
+        pass over the ids, O(cells)."""
         self.rd()
         cdef dd_cell_id end = dd_cell_end(self.t), c
-        cdef uint32_t nin = dd_num_input(self.t)
-        cdef size_t nfin = dd_num_finite_tets(self.t), ninf = dd_num_tets(self.t) - nfin
-        c2s = np.full(end, -1, dtype=np.int32)
+        cdef size_t nfin = dd_num_finite_tets(self.t), k = 0
+        c2s = np.empty(end, dtype=np.int32)
         simp = np.empty((nfin, 4), dtype=np.intc)
-        nbr = np.empty((nfin, 4), dtype=np.intc)
-        v2s = np.full(nin, -1, dtype=np.intc)
-        hull = np.empty((ninf, 3), dtype=np.intc)
         cdef int32_t[::1] cs = c2s
         cdef int[:, ::1] sv = simp
-        cdef int[:, ::1] sn = nbr
-        cdef int[::1] vs = v2s
-        cdef int[:, ::1] hv = hull
         cdef int32_t v[4]
-        cdef dd_cell_id nb[4]
-        cdef size_t k = 0, h = 0
-        cdef int i, inf
         cdef double t0
         with nogil:
             t0 = now()
             for c in range(end):
-                if dd_cell(self.t, c, v, NULL) != 0:
+                cs[c] = -1
+                if dd_cell(self.t, c, v, NULL) != 0 or v[0] < 0 or v[1] < 0 or v[2] < 0 or v[3] < 0:
                     continue
-                if v[0] >= 0 and v[1] >= 0 and v[2] >= 0 and v[3] >= 0:
-                    cs[c] = <int32_t>k
-                    k += 1
-            k = 0
-            for c in range(end):
-                if dd_cell(self.t, c, v, nb) != 0:
-                    continue
-                if cs[c] < 0:
-                    inf = 0 if v[0] < 0 else 1 if v[1] < 0 else 2 if v[2] < 0 else 3
-                    hull_facet(v, inf, &hv[h, 0])
-                    h += 1
-                    continue
-                for i in range(4):
-                    sv[k, i] = v[i]
-                    sn[k, i] = cs[nb[i]]
-                    if vs[v[i]] < 0:
-                        vs[v[i]] = <int>k
+                cs[c] = <int32_t>k
+                sv[k, 0] = v[0]; sv[k, 1] = v[1]; sv[k, 2] = v[2]; sv[k, 3] = v[3]
                 k += 1
             self.last_c_seconds = now() - t0
         self.un()
-        return simp, nbr, c2s, v2s, hull
+        return simp, c2s
+
+    def _neighbors(self, cnp.ndarray c2s_arr):
+        """scipy's neighbors of _simplices' simplices: (k, 4) intc, the
+        simplex across the facet opposite vertex i, -1 across the hull.
+        c2s_arr: _simplices' cell_to_simplex, of this same state."""
+        self.rd()
+        cdef dd_cell_id end = dd_cell_end(self.t), c
+        cdef size_t nfin = dd_num_finite_tets(self.t)
+        if <dd_cell_id>cnp.PyArray_DIM(c2s_arr, 0) != end:
+            self.un()
+            raise arg_error("_neighbors: a cell_to_simplex of another state")
+        nbr = np.empty((nfin, 4), dtype=np.intc)
+        cdef int32_t[::1] cs = c2s_arr
+        cdef int[:, ::1] sn = nbr
+        cdef dd_cell_id nb[4]
+        cdef int32_t k
+        with nogil:
+            for c in range(end):
+                k = cs[c]
+                if k < 0 or dd_cell(self.t, c, NULL, nb) != 0:
+                    continue
+                sn[k, 0] = cs[nb[0]]; sn[k, 1] = cs[nb[1]]; sn[k, 2] = cs[nb[2]]; sn[k, 3] = cs[nb[3]]
+        self.un()
+        return nbr
+
+    def _hull(self):
+        """The hull's triangles, (h, 3) intc, each ordered so that its
+        right-hand normal points away from the hull.  O(cells)."""
+        self.rd()
+        cdef dd_cell_id end = dd_cell_end(self.t), c
+        cdef size_t ninf = dd_num_tets(self.t) - dd_num_finite_tets(self.t), h = 0
+        hull = np.empty((ninf, 3), dtype=np.intc)
+        cdef int[:, ::1] hv = hull
+        cdef int32_t v[4]
+        cdef int inf
+        with nogil:
+            for c in range(end):
+                if dd_cell(self.t, c, v, NULL) != 0:
+                    continue
+                inf = 0 if v[0] < 0 else 1 if v[1] < 0 else 2 if v[2] < 0 else 3 if v[3] < 0 else -1
+                if inf >= 0 and h < ninf:
+                    hull_facet(v, inf, &hv[h, 0])
+                    h += 1
+        self.un()
+        return hull
 
     def _aliases(self):
         """dd_alias of every input index (int64; -1 where it names no point)."""

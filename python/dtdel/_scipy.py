@@ -161,10 +161,9 @@ class Delaunay:
             self._cache.update(make())
         return self._cache[name]
 
-    def _finite(self):
-        s, n, c2s, v2s, hull = self._tri._finite()
-        return {"simplices": _frozen(s), "neighbors": _frozen(n), "_c2s": c2s,
-                "vertex_to_simplex": _frozen(v2s), "convex_hull": _frozen(hull)}
+    def _simplices(self):
+        s, c2s = self._tri._simplices()
+        return {"simplices": _frozen(s), "_c2s": c2s}
 
     # ---- scipy's attributes ---------------------------------------------------------
     @property
@@ -173,19 +172,25 @@ class Delaunay:
 
     @property
     def simplices(self):
-        return self._get("simplices", self._finite)
+        return self._get("simplices", self._simplices)
 
     @property
     def neighbors(self):
-        return self._get("neighbors", self._finite)
+        c2s = self._get("_c2s", self._simplices)
+        return self._get("neighbors", lambda: {"neighbors": _frozen(self._tri._neighbors(c2s))})
 
     @property
     def vertex_to_simplex(self):
-        return self._get("vertex_to_simplex", self._finite)
+        def make():
+            s = self.simplices
+            v2s = np.full(self.npoints, -1, dtype=np.intc)
+            v2s[s.ravel()] = np.repeat(np.arange(len(s), dtype=np.intc), 4)
+            return {"vertex_to_simplex": _frozen(v2s)}
+        return self._get("vertex_to_simplex", make)
 
     @property
     def convex_hull(self):
-        return self._get("convex_hull", self._finite)
+        return self._get("convex_hull", lambda: {"convex_hull": _frozen(self._tri._hull())})
 
     @property
     def vertex_neighbor_vertices(self):
@@ -230,7 +235,7 @@ class Delaunay:
             if len(hid):
                 xyz = self.points[hid]
                 rows[len(dup):, 0] = hid
-                rows[len(dup):, 1] = self._get("_c2s", self._finite)[t.locate_many(xyz)]
+                rows[len(dup):, 1] = self._get("_c2s", self._simplices)[t.locate_many(xyz)]
                 rows[len(dup):, 2] = t.nearest_many(xyz)
             rows = rows[np.argsort(rows[:, 0], kind="stable")]
             return {"coplanar": _frozen(rows)}
@@ -258,7 +263,7 @@ class Delaunay:
             raise DtdelError(_ERR_UNSUPPORTED, "find_simplex: the test is exact; tol is not supported "
                              "(got %r)" % (tol,))
         q, shape = _queries(xi, "find_simplex")
-        c2s = self._get("_c2s", self._finite)
+        c2s = self._get("_c2s", self._simplices)
         return c2s[self._tri.locate_many(q)].astype(np.intc, copy=False).reshape(shape)
 
     # ---- what scipy cannot do -------------------------------------------------------
