@@ -54,7 +54,11 @@ SONAME   := libdtdel.so.$(call version_part,MAJOR)
 # src/ uses only those before it; variants/ and src/api/ sit on top.
 LAYERS   = geom mesh delete wrap
 LIB_SRC  = $(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)) $(wildcard variants/*.c) $(wildcard src/api/*.c)
-CLI_SRC  = $(wildcard src/cli/*.c)
+# The command's layers, above them, bottom up: src/tool (what both halves
+# share), src/bench (the benchmark harness), src/cli (the user's commands
+# and the command table); build/dtdel links all three.
+CLI_LAYERS = tool bench cli
+CLI_SRC  = $(foreach l,$(CLI_LAYERS),$(wildcard src/$(l)/*.c))
 DATA_SRC = $(wildcard datasets/*.c)
 SHIM_SRC = $(wildcard src/cgal/*.cpp)
 # The CGAL reference objects, compiled once in the release build (see below).
@@ -196,7 +200,7 @@ $(K)/dtdel: $(CLI_SRC:%.c=$(K)/obj/%.o) $(DATA_OBJ_K) $(SHIM_OBJ) $(K)/libdtdel.
 # ---- bench summary and plots ----------------------------------------------------
 # scripts/summarize/: one program, its files compiled together
 SUM_SRC = $(sort $(wildcard scripts/summarize/*.c))
-SUM_DEPS = $(SUM_SRC) scripts/summarize/summarize.h src/cli/buckets.h
+SUM_DEPS = $(SUM_SRC) scripts/summarize/summarize.h src/bench/buckets.h
 $(B)/summarize: $(SUM_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_R) $(SUM_SRC) -o $@ -lm

@@ -9,7 +9,7 @@
 # deletion / re-insertion ratios: per run, the median over the vertices
 # of degree >= MINDEG (default 32) of the paired row's deletion time over
 # the re-insertion's (auto-paired and insert, timed in turn on the same
-# vertex; see src/cli/cli_bench.c).  Prints each run's median, then per
+# vertex; see src/bench/bench.c).  Prints each run's median, then per
 # binary the mean and standard deviation over its runs, and B - A with
 # its standard error.
 #

@@ -7,8 +7,12 @@
 # belongs to a layer, bottom up (docs/architecture.md):
 #
 #   src/dtdel (the shared types), src/geom, src/mesh, src/delete, src/wrap,
-#   variants, src/api and src/*.h (the API), and, on top, the CLI's side:
-#   src/cli, datasets and src/cgal, which the library must not use at all.
+#   variants, src/api and src/*.h (the API): the library; then the
+#   command's side, which the library must not use at all: datasets and
+#   src/cgal (the points and the CGAL reference, side by side), src/tool
+#   (what the command's two halves share), src/bench (the benchmark
+#   harness) and, on top, src/cli (the user's commands and the command
+#   table, which dispatches the bench's too).
 #
 # Two checks, each failing the run:
 #  - calls: for every global symbol an object uses (nm -u), the layer of
@@ -40,12 +44,16 @@ function rank(p) {
     if (p ~ /^src\/wrap\//) return 4
     if (p ~ /^variants\//) return 5
     if (p ~ /^src\/api\// || p ~ /^src\/[^\/]*$/) return 6
-    if (p ~ /^(src\/cli|src\/cgal|datasets)\//) return 7
-    return 9
+    if (p ~ /^(src\/cgal|datasets)\//) return 7
+    if (p ~ /^src\/tool\//) return 8
+    if (p ~ /^src\/bench\//) return 9
+    if (p ~ /^src\/cli\//) return 10
+    return 99
 }
 function layer(r) {
     return r == 0 ? "src/dtdel" : r == 1 ? "geom" : r == 2 ? "mesh" : r == 3 ? "delete" : r == 4 ? "wrap" : \
-           r == 5 ? "variants" : r == 6 ? "the API" : r == 7 ? "the CLI side" : "no layer"
+           r == 5 ? "variants" : r == 6 ? "the API" : r == 7 ? "datasets and CGAL" : r == 8 ? "tool" : \
+           r == 9 ? "bench" : r == 10 ? "cli" : "no layer"
 }'
 
 tmp=$(mktemp -d)

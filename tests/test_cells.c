@@ -19,7 +19,7 @@
 #include <math.h>
 #include "dtdel.h"
 #include "cgal/cgal_shim.h"
-#include "cli/refine_rule.h"
+#include "bench/refine_rule.h"
 #include "../datasets/datasets.h"
 
 static int small;

@@ -154,7 +154,7 @@ if [ $rc -eq 0 ] && grep -q 'bench: 0 mismatches' "$tmp/err" && [ "$nv" -eq 4 ] 
 # vertices) with --bucket-min 3 deletes at least min(3, c) vertices of
 # each degree bucket holding c vertices of DT(S), and at most 3 + 4;
 # the degrees counted here from `dtdel tets` (distinct neighbours, the
-# infinite vertex included), the buckets of src/cli/buckets.h
+# infinite vertex included), the buckets of src/bench/buckets.h
 bucket_awk='function bk(d,  k) { if (d < 4) return 0; if (d < 8) return 1; k = 3; while (d >= 2 ^ (k + 1)) k++; return 2 + 2 * (k - 3) + (d >= 3 * 2 ^ (k - 1)) }'
 "$DTDEL" gen uniform 20000 >"$tmp/u20k.xyz" && "$DTDEL" tets "$tmp/u20k.xyz" |
     awk "$bucket_awk"' { for (i = 1; i <= 4; i++) for (j = i + 1; j <= 4; j++) { a = $i; b = $j; if (a > b) { x = a; a = b; b = x }

@@ -4,8 +4,10 @@
 # the culprit, on each violation planted in turn: no objects, a missing
 # object, nm failing, upward includes of every spelling (a relative
 # path, blanks after the #, no folder, <...>, a name that resolves to no
-# file), the engine including or calling datasets/ or src/cgal, and an
-# upward call.
+# file), the engine including or calling datasets/ or src/cgal, an
+# upward call, and the command's own boundaries: src/bench including or
+# calling src/cli, src/tool calling src/bench, and src/cgal calling
+# src/tool; and that src/cli calling src/bench, a downward call, passes.
 #
 #   sh tests/test_layers.sh OBJDIR      (a release build's build/obj)
 set -u
@@ -127,5 +129,25 @@ run call-cgal FAIL 'src/api/planted.o (the API) calls dd_cgal_build, defined in 
 fresh
 plant_call src/mesh/planted.c dd_wrap_fill
 run call-upward FAIL 'src/mesh/planted.o (mesh) calls dd_wrap_fill, defined in src/wrap/'
+
+fresh
+plant_include src/bench/bench.c '#include "cli/cli.h"'
+run include-bench-cli FAIL 'src/bench/bench.c (bench) includes "cli/cli.h" = src/cli/cli.h (cli)'
+
+fresh
+plant_call src/bench/planted.c cmd_delete
+run call-bench-cli FAIL 'src/bench/planted.o (bench) calls cmd_delete, defined in src/cli/cli_delete.o (cli)'
+
+fresh
+plant_call src/tool/planted.c gen_points
+run call-tool-bench FAIL 'src/tool/planted.o (tool) calls gen_points, defined in src/bench/options.o (bench)'
+
+fresh
+plant_call src/cgal/planted.c usage_error
+run call-cgal-tool FAIL 'src/cgal/planted.o (datasets and CGAL) calls usage_error, defined in src/tool/tool.o (tool)'
+
+fresh
+plant_call src/cli/planted.c gen_points
+run call-cli-bench ok ""
 
 [ "$failed" -eq 0 ]

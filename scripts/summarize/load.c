@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/buckets.h"
+#include "bench/buckets.h"
 #include "summarize.h"
 
 #define NFIELDS 13

@@ -26,14 +26,14 @@
  * any output is written.
  *
  * The variant "insert" is not a deletion: the bench driver's row timing our
- * engine's re-insertion of the deleted vertex (see src/cli_bench.c), the
+ * engine's re-insertion of the deleted vertex (see src/bench/bench.c), the
  * cost deletions are measured against.  It is the last column of the time
  * table, gets no ratio to cgal there nor in the plot data (so the ratio
  * plot leaves it out; it has no tets or phases either), and its match 0
  * means the re-insertion did not restore the triangulation.  "Engine
  * deletion variants" below are all variants but cgal, cgal-rnd and insert.
  *
- * Degree buckets: src/buckets.h ([4,8), [8,12), [12,16), [16,24), ...,
+ * Degree buckets: src/bench/buckets.h ([4,8), [8,12), [12,16), [16,24), ...,
  * nearly even steps on the log axis).  Empty buckets are skipped.  A bucket's
  * plotted x is the middle of its integer degrees, (lo + hi - 1) / 2.
  * "deletions" in a bucket is the row count of the variant with the most

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/buckets.h"
+#include "bench/buckets.h"
 #include "summarize.h"
 
 /* ---- readme-table.md -------------------------------------------------------------- */

@@ -16,7 +16,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 
-#include "cli/buckets.h"
+#include "bench/buckets.h"
 #include "summarize.h"
 
 #define MAX_LISTED_MISMATCHES 20

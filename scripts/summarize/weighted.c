@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/buckets.h"
+#include "bench/buckets.h"
 #include "summarize.h"
 
 /* On a weighted dataset: the engine deletion variants of the run with no

@@ -20,7 +20,7 @@ extern "C" {
 
 typedef struct dd_cgalr dd_cgalr;
 
-/* The refinement rule (src/cli/refine_rule.h): q, the cell's points in
+/* The refinement rule (src/bench/refine_rule.h): q, the cell's points in
  * ascending input index; 1 if queued, with the point c to insert and the
  * priority *r2 (larger first, ties to the lexicographically smaller
  * sorted vertex indices).                                               */

@@ -1,90 +1,31 @@
 /*
- * cli.c -- the dtdel command line.  The only place that prints to the user
- * and picks exit codes: 0 success, 1 bad input, 2 bad usage.
+ * cli.c -- the dtdel command line: the command table and its dispatcher.
+ * The command (src/cli/, src/bench/, src/tool/) is the only code that
+ * prints to the user and picks exit codes: 0 success, 1 bad input, 2 bad
+ * usage.  The table holds every command's usage and help; the dispatcher
+ * answers --help and, when a command returns EXIT_SHOW_USAGE
+ * (usage_error, src/tool/tool.h), prints its usage line.
  *
  *   dtdel gen DATASET N [--seed S]   points of a dataset as .xyz (.xyzw) on stdout
  *   dtdel tets FILE [--out F]        canonical DT(points of FILE), or a mesh file
  *                                    (the regular triangulation for weights)
  *   dtdel cgal-tets FILE             the same computed by CGAL
- *   (hidden, cgal-hidden: cli_regular.c)
- *   dtdel build-bench N [--seed S]   construction speed against CGAL (and
- *                                    dd_write's, --write F)
  *   dtdel variants                   the deletion strategies and CGAL rows
- *   (delete, time, check: cli_delete.c; bench, seq-bench: cli_bench.c)
+ *   (hidden, cgal-hidden: cli_regular.c; delete, time, check: cli_delete.c;
+ *   locate, move: cli_locate.c; the bench commands: src/bench/)
  */
 #include "cli/cli.h"
+#include "bench/bench.h"
 #include "dtdel/alloc.h"
 
-#include <errno.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
-
-static const command *find_command(const char *name);
-
-int usage_error(const char *cmd, const char *fmt, const char *arg)
-{
-    fprintf(stderr, "dtdel %s: ", cmd);
-    fprintf(stderr, fmt, arg);
-    const command *c = find_command(cmd);
-    fprintf(stderr, "\nusage: dtdel %s\n", c ? c->usage : "");
-    return EXIT_USAGE;
-}
-
-int wants_help(int argc, char **argv)
-{
-    for (int i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
-    return 0;
-}
-
-int print_help(const char *cmd)
-{
-    const command *c = find_command(cmd);
-    printf("usage: dtdel %s\n\n%s\n", c->usage, c->help);
-    return 0;
-}
-
-int parse_u64(const char *s, uint64_t *out)
-{
-    if (!s || !*s || *s == '-') return -1;
-    char *end;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 10);
-    if (errno || *end) return -1;
-    *out = v;
-    return 0;
-}
-
-int parse_num_opts(const char *cmd, int argc, char **argv, const num_opt *opts, int n)
-{
-    for (int i = 1; i < argc; i++) {
-        const int positional = argv[i][0] != '-';
-        int k = 0;
-        while (k < n && (positional ? opts[k].flag != NULL : !opts[k].flag || strcmp(argv[i], opts[k].flag))) k++;
-        if (k == n) return usage_error(cmd, "unknown option '%s'", argv[i]);
-        const char *val = positional ? argv[i] : i + 1 < argc ? argv[++i] : NULL;
-        if (!val || parse_u64(val, opts[k].dst) || *opts[k].dst > 50000000)
-            return usage_error(cmd, "bad number for '%s'", argv[i]);
-    }
-    return 0;
-}
-
-double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* ---- gen ------------------------------------------------------------------ */
 
 static int cmd_gen(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("gen");
     const char *name = NULL, *nstr = NULL;
     uint64_t n = 0, seed = 1;
     for (int i = 1; i < argc; i++) {
@@ -116,15 +57,6 @@ static int cmd_gen(int argc, char **argv)
     return 0;
 }
 
-int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, double **xyz, uint32_t *np)
-{
-    char msg[512];
-    dd_status s = dd_gen(dataset, (uint32_t)n, seed, xyz, np, msg, sizeof msg);
-    if (s == DD_OK) return 0;
-    fprintf(stderr, "dtdel %s: %s\n", cmd, msg);
-    return s == DD_ERR_PARSE ? EXIT_USAGE : EXIT_INPUT;
-}
-
 /* ---- tets ----------------------------------------------------------------- */
 
 int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
@@ -136,11 +68,6 @@ int load_file(const char *cmd, const char *path, double **xyz, uint32_t *np)
         return EXIT_INPUT;
     }
     return 0;
-}
-
-int same_canonical(const int32_t *a, size_t na, const int32_t *b, size_t nb)
-{
-    return na == nb && !memcmp(a, b, 4 * na * sizeof *a);
 }
 
 void write_tets(const int32_t *tets, size_t n)
@@ -182,7 +109,6 @@ static int write_mesh_file(dd_tri *t, const char *out, unsigned wflags)
 
 static int cmd_tets(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("tets");
     const char *file = NULL, *out = NULL;
     unsigned flags = 0, wflags = 0;
     for (int i = 1; i < argc; i++) {
@@ -223,7 +149,6 @@ static int cmd_tets(int argc, char **argv)
 
 static int cmd_cgal_tets(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("cgal-tets");
     const char *file = NULL;
     int discard = 0;
     for (int i = 1; i < argc; i++) {
@@ -235,142 +160,10 @@ static int cmd_cgal_tets(int argc, char **argv)
     return cgal_tets_file(file, discard);
 }
 
-/* ---- build-bench ---------------------------------------------------------- */
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-double median_of(double *a, size_t n)
-{
-    qsort(a, n, sizeof *a, cmp_double);
-    return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
-}
-
-uint32_t draw_vertex(const dd_tri *t, uint64_t *x, uint32_t np, unsigned char *used)
-{
-    uint32_t v;
-    do v = rand_below(x, np);
-    while (used[v] || !dd_is_vertex(t, v));
-    used[v] = 1;
-    return v;
-}
-
-int take_dataset_option(const char *cmd, int argc, char **argv, int *i, const char **dataset, uint64_t *seed,
-                        int *rc)
-{
-    *rc = 0;
-    if (!strcmp(argv[*i], "--seed")) {
-        if (++*i >= argc || parse_u64(argv[*i], seed))
-            *rc = usage_error(cmd, "--seed needs a non-negative integer%s", "");
-        return 1;
-    }
-    if (!strcmp(argv[*i], "--dataset")) {
-        if (++*i >= argc) *rc = usage_error(cmd, "--dataset needs a name%s", "");
-        else *dataset = argv[*i];
-        return 1;
-    }
-    return 0;
-}
-
-#define BUILD_MAX_REPS 9
-
-/* `dtdel build-bench --write FILE`: the triangulation written to FILE by
- * dd_write, timed once; its size and time on one line.                  */
-static int time_write(const dd_tri *t, const char *path)
-{
-    const double t0 = now_seconds();
-    const dd_status s = dd_write(t, path);
-    const double secs = now_seconds() - t0;
-    struct stat st;
-    if (s != DD_OK || stat(path, &st) != 0) {
-        fprintf(stderr, "dtdel build-bench: %s: %s\n", path,
-                s == DD_OK || s == DD_ERR_IO ? "cannot write the file" : dd_status_name(s));
-        return EXIT_INPUT;
-    }
-    printf("write: %s (dd_write) of %zu finite cells: %lld bytes (%.1f MB) in %.3f s\n", path,
-           dd_num_finite_tets(t), (long long)st.st_size, (double)st.st_size / 1e6, secs);
-    return 0;
-}
-
-/* `dtdel build-bench`: each engine builds R times, in turns (dtdel,
- * CGAL, dtdel, ...), so that a slow spell of the machine hits both; the
- * medians are compared, as the deletion bench compares medians, and the
- * last pair of triangulations with each other; then, with --write, the
- * last triangulation is written (time_write).                           */
-static int cmd_build_bench(int argc, char **argv)
-{
-    if (wants_help(argc, argv)) return print_help("build-bench");
-    const char *dataset = "uniform", *wpath = NULL;
-    uint64_t n = 1000000, seed = 1, reps = 3;
-    for (int i = 1, rc; i < argc; i++) {
-        if (take_dataset_option("build-bench", argc, argv, &i, &dataset, &seed, &rc)) {
-            if (rc) return rc;
-        } else if (!strcmp(argv[i], "--write")) {
-            if (++i >= argc) return usage_error("build-bench", "--write needs a file name%s", "");
-            wpath = argv[i];
-        } else if (!strcmp(argv[i], "--reps")) {
-            if (++i >= argc || parse_u64(argv[i], &reps) || reps < 1 || reps > BUILD_MAX_REPS)
-                return usage_error("build-bench", "--reps needs an integer from 1 to 9%s", "");
-        } else if (parse_u64(argv[i], &n) || n > UINT32_MAX / 8) {
-            return usage_error("build-bench", "N must be a non-negative integer, got '%s'", argv[i]);
-        }
-    }
-    double *xyz;
-    uint32_t np;
-    char msg[512];
-    int rc = gen_points("build-bench", dataset, n, seed, &xyz, &np);
-    if (rc) return rc;
-    double ours[BUILD_MAX_REPS], theirs[BUILD_MAX_REPS];
-    dd_tri *t = NULL;
-    dd_cgal *c = NULL;
-    for (uint64_t r = 0; r < reps; r++) {
-        dd_free(t);                          /* the last pair is compared */
-        dd_cgal_free(c);
-        t = NULL;
-        c = NULL;
-        double t0 = now_seconds();
-        dd_status s = dd_create(&t, xyz, np, msg, sizeof msg);
-        double t1 = now_seconds();
-        if (s != DD_OK) {
-            fprintf(stderr, "dtdel build-bench: %s\n", msg);
-            dd_mfree(xyz);
-            return EXIT_INPUT;
-        }
-        c = dd_cgal_build(xyz, np);
-        double t2 = now_seconds();
-        ours[r] = t1 - t0;
-        theirs[r] = t2 - t1;
-    }
-    int same = 0;
-    int32_t *a = NULL, *b = NULL;
-    size_t na = 0, nb = 0;
-    if (c && dd_canonical(t, &a, &na) == DD_OK && !dd_cgal_canonical(c, &b, &nb))
-        same = same_canonical(a, na, b, nb);
-    dd_mfree(a);
-    dd_mfree(b);
-    double to = median_of(ours, reps), tc = median_of(theirs, reps);   /* sorted now */
-    printf("dataset %s, n = %u, %zu cells (%zu finite)\n", dataset, np, dd_num_tets(t), dd_num_finite_tets(t));
-    printf("runs: %u each, alternated; medians (fastest-slowest)\n", (unsigned)reps);
-    printf("dtdel: %.3f s, %.0f points/s (%.3f-%.3f s)\n", to, np / to, ours[0], ours[reps - 1]);
-    printf("cgal:  %.3f s, %.0f points/s (%.3f-%.3f s) (%s)\n", tc, np / tc, theirs[0], theirs[reps - 1],
-           dd_cgal_version());
-    printf("speed ratio dtdel/cgal: %.2f\n", tc / to);
-    printf("bytes per cell: %.1f (all arrays, capacity included)\n",
-           (double)dd_memory_bytes(t) / (double)dd_num_tets(t));
-    printf("identical to CGAL: %s\n", same ? "yes" : "NO");
-    dd_cgal_free(c);
-    const int wrc = wpath ? time_write(t, wpath) : 0;
-    dd_free(t);
-    dd_mfree(xyz);
-    return same ? wrc : EXIT_INPUT;
-}
-
 static int cmd_variants(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("variants");
+    (void)argc;                 /* arguments other than --help are ignored */
+    (void)argv;
     for (size_t i = 0; dd_variant_name(i); i++)
         printf("%-14s %s%s\n", dd_variant_name(i), dd_variant_description(i), i == 0 ? " [default]" : "");
     printf("%-14s %s\n", "cgal", "CGAL's own remove() (triangulate and sew), the reference");
@@ -379,6 +172,15 @@ static int cmd_variants(int argc, char **argv)
 }
 
 /* ---- dispatch ------------------------------------------------------------- */
+
+/* A command: its name, its usage line and help (dtdel NAME --help), and
+ * what runs it, with argv from the name on.                             */
+typedef struct command {
+    const char *name;
+    const char *usage;
+    const char *help;
+    int (*run)(int argc, char **argv);
+} command;
 
 static const command commands[] = {
     {"gen", "gen DATASET N [--seed S]",
@@ -551,6 +353,14 @@ static const command commands[] = {
      "triangulations are identical (exit 1 if not).", cmd_seq_bench},
     {NULL, NULL, NULL, NULL}};
 
+/* 1 when an argument is --help or -h. */
+static int wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
+    return 0;
+}
+
 static const command *find_command(const char *name)
 {
     for (const command *c = commands; c->name; c++)
@@ -584,5 +394,12 @@ int main(int argc, char **argv)
         main_usage(stderr);
         return EXIT_USAGE;
     }
-    return c->run(argc - 1, argv + 1);
+    if (wants_help(argc - 1, argv + 1)) {
+        printf("usage: dtdel %s\n\n%s\n", c->usage, c->help);
+        return 0;
+    }
+    const int rc = c->run(argc - 1, argv + 1);
+    if (rc != EXIT_SHOW_USAGE) return rc;
+    fprintf(stderr, "usage: dtdel %s\n", c->usage);
+    return EXIT_USAGE;
 }

@@ -1,56 +1,19 @@
 /*
- * cli_delete.c -- the deletion subcommands and the comparison rows.
+ * cli_delete.c -- the deletion subcommands.
  *
  *   dtdel delete FILE --vertex I[,J,...] [--variant NAME]
  *   dtdel time   FILE --vertex I --variant NAME [--repeat R]
  *   dtdel check  FILE [--variant NAME|all] [--deletions K] [--seed S] [--sequence]
  *
- * A row is one way to delete: an engine strategy (variants/), "cgal"
- * (CGAL's remove() through the shim) or "cgal-rnd" (the shim's
- * triangulate-and-sew in random order).  Every row's result but cgal's,
- * the reference, is compared with CGAL's canonical form.
+ * Their --variant names a row (tool.h: an engine strategy, cgal or
+ * cgal-rnd); every row's result but cgal's, the reference, is compared
+ * with CGAL's canonical form.
  */
 #include "cli/cli.h"
 #include "dtdel/alloc.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-size_t all_rows(row *rows, size_t max)
-{
-    size_t n = 0;
-    for (size_t i = 0; dd_variant_name(i) && n < max; i++) {
-        rows[n].name = dd_variant_name(i);
-        rows[n].kind = ROW_ENGINE;
-        n++;
-    }
-    if (n < max) { rows[n].name = "cgal"; rows[n].kind = ROW_CGAL; n++; }
-    if (n < max) { rows[n].name = "cgal-rnd"; rows[n].kind = ROW_CGAL_RND; n++; }
-    return n;
-}
-
-int find_row(const char *name, row *out)
-{
-    row rows[32];
-    size_t n = all_rows(rows, 32);
-    for (size_t i = 0; i < n; i++)
-        if (!strcmp(rows[i].name, name)) { *out = rows[i]; return 1; }
-    return 0;
-}
-
-int row_delete(const row *r, dd_tri *t, dd_cgal *g, uint32_t v, uint64_t seed)
-{
-    switch (r->kind) {
-    case ROW_ENGINE: return dd_delete_with(t, v, r->name) != DD_OK;
-    case ROW_CGAL: return dd_cgal_remove(g, v);
-    default: return dd_cgal_remove_rnd(g, v, seed);
-    }
-}
-
-int row_reinsert(const row *r, dd_tri *t, dd_cgal *g, uint32_t v)
-{
-    return r->kind == ROW_ENGINE ? dd_reinsert(t, v) != DD_OK : dd_cgal_reinsert(g, v);
-}
 
 /* `dtdel time --variant insert`: deletes input vertex v untimed (default
  * strategy), then times its re-insertion alone into *secs.  0; -1 when
@@ -117,16 +80,10 @@ static int load_both(const char *cmd, const char *path, int want_cgal, dd_tri **
     return 0;
 }
 
-int row_canonical(const row *r, dd_tri *t, dd_cgal *g, int32_t **a, size_t *n)
-{
-    return r->kind == ROW_ENGINE ? dd_canonical(t, a, n) != DD_OK : dd_cgal_canonical(g, a, n);
-}
-
 /* ---- delete --------------------------------------------------------------- */
 
 int cmd_delete(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("delete");
     const char *file = NULL, *vlist = NULL, *var = NULL;
     int stats = 0, set = 0;
     for (int i = 1; i < argc; i++) {
@@ -217,7 +174,6 @@ int cmd_delete(int argc, char **argv)
 
 int cmd_time(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("time");
     const char *file = NULL, *var = NULL;
     uint64_t v = UINT64_MAX, repeat = 5;
     for (int i = 1; i < argc; i++) {
@@ -291,7 +247,6 @@ int cmd_time(int argc, char **argv)
 
 int cmd_check(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("check");
     const char *file = NULL, *var = "all";
     uint64_t k = 20, seed = 1;
     int sequence = 0;

@@ -26,7 +26,6 @@ static int parse_coord(const char *s, double *x)
 
 int cmd_locate(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("locate");
     if (argc != 5) return usage_error("locate", "expected FILE X Y Z%s", "");
     double p[3];
     for (int c = 0; c < 3; c++)
@@ -58,7 +57,6 @@ int cmd_locate(int argc, char **argv)
  * move (as `delete` writes it).                                          */
 int cmd_move(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("move");
     const char *file = NULL, *vs = NULL, *to = NULL, *ws = NULL;
     unsigned flags = 0;
     for (int i = 1; i < argc; i++) {

@@ -114,7 +114,6 @@ static void write_indices(const uint32_t *idx, size_t n)
 
 int cmd_hidden(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("hidden");
     const char *file;
     int discard;
     int rc = parse_file_args("hidden", argc, argv, &file, &discard);
@@ -137,7 +136,6 @@ int cmd_hidden(int argc, char **argv)
 
 int cmd_cgal_hidden(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("cgal-hidden");
     const char *file;
     int discard;
     int rc = parse_file_args("cgal-hidden", argc, argv, &file, &discard);

@@ -1,5 +1,5 @@
 /*
- * cli_wbench_edits.c -- `dtdel wedits-bench`: the weighted edits mesh
+ * wbench_edits.c -- `dtdel wedits-bench`: the weighted edits mesh
  * generators run most, against CGAL's Regular_triangulation_3 in the same
  * run (issue 44, DESIGN 10 and 12), in one hidden mode (the bench's:
  * kept; --discard-hidden for the other).  What make bench writes to
@@ -37,7 +37,7 @@
  * removal and an insertion (dd_counters' moves_redone), their count and
  * time, for profiling; the row itself is unchanged.
  */
-#include "cli/cli_wbench.h"
+#include "bench/wbench.h"
 #include "dtdel/alloc.h"
 #include "dtdel_stats.h"
 
@@ -272,7 +272,6 @@ static int set_deletion(const we_opts *o, double fraction)
 
 int cmd_wedits_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("wedits-bench");
     we_opts o;
     int rc = parse_opts(argc, argv, &o);
     if (rc) return rc;

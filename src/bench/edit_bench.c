@@ -1,5 +1,5 @@
 /*
- * cli_edit_bench.c -- `dtdel edit-bench`: the edits mesh generators and
+ * edit_bench.c -- `dtdel edit-bench`: the edits mesh generators and
  * smoothers run most, against CGAL, each result compared with CGAL's
  * simplex for simplex.  What make bench writes to results/edits.txt:
  *  - smoothing: every vertex of N uniform points moved by a random step
@@ -24,7 +24,7 @@
  *  - set deletion: a random 10%, 50% and 90% of M uniform points deleted
  *    by dd_delete_set and by CGAL's remove(first, last).
  */
-#include "cli/cli.h"
+#include "bench/bench.h"
 #include "cgal/cgal_query.h"
 #include "dtdel/alloc.h"
 
@@ -242,7 +242,6 @@ static int set_deletion(const eb_opts *o, double fraction)
 
 int cmd_edit_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("edit-bench");
     eb_opts o;
     int rc = parse_opts(argc, argv, &o);
     if (rc) return rc;

@@ -1,10 +1,10 @@
 /*
- * cli_wbench.c -- `dtdel wbench`: the per-degree deletion tables on
+ * wbench.c -- `dtdel wbench`: the per-degree deletion tables on
  * weighted points (issue 44, DESIGN 10 and 12), every strategy of the
  * registry against CGAL's Regular_triangulation_3::remove(), in one
  * hidden mode (the bench's: kept; --discard-hidden for the other).
  *
- * The protocol is dtdel bench's (cli_bench.c): per case the regular
+ * The protocol is dtdel bench's (bench.c): per case the regular
  * triangulation is built once by each engine; the vertices to delete are
  * drawn from a seeded generator, the same for every row, sparse degree
  * buckets topped up; for each vertex and row, cgal first, the deletion
@@ -27,8 +27,8 @@
  * is no cgal-rnd row: CGAL has no such removal for regular
  * triangulations (sew-full is the engine's own version of it).
  */
-#include "cli/cli_wbench.h"
-#include "cli/buckets.h"
+#include "bench/wbench.h"
+#include "bench/buckets.h"
 #include "dtdel/alloc.h"
 
 #include <stdlib.h>
@@ -349,7 +349,6 @@ static int run_case(wrun *b, const wcase *c)
 
 int cmd_wbench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("wbench");
     wrun b = {0};
     int rc = parse_args(argc, argv, &b.o);
     if (rc) return rc;
@@ -369,7 +368,7 @@ int cmd_wbench(int argc, char **argv)
     return b.mismatches ? EXIT_INPUT : 0;
 }
 
-/* ---- shared with cli_wbench_edits.c ---------------------------------------- */
+/* ---- shared with wbench_edits.c -------------------------------------------- */
 
 const char *wmode_name(int discard)
 {

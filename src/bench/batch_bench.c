@@ -1,5 +1,5 @@
 /*
- * cli_batch_bench.c -- `dtdel batch-bench`: the whole-array calls against
+ * batch_bench.c -- `dtdel batch-bench`: the whole-array calls against
  * CGAL's best for a batch, in the same run, each result compared with
  * CGAL's simplex for simplex.  What make bench writes to
  * results/batch.txt, one line a row:
@@ -28,7 +28,7 @@
  *     regular triangulation of the moved points, built whole).
  * The weighted rows compare cells and hidden sets.
  */
-#include "cli/cli.h"
+#include "bench/bench.h"
 #include "cgal/cgal_batch.h"
 #include "cgal/cgal_rbench.h"
 #include "cgal/cgal_regular.h"
@@ -224,7 +224,6 @@ static int wmove_many_row(const bb_opts *o)
 
 int cmd_batch_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("batch-bench");
     bb_opts o = {200000, 50000, 1000000, 100000, 2, 1};
     const num_opt opts[] = {{NULL, &o.n},           {"--inserts", &o.m}, {"--queries", &o.q},
                             {"--weighted", &o.nw}, {"--passes", &o.passes}, {"--seed", &o.seed}};

@@ -1,14 +1,14 @@
 /*
- * cli_wbench.h -- what the weighted benches (cli_wbench.c: per-degree
- * deletion tables; cli_wbench_edits.c: re-weighting, move and set passes)
+ * wbench.h -- what the weighted benches (wbench.c: per-degree
+ * deletion tables; wbench_edits.c: re-weighting, move and set passes)
  * share: the weighted points of a dataset, both triangulations built in
  * the same hidden mode, and the whole-triangulation comparison with CGAL
  * (canonical cells and hidden set).
  */
-#ifndef DD_CLI_WBENCH_H
-#define DD_CLI_WBENCH_H
+#ifndef DD_BENCH_WBENCH_H
+#define DD_BENCH_WBENCH_H
 
-#include "cli/cli.h"
+#include "bench/bench.h"
 #include "cgal/cgal_rbench.h"
 
 /* A weighted case: the points, our triangulation and CGAL's, one mode. */

@@ -1,5 +1,5 @@
 /*
- * cli_query_bench.c -- `dtdel query-bench`: insertion of new points, point
+ * query_bench.c -- `dtdel query-bench`: insertion of new points, point
  * location and nearest-vertex queries against CGAL, with and without
  * CGAL's Fast_location (its Delaunay hierarchy), and the memory of a
  * triangulation under churn.  What make bench writes to results/queries.txt.
@@ -10,7 +10,7 @@
  * the first located cells with CGAL's.  The tests check location exactly
  * (tests/test_access.c).
  */
-#include "cli/cli.h"
+#include "bench/bench.h"
 #include "cgal/cgal_query.h"
 #include "dtdel/alloc.h"
 
@@ -209,7 +209,6 @@ static int churn(const qb_opts *o)
 
 int cmd_query_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("query-bench");
     qb_opts o;
     int rc = parse_opts(argc, argv, &o);
     if (rc) return rc;

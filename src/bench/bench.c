@@ -1,5 +1,5 @@
 /*
- * cli_bench.c -- `dtdel bench`, the paper's experiment (DESIGN 10), and
+ * bench.c -- `dtdel bench`, the paper's experiment (DESIGN 10), and
  * `dtdel seq-bench`, whole sequences of deletions.
  *
  * Per dataset and size (a bcase): DT(S) is built once by the engine and
@@ -38,8 +38,8 @@
  * with their phase split, to PHASEDIR/<dataset>.csv; the timing build then
  * copies those phase columns into its own rows (same seed, same sample).
  */
-#include "cli/cli.h"
-#include "cli/buckets.h"
+#include "bench/bench.h"
+#include "bench/buckets.h"
 #include "dtdel/alloc.h"
 
 #include <stdlib.h>
@@ -567,7 +567,6 @@ static int run_case(bench_run *b, const bcase *c)
 
 int cmd_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("bench");
     bench_run b = {0};
     int rc = parse_bench_args(argc, argv, &b.o);
     if (rc) return rc;
@@ -664,7 +663,6 @@ static double seq_run(const double *xyz, uint32_t np, dd_tri *t, const uint32_t 
 
 int cmd_seq_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("seq-bench");
     const char *dataset = "uniform", *var = "auto";
     uint64_t n = 1000000, seed = 1;
     double frac = 0.1;

@@ -1,5 +1,5 @@
 /*
- * cli_refine.c -- `dtdel refine-bench`: a mesh generator's refinement
+ * refine_bench.c -- `dtdel refine-bench`: a mesh generator's refinement
  * loop against CGAL's.  N uniform points in the unit cube; K times, the
  * largest queued cell (squared circumradius, among finite cells whose
  * circumcentre is in the cube: refine_rule.h) gets its circumcentre
@@ -10,8 +10,8 @@
  * the same triangulation: compared by canonical hash, a mismatch counted
  * and printed.  What make bench writes to results/refine.txt.
  */
-#include "cli/cli.h"
-#include "cli/refine_rule.h"
+#include "bench/bench.h"
+#include "bench/refine_rule.h"
 #include "cgal/cgal_refine.h"
 #include "dtdel/alloc.h"
 
@@ -154,7 +154,6 @@ static int refine_ours(refiner *r, uint32_t k, uint32_t *done)
 
 int cmd_refine_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("refine-bench");
     uint64_t n = 100000, k = 100000, seed = 1;
     const num_opt opts[] = {{NULL, &n}, {"--inserts", &k}, {"--seed", &seed}};
     int rc = parse_num_opts("refine-bench", argc, argv, opts, (int)(sizeof opts / sizeof *opts));

@@ -1,5 +1,5 @@
 /*
- * cli_regular_bench.c -- `dtdel regular-bench`: regular triangulations
+ * regular_bench.c -- `dtdel regular-bench`: regular triangulations
  * (weighted points, DESIGN 12) against CGAL's Regular_triangulation_3 in
  * the same run (bench protocol, DESIGN 10), hidden points kept:
  *
@@ -18,7 +18,7 @@
  * "dtdel n/a" and CGAL's figures, and the command succeeds; a mismatch
  * exits 1.  What make bench writes to results/regular.txt.
  */
-#include "cli/cli.h"
+#include "bench/bench.h"
 #include "dtdel/alloc.h"
 #include "cgal/cgal_regular.h"
 
@@ -167,7 +167,6 @@ static int insertion(const rb_opts *o)
 
 int cmd_regular_bench(int argc, char **argv)
 {
-    if (wants_help(argc, argv)) return print_help("regular-bench");
     rb_opts o = {1000000, 200000, 50000, 3, 1};
     const num_opt opts[] = {{NULL, &o.n}, {"--base", &o.n0}, {"--inserts", &o.m}, {"--reps", &o.reps},
                             {"--seed", &o.seed}};
