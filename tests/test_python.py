@@ -608,10 +608,10 @@ def test_weighted_copies():
         t.check()
 
 
-def main():
-    for f in (test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
-              test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted,
-              test_weighted_edits, test_weighted_copies, test_install):
+def run_groups(groups):
+    """Runs each test group (a crash of one is one failure, with its
+    traceback), then exits 1 if any check failed."""
+    for f in groups:
         try:
             f()
         except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
@@ -619,6 +619,12 @@ def main():
             traceback.print_exc()
             check(f.__name__, False, "raised %r" % e)
     sys.exit(1 if failed else 0)
+
+
+def main():
+    run_groups((test_bindings, test_module, test_uniform, test_queries_on_build, test_degenerate,
+                test_errors, test_cell_handles, test_write, test_stable_indices, test_weighted,
+                test_weighted_edits, test_weighted_copies, test_install))
 
 
 def test_queries_on_build():

@@ -6,7 +6,6 @@ locate_many, nearest_many, input_points, cells_vertices; each against CGAL
 
     PYTHONPATH=python /usr/bin/python3 tests/test_python_batch.py build/dtdel
 """
-import sys
 
 import numpy as np
 
@@ -86,14 +85,7 @@ def test_move_and_reads():
 
 
 def main():
-    for f in (test_insert, test_move_and_reads):
-        try:
-            f()
-        except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
-            import traceback
-            traceback.print_exc()
-            check(f.__name__, False, "raised %r" % e)
-    sys.exit(1 if tp.failed else 0)
+    tp.run_groups((test_insert, test_move_and_reads))
 
 
 if __name__ == "__main__":

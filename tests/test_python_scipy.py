@@ -7,7 +7,6 @@ threads.
 
     PYTHONPATH=python:tests /usr/bin/python3 tests/test_python_scipy.py build/dtdel
 """
-import sys
 import threading
 import time
 from fractions import Fraction
@@ -342,14 +341,8 @@ def test_readme_example():
 
 
 def main():
-    for f in (test_readme_example, test_against_scipy, test_degenerate, test_edits, test_weighted, test_errors, test_threads):
-        try:
-            f()
-        except Exception as e:  # noqa: BLE001 - a crash of one group is one failure
-            import traceback
-            traceback.print_exc()
-            check(f.__name__, False, "raised %r" % e)
-    sys.exit(1 if tp.failed else 0)
+    tp.run_groups((test_readme_example, test_against_scipy, test_degenerate, test_edits, test_weighted,
+                   test_errors, test_threads))
 
 
 if __name__ == "__main__":
