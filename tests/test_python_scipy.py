@@ -340,8 +340,18 @@ def test_readme_example():
         check("README example: smoothed, edited, checked", env["tri"].nsimplex > 0 and len(env["new"]) == 1000, "")
 
 
+def test_doctests():
+    """The examples in the docstrings run as written."""
+    import doctest
+    import dtdel._core
+    import dtdel._scipy
+    for mod in (dtdel._scipy, dtdel._core):
+        r = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
+        check("docstring examples of %s" % mod.__name__, r.failed == 0 and r.attempted > 0, str(r))
+
+
 def main():
-    tp.run_groups((test_readme_example, test_against_scipy, test_degenerate, test_edits, test_weighted,
+    tp.run_groups((test_doctests, test_readme_example, test_against_scipy, test_degenerate, test_edits, test_weighted,
                    test_errors, test_threads))
 
 

@@ -253,12 +253,39 @@ class Delaunay:
         return self._get("transform", make)
 
     def find_simplex(self, xi, bruteforce=False, tol=None):
-        """The index of a simplex holding each point of xi (any leading
-        shape, last axis 3), -1 exactly when the point is outside the
-        convex hull: the walk is exact, so no tolerance is needed and a
-        point on a face or edge gets one of its simplices.  bruteforce
-        is accepted and has no effect; tol must be None.  intc, shape
-        xi.shape[:-1].  DtdelError for a NaN or infinite point."""
+        """The simplex holding each point, as scipy's find_simplex.
+
+        Parameters
+        ----------
+        xi : (..., 3) array_like
+            Query points, any leading shape.
+        bruteforce : bool
+            Accepted for scipy's sake; no effect (the walk is exact).
+        tol : None
+            Must be None: the test is exact, a point on a face, edge or
+            vertex gets one of the simplices that hold it.
+
+        Returns
+        -------
+        (...) ndarray of intc
+            Indices into `simplices`, -1 exactly where the point is
+            outside the convex hull.  O(m log m) for the order of the
+            queries, then a short walk each.
+
+        Raises
+        ------
+        DtdelError
+            DD_ERR_NAN / DD_ERR_INFINITE naming the first bad point;
+            DD_ERR_ARG for another last axis than 3; DD_ERR_UNSUPPORTED
+            for a tol.
+
+        Examples
+        --------
+        >>> import numpy as np, dtdel
+        >>> tri = dtdel.Delaunay(np.random.default_rng(0).random((100, 3)))
+        >>> tri.find_simplex([[5.0, 5.0, 5.0]]).tolist()
+        [-1]
+        """
         if tol is not None:
             raise DtdelError(_ERR_UNSUPPORTED, "find_simplex: the test is exact; tol is not supported "
                              "(got %r)" % (tol,))
@@ -268,27 +295,93 @@ class Delaunay:
 
     # ---- what scipy cannot do -------------------------------------------------------
     def locate(self, xi):
-        """Cell ids (int64) of cells holding the points of xi (the
-        Triangulation's cell handles; an infinite cell's id outside the
-        hull).  find_simplex gives simplex indices instead."""
+        """Cell ids of cells holding the points of xi.
+
+        Parameters
+        ----------
+        xi : (..., 3) array_like
+
+        Returns
+        -------
+        (...) ndarray of int64
+            The Triangulation's cell ids (`triangulation.cell(c)`), an
+            infinite cell's id for a point outside the hull; they stay
+            valid across edits that do not touch the cell.
+            `find_simplex` gives indices into `simplices` instead.
+        """
         q, shape = _queries(xi, "locate")
         return self._tri.locate_many(q).reshape(shape)
 
     def nearest_vertex(self, xi):
-        """The input index of a vertex nearest to each point of xi, exact
-        (least power distance when weighted).  int64, shape xi.shape[:-1]."""
+        """A nearest vertex of each point, exact.
+
+        Parameters
+        ----------
+        xi : (..., 3) array_like
+
+        Returns
+        -------
+        (...) ndarray of int64
+            Input indices; on a weighted triangulation the least power
+            distance |p - x|^2 - w(x) decides.
+
+        Examples
+        --------
+        >>> import dtdel
+        >>> tri = dtdel.Delaunay([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        >>> tri.nearest_vertex([[0.9, 0.1, 0.0]]).tolist()
+        [1]
+        """
         q, shape = _queries(xi, "nearest_vertex")
         return self._tri.nearest_many(q).reshape(shape)
 
     def remove(self, ids):
-        """Removes the vertices ids (input indices) as one set, all or
-        nothing: the result is the triangulation of the other points."""
+        """Removes vertices, all or nothing.
+
+        Parameters
+        ----------
+        ids : array_like of int
+            Input indices of vertices now.  The result is the
+            triangulation of the other points, CGAL's.
+
+        Raises
+        ------
+        DtdelError
+            DD_ERR_UNKNOWN_VERTEX naming an id that is no vertex;
+            DD_ERR_DIMENSION if fewer than 4 or only coplanar points
+            would be left; DD_ERR_ARG for ids that are not integers.
+            Nothing changes.
+        """
         self._tri.delete_set(ids)
 
     def insert(self, points, weights=None):
-        """Inserts an (m, 3) array of points (with weights when weighted),
-        all or nothing; returns their input indices (int64).  A point equal
-        to a vertex, or to an earlier one of the batch, gets its index."""
+        """Inserts points, all or nothing.
+
+        Parameters
+        ----------
+        points : (m, 3) array_like
+        weights : (m,) array_like, optional
+            On a weighted triangulation (weight 0 when omitted).
+
+        Returns
+        -------
+        (m,) ndarray of int64
+            Each point's input index; a point equal to a vertex, or to an
+            earlier point of the batch, gets that one's.
+
+        Raises
+        ------
+        DtdelError
+            DD_ERR_NAN / DD_ERR_INFINITE naming the row; DD_ERR_UNSUPPORTED
+            for weights on an unweighted triangulation.  Nothing changes.
+
+        Examples
+        --------
+        >>> import numpy as np, dtdel
+        >>> tri = dtdel.Delaunay(np.random.default_rng(0).random((100, 3)))
+        >>> tri.insert([[0.5, 0.5, 0.5]]).tolist()
+        [100]
+        """
         q, _ = _queries(points, "insert")
         return self._tri.insert_many(q, weights)[0]
 
@@ -303,9 +396,25 @@ class Delaunay:
         self.insert(points)
 
     def move(self, ids, points, weights=None):
-        """Moves the vertices ids to the rows of points (and weights),
-        each keeping its index, all or nothing.  The final positions must
-        be distinct from each other and from every vertex not moved."""
+        """Moves vertices, each keeping its index, all or nothing.
+
+        Parameters
+        ----------
+        ids : array_like of int
+            Input indices of vertices, each at most once.
+        points : (m, 3) array_like
+            Their new positions, distinct from each other and from every
+            vertex not moved.
+        weights : (m,) array_like, optional
+            New weights (weighted only; omitted: each keeps its own).
+
+        Raises
+        ------
+        DtdelError
+            DD_ERR_DUPLICATE naming the pair that would coincide,
+            DD_ERR_ARG for an id listed twice or mismatched lengths,
+            DD_ERR_UNKNOWN_VERTEX, DD_ERR_NAN.  Nothing changes.
+        """
         q, _ = _queries(points, "move")
         self._tri.move_many(ids, q, weights)
 
