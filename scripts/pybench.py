@@ -29,6 +29,11 @@ SIZES = {  # n (build, find_simplex, remove), n2 (insert base, smoothing), inser
 }
 
 
+def num(n):
+    """n with a space between groups of three digits, as the README's tables."""
+    return "{:,}".format(n).replace(",", " ")
+
+
 def timed(fn):
     t0 = time.perf_counter()
     r = fn()
@@ -44,26 +49,26 @@ def against_scipy(rng, n, n2, k, sample):
     p = rng.random((n, 3))
     ours, tri = timed(lambda: _build(p))
     theirs, ref = timed(lambda: _build_scipy(p))
-    line("build %d uniform points and read simplices" % n, ours, theirs)
+    line("build %s uniform points and read simplices" % num(n), ours, theirs)
     q = rng.random((n, 3))
     ours, _ = timed(lambda: tri.find_simplex(q))
     qs = q[:sample]
     theirs, _ = timed(lambda: ref.find_simplex(qs))
-    line("find_simplex of %d queries in %d points" % (n, n), ours, theirs * n / len(qs),
+    line("find_simplex of %s queries in %s points" % (num(n), num(n)), ours, theirs * n / len(qs),
          "; scipy timed on %d of them, scaled" % len(qs))
     del ref
     ids = rng.permutation(n)[:n // 10]
     keep = np.setdiff1d(np.arange(n), ids)
     ours, _ = timed(lambda: tri.remove(ids))
     theirs, _ = timed(lambda: _build_scipy(p[keep]))
-    line("remove 10%% of %d (scipy rebuilds from the rest)" % n, ours, theirs)
+    line("remove 10%% of %s (scipy rebuilds from the rest)" % num(n), ours, theirs)
     tri.close()
     base, new = rng.random((n2, 3)), rng.random((k, 3))
     tri = dtdel.Delaunay(base)
     ref = scipy.spatial.Delaunay(base, incremental=True)
     ours, _ = timed(lambda: tri.insert(new))
     theirs, _ = timed(lambda: ref.add_points(new))
-    line("insert %d into %d (scipy's add_points)" % (k, n2), ours, theirs)
+    line("insert %s into %s (scipy's add_points)" % (num(k), num(n2)), ours, theirs)
     ref.close()
     tri.close()
     tri = dtdel.Delaunay(base)
@@ -71,8 +76,8 @@ def against_scipy(rng, n, n2, k, sample):
     moved = base + rng.uniform(-step, step, size=base.shape)
     ours, _ = timed(lambda: (tri.move(np.arange(n2), moved), tri.simplices))
     theirs, _ = timed(lambda: _build_scipy(moved))
-    line("smoothing, every vertex of %d moved by 5%% of the spacing, simplices read "
-         "(scipy rebuilds)" % n2, ours, theirs)
+    line("smoothing, every vertex of %s moved by 5%% of the spacing, simplices read "
+         "(scipy rebuilds)" % num(n2), ours, theirs)
 
 
 def _build(p):

@@ -10,6 +10,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Seconds with three or four significant digits. */
+static const char *fmt_secs(double v, char buf[40])
+{
+    if (v >= 100) return fmt_int((long long)(v + 0.5), buf);
+    snprintf(buf, 40, v >= 10 ? "%.1f" : v >= 1 ? "%.2f" : "%.3f", v);
+    return buf;
+}
+
 void readme_python(const ctx *c, FILE *out)
 {
     char path[4096];
@@ -28,8 +36,9 @@ void readme_python(const ctx *c, FILE *out)
             if (!rows++)
                 fprintf(out, "\n| Python: `dtdel.Delaunay` against `scipy.spatial.Delaunay`%s%s | dtdel s | scipy s "
                              "| ratio |\n|---|---:|---:|---:|\n", *vers ? " " : "", vers);
-            fprintf(out, "| %s%s | %.4f | %.4f | %.1f× |\n", what, note ? " (scipy: a sample, scaled)" : "", ours,
-                    theirs, r);
+            char b1[40], b2[40];
+            fprintf(out, "| %s%s | %s | %s | %.*f× |\n", what, note ? " (scipy: a sample, scaled)" : "",
+                    fmt_secs(ours, b1), fmt_secs(theirs, b2), r >= 100 ? 0 : 1, r);
         } else if (sscanf(line, "python overhead: %255[^:]: whole call %*f ms, C call %*f ms (%lfx)", what, &r) == 2) {
             const char *on = strstr(what, " on ");
             if (on) sscanf(on, " on %lld points", &ncall);
