@@ -243,7 +243,10 @@ plots: $(B)/summarize
 	@$(B)/summarize results results/*.csv $(if $(wildcard results/weighted/*.csv),--weighted results/weighted/*.csv) && sh scripts/plots.sh results
 
 # DESTDIR only stages the files: dtdel.pc names PREFIX.
-install: all install-python
+# install-lib: the C side alone (tests/test_install.sh, which runs beside
+# the Python tests' own install: two pip builds at once collide).
+install: install-lib install-python
+install-lib: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(B)/dtdel $(DESTDIR)$(PREFIX)/bin/dtdel
 	install -m 644 $(B)/libdtdel.a $(DESTDIR)$(PREFIX)/lib/libdtdel.a
@@ -269,7 +272,7 @@ PY_DEPS  = python/meson.build python/pyproject.toml python/list_sources.py $(wil
 PIP_BUILD = $(abspath $(B)/pip)
 PIP_INSTALL = $(PYTHON) -m pip install --no-build-isolation --no-index --no-deps --quiet \
 	--config-settings=builddir=$(PIP_BUILD)
-.PHONY: python install-python
+.PHONY: python install-python install-lib
 $(B)/python/.stamp: $(PY_DEPS) | $(DEPS_STAMP)
 	@if [ ! -f $(B)/python/build.ninja ]; then rm -rf $(B)/python; \
 	    meson setup --buildtype=release $(B)/python python >/dev/null || exit 1; fi
@@ -278,6 +281,9 @@ $(B)/python/.stamp: $(PY_DEPS) | $(DEPS_STAMP)
 	@touch $@
 python: $(B)/python/.stamp
 install-python: | $(DEPS_STAMP)
+	@# meson-python 0.12 reconfigures any existing build dir: one left
+	@# half made (an interrupted install) must go first
+	@[ -f $(PIP_BUILD)/meson-private/coredata.dat ] || rm -rf $(PIP_BUILD)
 	$(PIP_INSTALL) --prefix=$(PREFIX) $(if $(DESTDIR),--root=$(DESTDIR)) ./python
 # ---- end of the Python block ------------------------------------------------
 

@@ -11,7 +11,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix
 
-if ! make -C "$top" --no-print-directory -s install PREFIX="$prefix" B="$REL" >"$tmp/log" 2>&1; then
+if ! make -C "$top" --no-print-directory -s install-lib PREFIX="$prefix" B="$REL" >"$tmp/log" 2>&1; then
     echo "FAIL install/make-install: $(tail -c 400 "$tmp/log")"
     exit 1
 fi
