@@ -1034,28 +1034,32 @@ cdef class Triangulation:
 
     def _vertex_neighbor_vertices(self):
         """(indptr, indices) of the finite neighbours of every input index,
-        as scipy's vertex_neighbor_vertices (empty for a non-vertex)."""
+        as scipy's vertex_neighbor_vertices (empty for a non-vertex): each
+        vertex's degree once, then its neighbours into their slice."""
         self.rd()
-        cdef uint32_t nin = dd_num_input(self.t), i, d, got
+        cdef uint32_t nin = dd_num_input(self.t), i, got
         indptr = np.zeros(nin + 1, dtype=np.intc)
+        deg = np.zeros(nin, dtype=np.uint32)
         cdef int[::1] ip = indptr
+        cdef uint32_t[::1] dg = deg
         cdef size_t total = 0
+        cdef int bad = 0
         with nogil:
             for i in range(nin):
                 if dd_is_vertex(self.t, i):
-                    total += dd_degree(self.t, i)
+                    dg[i] = dd_degree(self.t, i)
+                    bad |= dg[i] == 0               # a vertex's degree is >= 4: out of memory
+                    total += dg[i]
         buf = np.empty(max(total, 1), dtype=np.uint32)
         cdef uint32_t[::1] b = buf
-        cdef int bad = 0
         cdef size_t at = 0
         with nogil:
             for i in range(nin):
                 ip[i] = <int>at
-                if not dd_is_vertex(self.t, i):
+                if bad or dg[i] == 0:
                     continue
-                d = dd_degree(self.t, i)
-                got = dd_neighbors(self.t, i, &b[at], d)
-                if got == 0 or got > d:
+                got = dd_neighbors(self.t, i, &b[at], dg[i])
+                if got == 0 or got > dg[i]:
                     bad = 1
                     break
                 at += got
