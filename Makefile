@@ -14,7 +14,7 @@
 # Three builds share the sources: build/ (release, -O2), build/asan/
 # (sanitizers, -O1 -g, validator after every operation in tests) and
 # build/count/ (release with counters compiled in, for counting runs);
-# build/tsan/ (ThreadSanitizer) builds the threaded test alone.
+# build/tsan/ (ThreadSanitizer) builds the threaded tests alone.
 
 PREFIX  ?= /usr/local
 CC      ?= gcc
@@ -41,9 +41,9 @@ CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
 # shim: CGAL is not ours to instrument, and compiling it once saves
 # minutes.  CXXFLAGS_A only links the sanitizer runtime in.
 CXXFLAGS_A = -std=c++17 -O1 -fsanitize=address,undefined
-LIBS     = -lgmp -lmpfr -lm
+LIBS     = -lgmp -lmpfr -lm -pthread
 # What the library itself needs (the CLI and tests add CGAL's MPFR).
-LIB_LIBS = -lgmp -lm
+LIB_LIBS = -lgmp -lm -pthread
 
 # The version, read from its one source, dtdel.h.
 version_part = $(shell sed -n 's/^\#define DD_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' src/dtdel.h)
@@ -157,7 +157,7 @@ $(A)/tests/%: tests/%.c $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a tests/testlib.
 	$(CC) $(CFLAGS_A) -c $< -o $@.o
 	$(CXX) $(CXXFLAGS_A) $@.o $(DATA_OBJ_A) $(SHIM_OBJ) $(A)/libdtdel.a -o $@ $(LIBS)
 
-# ---- thread sanitizer: the threaded test alone (concurrent reads) -----------
+# ---- thread sanitizer: the threaded tests (concurrent reads, parallel builds) -
 T = build/tsan
 # -Wno-maybe-uninitialized: gcc 12 at -O1 under -fsanitize=thread warns
 # falsely about src/wrap/scan.c (the other builds do not).
@@ -170,7 +170,7 @@ $(T)/obj/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 $(T)/libdtdel.a: $(LIB_OBJ_T) | $(DEPS_STAMP)
 	@rm -f $@
 	ar rcs $@ $^
-$(T)/tests/test_threads: tests/test_threads.c $(DATA_OBJ_T) $(T)/libdtdel.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
+$(T)/tests/test_threads $(T)/tests/test_parallel: $(T)/tests/%: tests/%.c $(DATA_OBJ_T) $(T)/libdtdel.a tests/testlib.h tests/testcgal.h | $(DEPS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_T) -pthread $< $(DATA_OBJ_T) $(T)/libdtdel.a -o $@ $(LIBS)
 $(B)/tests/test_threads $(A)/tests/test_threads: LIBS += -pthread
@@ -216,13 +216,13 @@ $(A)/summarize: $(SUM_DEPS) | $(DEPS_STAMP)
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 test: deps
 	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(NPROC)) all python $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize \
-		$(T)/tests/test_threads $(TESTS_CT)
+		$(T)/tests/test_threads $(T)/tests/test_parallel $(TESTS_CT)
 	@sh tests/run.sh $(B) $(A) $(T) $(C)
 
 # The files make test, bench, soak and fuzz build (tests/test_make.sh
 # checks that each waits for the deps stamp).
 print-goals:
-	@echo $(B)/python/.stamp $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
+	@echo $(B)/python/.stamp $(B)/dtdel $(B)/libdtdel.a $(B)/libdtdel.so $(B)/dtdel.pc $(B)/tests/soak $(TESTS_R) $(B)/summarize $(A)/dtdel $(TESTS_A) $(A)/summarize $(K)/dtdel $(T)/tests/test_threads $(T)/tests/test_parallel $(TESTS_CT) $(F)/fuzz_readers $(F)/fuzz_ops
 
 # The flags of the contract and release builds (tests/test_fpeval.sh).
 print-cflags-contract:

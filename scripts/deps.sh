@@ -5,8 +5,9 @@
 # mesh files back with them (/usr/bin/python3).  The Python package
 # (python/) builds with meson-python and Cython against numpy and
 # Python.h; its tests compare with scipy and install it into a venv.
+# libtbb-dev: the bench's anchor, CGAL's Parallel_tag construction.
 PKGS="libcgal-dev libgmp-dev libmpfr-dev libboost-dev gnuplot-nox libcgal-demo g++ make pkg-config python3-meshio python3-vtk9 python3-numpy
-      python3-dev cython3 meson ninja-build python3-mesonpy python3-scipy python3-venv python3-pip"
+      python3-dev cython3 meson ninja-build python3-mesonpy python3-scipy python3-venv python3-pip libtbb-dev"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

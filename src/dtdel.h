@@ -152,8 +152,21 @@ enum {
     /* Weighted only: a point that becomes hidden is forgotten, as CGAL's
      * Discard_hidden_points (Mesh_3's compact cell base); by default
      * hidden points are kept, as in CGAL's default cell base.          */
-    DD_DISCARD_HIDDEN = 1u << 1
+    DD_DISCARD_HIDDEN = 1u << 1,
+    /* Every core (the cores online): see DD_THREADS below.              */
+    DD_THREADS_ALL = 1u << 19
 };
+/* Threads: dd_create_ex(..., flags | DD_THREADS(n), ...) builds on n
+ * threads (1 <= n <= 2047; more than 1024 use 1024), and the calls on the
+ * triangulation afterwards use n too (dd_set_threads changes it).
+ * Without DD_THREADS or DD_THREADS_ALL the count is 1, or the value of
+ * the environment variable DTDEL_THREADS when it is set (a count; 0 or
+ * "all": every core), read when the triangulation is made.  The result
+ * never depends on the count: the same triangulation, simplex for
+ * simplex, the same canonical form; only the numbering of the cells
+ * (dd_cells' order, cell handles) may differ from one build to another
+ * on more than one thread.                                              */
+#define DD_THREADS(n) (((unsigned)(n) & 0x7FFu) << 8)
 
 /* dd_create with options.  weights NULL: the Delaunay triangulation, as
  * dd_create.  Otherwise weights[i] is the weight of point i, and the result
@@ -164,6 +177,13 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
                        unsigned flags, char *msg, size_t msglen);
 
 void dd_free(dd_tri *t);
+
+/* The threads the calls on t use from now on (see DD_THREADS): n, at
+ * most 1024; 0: every core.  Which calls use them: dtdel.h names them
+ * ("threads: ...").  O(1).                                             */
+void dd_set_threads(dd_tri *t, unsigned n);
+/* The threads the calls on t use (>= 1).  O(1).                         */
+unsigned dd_threads(const dd_tri *t);
 
 /* ---- weighted points (regular triangulations, DESIGN 12) ----------------- */
 

@@ -85,6 +85,7 @@ job "asan cli" sh tests/test_cli.sh "$ASAN/dtdel"
 job "asan write" sh tests/test_write.sh "$ASAN/dtdel"
 job "asan summarize" sh tests/test_summarize.sh "$ASAN/summarize"
 job "tsan test_threads" "$TSAN/tests/test_threads" small
+job "tsan test_parallel" "$TSAN/tests/test_parallel" small
 if [ -n "$CONTRACT" ]; then
     for t in "$CONTRACT"/tests/test_*; do
         case "$t" in *.o) continue ;; esac

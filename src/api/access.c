@@ -15,8 +15,12 @@
 #include <string.h>
 
 /* The flags dd_create_ex knows. */
-#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES | (unsigned)DD_DISCARD_HIDDEN)
+#define KNOWN_FLAGS ((unsigned)DD_STABLE_INDICES | (unsigned)DD_DISCARD_HIDDEN | DD_THREADS(DD_THREADS_MASK) | \
+                     (unsigned)DD_THREADS_ALL)
 _Static_assert(DD_DISCARD_HIDDEN == DD_DISCARD_HIDDEN_FLAG, "mesh.h's copy of DD_DISCARD_HIDDEN");
+_Static_assert(DD_THREADS_ALL == DD_THREADS_ALL_FLAG, "mesh.h's copy of DD_THREADS_ALL");
+_Static_assert(DD_THREADS(1) == 1u << DD_THREADS_SHIFT && DD_THREADS(DD_THREADS_MASK) >> DD_THREADS_SHIFT ==
+                   DD_THREADS_MASK, "mesh.h's copy of DD_THREADS");
 
 dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
                        char *msg, size_t msglen)
@@ -32,6 +36,16 @@ dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, u
     }
     if (s != DD_OK && msg && msglen && !msg[0]) snprintf(msg, msglen, "%s", dd_status_name(s));
     return s;
+}
+
+void dd_set_threads(dd_tri *t, unsigned n)
+{
+    t->nthreads = n == 0 ? dd_cores() : n > DD_THREADS_MAX ? DD_THREADS_MAX : n;
+}
+
+unsigned dd_threads(const dd_tri *t)
+{
+    return t->nthreads;
 }
 
 dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)

@@ -14,16 +14,9 @@
  * inserted by regular.c's rule (dd_insert_power) instead of mesh.c's;
  * the choice is made once, for the whole loop.
  *
- * Order: each kept point draws its BRIO round from a hash of its input
- * index with a fixed seed: rounds grow by a factor of 8 (the last holds
- * about 7/8 of the points, the one before 7/64, ..., the first about 64
- * points or fewer).  Insertion goes round by round, smallest first, each
- * round along a 3D Hilbert curve (Skilling's transform on 16 bits per axis)
- * of the kept points' bounding box, as CGAL's spatial_sort and geogram do.
- * Round and Hilbert index form one 52-bit key, so a single sequential pass
- * over the coordinates and one LSD radix sort give the whole order; it is
- * a deterministic function of the input.  The result depends only on the
- * point set (the perturbed DT is unique), not on this order.
+ * Order: BRIO rounds along a Hilbert curve (order.c).  The result
+ * depends only on the point set (the perturbed DT is unique), not on
+ * this order.  On more than one thread the loop is pbuild.c's.
  */
 #include "mesh/mesh.h"
 #include "mesh/hidden.h"
@@ -67,151 +60,6 @@ static uint64_t hash_weighted(const double *p, double w)
 static inline uint64_t hash_input(const double *pts, const double *w, uint32_t i)
 {
     return w ? hash_weighted(pts + 3 * (size_t)i, w[i]) : hash_point(pts + 3 * (size_t)i);
-}
-
-/* ---- Hilbert order ------------------------------------------------------- */
-
-/* Spreads the low 16 bits of v to bits 0, 3, 6, ..., 45. */
-static uint64_t spread3(uint64_t v)
-{
-    v &= 0xFFFF;
-    v = (v | v << 16) & 0x0000FF0000FFull;
-    v = (v | v << 8) & 0x00F00F00F00Full;
-    v = (v | v << 4) & 0x0C30C30C30C3ull;
-    v = (v | v << 2) & 0x249249249249ull;
-    return v;
-}
-
-/* Skilling's transform: axes -> Hilbert index, b <= 16 bits per axis, the
- * bits of x[0] most significant in each triple.  Branch-free on scalars
- * (the axes' bits are unpredictable, and an array would keep the chain of
- * updates of x0 in memory).                                               */
-static uint64_t hilbert_key(const uint32_t x[3], int b)
-{
-    uint32_t x0 = x[0], x1 = x[1], x2 = x[2];
-    for (uint32_t q = 1u << (b - 1); q > 1; q >>= 1) {
-        /* axis i: bit q set -> invert the low bits of x0, else swap them
-         * between x0 and xi                                              */
-        uint32_t p = q - 1, hit, s;
-        x0 ^= p & (0u - ((x0 & q) != 0));
-        hit = 0u - ((x1 & q) != 0);
-        s = (x0 ^ x1) & p & ~hit;
-        x0 ^= (p & hit) | s;
-        x1 ^= s;
-        hit = 0u - ((x2 & q) != 0);
-        s = (x0 ^ x2) & p & ~hit;
-        x0 ^= (p & hit) | s;
-        x2 ^= s;
-    }
-    /* Gray decode */
-    x1 ^= x0;
-    x2 ^= x1;
-    uint32_t t = 0;
-    for (uint32_t q = 1u << (b - 1); q > 1; q >>= 1)
-        t ^= (q - 1) & (0u - ((x2 & q) != 0));
-    x0 ^= t;
-    x1 ^= t;
-    x2 ^= t;
-    return spread3(x0) << 2 | spread3(x1) << 1 | spread3(x2);
-}
-
-typedef struct keyed { uint64_t key; uint32_t id; } keyed;
-
-/* Composite key: BRIO round in bits 48..51 (at most 10 rounds for 32-bit
- * n), Hilbert index in bits 0..47; radix-sorted 13 bits a pass.           */
-#define KEY_BITS 52
-#define DIGIT_BITS 13
-#define NDIGIT (1u << DIGIT_BITS)
-#define NPASS (KEY_BITS / DIGIT_BITS)
-#define BRIO_SEED 0x243F6A8885A308D3ull
-
-/* BRIO round of input i among rounds 0..depth: depth with probability 7/8,
- * depth - 1 with 7/64, ..., 0 with 8^-depth (a leading zero octal digit
- * of a hash of i moves the point one round earlier).                      */
-static uint64_t brio_round(uint32_t i, uint32_t depth)
-{
-    uint64_t r = dd_mix64(BRIO_SEED + ((uint64_t)i + 1) * 0x9E3779B97F4A7C15ull);
-    uint32_t level = 0;
-    while (level < depth && ((r >> (61 - 3 * level)) & 7u) == 0) level++;
-    return depth - level;
-}
-
-static int cmp_keyed(const void *a, const void *b)
-{
-    const keyed *x = a, *y = b;
-    return x->key < y->key ? -1 : x->key > y->key ? 1 : (x->id > y->id) - (x->id < y->id);
-}
-
-/* Below this many points a comparison sort of the keys beats the radix
- * sort's 128 KiB of counters.                                            */
-#define RADIX_MIN 2048
-
-dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int brio)
-{
-    if (n < 2) return DD_OK;
-    /* as many factor-8 rounds as take n down to 64 points or fewer */
-    uint32_t depth = 0;
-    for (uint32_t hi = n; brio && hi > 64; hi /= 8) depth++;
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (uint32_t k = 0; k < n; k++) {
-        const double *p = pts + 3 * (size_t)ids[k];
-        for (int c = 0; c < 3; c++) {
-            if (p[c] < lo[c]) lo[c] = p[c];
-            if (p[c] > hi[c]) hi[c] = p[c];
-        }
-    }
-    double ext = 0;
-    for (int c = 0; c < 3; c++) if (hi[c] - lo[c] > ext) ext = hi[c] - lo[c];
-    /* bits per axis: 16 in a construction's rounds; else about 4 boxes a
-     * point along each axis, as fine an order with fewer steps of the key
-     * and fewer radix passes                                             */
-    int bits = 16;
-    while (!brio && bits > 4 && (1ull << (3 * (bits - 3))) > n) bits--;
-    const double top = (double)((1u << bits) - 1);
-    /* The grid coordinates (x - lo) * scale in doubles, unless the extent
-     * overflows (coordinates of both signs beyond DBL_MAX / 2) or its
-     * reciprocal does (subnormal extents): then in halves and scaled by
-     * powers of two, which nothing can overflow.                        */
-    const int plain = ext > 0 && ext <= DBL_MAX && top / ext <= DBL_MAX;
-    double scale = plain ? top / ext : 0.0, half = 0;
-    int eh = 0;
-    if (!plain) {
-        for (int c = 0; c < 3; c++) half = fmax(half, 0.5 * hi[c] - 0.5 * lo[c]);
-        eh = half > 0 ? ilogb(half) : 0;
-        scale = half > 0 ? top / ldexp(half, -eh) : 0.0;
-    }
-    const int radix = n >= RADIX_MIN;
-    keyed *a = dd_malloc(2 * (size_t)n * sizeof *a);
-    uint32_t *count = radix ? dd_calloc((size_t)NPASS * NDIGIT, sizeof *count) : NULL;
-    if (!a || (radix && !count)) { dd_mfree(a); dd_mfree(count); return DD_ERR_NOMEM; }
-    keyed *const buf = a;
-    keyed *b = a + n;
-    for (uint32_t k = 0; k < n; k++) {
-        const double *p = pts + 3 * (size_t)ids[k];
-        uint32_t x[3];
-        for (int c = 0; c < 3; c++) {
-            double q = plain ? (p[c] - lo[c]) * scale : ldexp(0.5 * p[c] - 0.5 * lo[c], -eh) * scale;
-            x[c] = !(q > 0) ? 0 : q >= top ? (uint32_t)top : (uint32_t)q;
-        }
-        uint64_t key = brio_round(ids[k], depth) << 48 | hilbert_key(x, bits);
-        a[k].key = key;
-        a[k].id = ids[k];
-        for (uint32_t d = 0; radix && d < NPASS; d++)
-            count[d * NDIGIT + ((key >> (d * DIGIT_BITS)) & (NDIGIT - 1))]++;
-    }
-    if (!radix) qsort(a, n, sizeof *a, cmp_keyed);
-    for (uint32_t d = 0; radix && d < NPASS; d++) {
-        uint32_t shift = d * DIGIT_BITS, *cnt = count + d * NDIGIT;
-        if (cnt[(a[0].key >> shift) & (NDIGIT - 1)] == n) continue; /* one digit */
-        uint32_t sum = 0;
-        for (uint32_t v = 0; v < NDIGIT; v++) { uint32_t c = cnt[v]; cnt[v] = sum; sum += c; }
-        for (uint32_t k = 0; k < n; k++) b[cnt[(a[k].key >> shift) & (NDIGIT - 1)]++] = a[k];
-        keyed *tmp = a; a = b; b = tmp;
-    }
-    for (uint32_t k = 0; k < n; k++) ids[k] = a[k].id;
-    dd_mfree(buf);
-    dd_mfree(count);
-    return DD_OK;
 }
 
 /* ---- validation and duplicates ------------------------------------------- */
@@ -302,6 +150,9 @@ dd_status dd_pick_simplex(dd_tri *t, const double *pts, uint32_t *ids, uint32_t 
 
 /* ---- dd_create ------------------------------------------------------------ */
 
+/* Points a thread of the copy into vertex id order at least. */
+#define STORE_SHARE 262144u
+
 static dd_status report(dd_tri *t, dd_status s, char *msg, size_t msglen)
 {
     if (msg && msglen) snprintf(msg, msglen, "%s", t->err);
@@ -341,6 +192,11 @@ static dd_status make_weighted(dd_tri *t, const double *w, const uint32_t *ids, 
 static dd_status insert_all(dd_tri *t, uint32_t m)
 {
     dd_status s = DD_OK;
+    if (!t->wt && t->nthreads > 1) {
+        uint32_t rounds[18], nround;
+        dd_brio_rounds(t->v2in, m, rounds, &nround);
+        return dd_build_parallel(t, 4, m, rounds, nround);
+    }
     if (!t->wt) {
         for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_build_insert(t, k);
         return s;
@@ -349,6 +205,45 @@ static dd_status insert_all(dd_tri *t, uint32_t m)
     uint32_t dup;
     for (uint32_t k = 4; k < m && s == DD_OK; k++) s = dd_insert_power(t, k, t->hint, 1, &fate, &dup);
     return s;
+}
+
+/* The points in vertex id order, and the maps between ids and inputs:
+ * chunks of ids, then chunks of inputs, one a thread.                  */
+typedef struct store_job {
+    dd_tri *t;
+    const double *xyz;
+    const uint32_t *ids, *first;
+    unsigned nth;
+} store_job;
+
+static void store_ids(void *arg, unsigned j)
+{
+    const store_job *s = arg;
+    dd_tri *t = s->t;
+    uint32_t k0 = (uint32_t)((uint64_t)t->nvid * j / s->nth), k1 = (uint32_t)((uint64_t)t->nvid * (j + 1) / s->nth);
+    for (uint32_t k = k0; k < k1; k++) {
+        memcpy(t->xyz + 3 * (size_t)k, s->xyz + 3 * (size_t)s->ids[k], 3 * sizeof *s->xyz);
+        t->v2in[k] = s->ids[k];
+        t->vcell[k] = DD_NONE;
+        t->in2v[s->ids[k]] = k;
+    }
+}
+
+static void store_duplicates(void *arg, unsigned j)
+{
+    const store_job *s = arg;
+    dd_tri *t = s->t;
+    uint32_t i0 = (uint32_t)((uint64_t)t->np * j / s->nth), i1 = (uint32_t)((uint64_t)t->np * (j + 1) / s->nth);
+    for (uint32_t i = i0; i < i1; i++)
+        if (s->first[i] != i) t->in2v[i] = t->in2v[s->first[i]];
+}
+
+static void store_points(dd_tri *t, const double *xyz, const uint32_t *ids, const uint32_t *first)
+{
+    store_job s = {t, xyz, ids, first, t->np / STORE_SHARE + 1};
+    if (s.nth > t->nthreads) s.nth = t->nthreads;
+    dd_run_threads(s.nth, store_ids, &s);
+    dd_run_threads(s.nth, store_duplicates, &s);
 }
 
 dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights, uint32_t n, unsigned flags,
@@ -363,6 +258,10 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights,
         return s;
     }
     t->flags = flags;
+    t->nthreads = flags & DD_THREADS_ALL_FLAG ? dd_cores()
+                  : flags >> DD_THREADS_SHIFT & DD_THREADS_MASK ? flags >> DD_THREADS_SHIFT & DD_THREADS_MASK
+                  : dd_threads_default();
+    if (t->nthreads > DD_THREADS_MAX) t->nthreads = DD_THREADS_MAX;
     if ((s = check_input(t, xyz, weights, n)) != DD_OK) return report(t, s, msg, msglen);
     uint32_t *ids = dd_malloc(2 * (size_t)(n ? n : 1) * sizeof *ids);
     if (!ids) return report(t, dd_fail(t, DD_ERR_NOMEM, "out of memory"), msg, msglen);
@@ -371,7 +270,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights,
      * first tetrahedron in front.  Vertex id k is then input ids[k].      */
     uint32_t m = 0;
     s = dd_dedup_points(t, xyz, weights, n, first, ids, &m);
-    if (s == DD_OK) s = dd_spatial_order(xyz, ids, m, 1);
+    if (s == DD_OK) s = dd_spatial_order_threads(xyz, ids, m, 1, t->nthreads);
     if (s == DD_OK) s = dd_pick_simplex(t, xyz, ids, m);
     if (s == DD_OK) s = dd_reserve_cells(t, m < 8 ? 64 : 7 * m);
     if (s == DD_OK && weights && make_weighted(t, weights, ids, m) != DD_OK)
@@ -380,13 +279,7 @@ dd_status dd_mesh_create(dd_tri **out, const double *xyz, const double *weights,
     t->np = n;
     t->nvid = m;
     t->ndup = n - m;
-    for (uint32_t k = 0; k < m; k++) {
-        memcpy(t->xyz + 3 * (size_t)k, xyz + 3 * (size_t)ids[k], 3 * sizeof *xyz);
-        t->v2in[k] = ids[k];
-        t->vcell[k] = DD_NONE;
-        t->in2v[ids[k]] = k;
-    }
-    for (uint32_t i = 0; i < n; i++) t->in2v[i] = t->in2v[first[i]];
+    store_points(t, xyz, ids, first);
     dd_mfree(ids);
     uint32_t first4[4] = {0, 1, 2, 3};
     dd_make_first_cells(t, first4);

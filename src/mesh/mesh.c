@@ -92,6 +92,7 @@ dd_status dd_tri_alloc(dd_tri **out, uint32_t np)
     t->inf_cell = DD_NONE;
     t->hint = DD_NONE;
     t->rng = 0x9E3779B97F4A7C15ull;
+    t->nthreads = 1;
     *out = t;
     return DD_OK;
 }
@@ -103,6 +104,7 @@ dd_status dd_tri_alloc_borrowed(dd_tri **out)
     t->borrowed = 1;
     t->free_head = t->inf_cell = t->hint = DD_NONE;
     t->rng = 0x2545F4914F6CDD1Dull;
+    t->nthreads = 1;
     dd_pred_init(&t->pred);
     if (dd_pred_reserve(&t->pred) != DD_OK) { dd_mfree(t); return DD_ERR_NOMEM; }
     *out = t;
@@ -701,12 +703,6 @@ void dd_glue_new_cells(dd_tri *t, const uint32_t *cells, size_t ncells, uint32_t
  * is DD_QD and 2 is DD_INF (w - DD_QD); larger cavities use the edge hash. */
 #define STAR_TAG  0x80000000u
 
-/* star_edge[i][j] (j != i): positions (a, b) such that facet j of a cell,
- * in its dd_facet cyclic order, is (i, a, b).                            */
-static const uint8_t star_edge[4][4][2] = {
-    {{0, 0}, {2, 3}, {3, 1}, {1, 2}}, {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
-    {{1, 3}, {3, 0}, {0, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}, {0, 0}}};
-
 static inline uint32_t star_local(const uint32_t *vcell, uint32_t w)
 {
     return w >= DD_QD ? w - DD_QD : vcell[w] & ~STAR_TAG;
@@ -756,7 +752,7 @@ void dd_fill_star(dd_tri *t, uint32_t v)
         for (uint32_t j = 0; j < 4; j++) loc[j] = j == i ? 0 : star_local(vc, dst[j]);
         for (uint32_t j = 0, *p = pending + 6 * k; j < 4; j++) {
             if (j == i) continue;
-            uint32_t a = loc[star_edge[i][j][0]], b = loc[star_edge[i][j][1]];
+            uint32_t a = loc[dd_star_edge[i][j][0]], b = loc[dd_star_edge[i][j][1]];
             e[a * nl + b] = 4 * n + j;
             *p++ = 4 * n + j;
             *p++ = b * nl + a;

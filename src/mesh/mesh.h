@@ -71,6 +71,13 @@ static const uint8_t dd_edge_of[4][4][2] = {
     {{0, 0}, {2, 3}, {1, 3}, {1, 2}}, {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
     {{1, 3}, {0, 3}, {0, 0}, {0, 1}}, {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
 
+/* dd_star_edge[i][j] (j != i): positions (a, b) such that facet j of a
+ * cell, in its dd_facet cyclic order, is (i, a, b): the directed edge a
+ * star's facet through vertex i writes itself under (mesh.c, pbuild.c). */
+static const uint8_t dd_star_edge[4][4][2] = {
+    {{0, 0}, {2, 3}, {3, 1}, {1, 2}}, {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
+    {{1, 3}, {3, 0}, {0, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}, {0, 0}}};
+
 /* Stars whose boundary has at most this many vertices (the infinite and
  * dummy vertices count 3) are glued through a direct edge table of
  * DD_STAR_MAXV^2 entries (64 KB, kept in t->etab); larger ones through
@@ -255,6 +262,7 @@ struct dd_tri {
     uint32_t ehash_cap, ehash_gen, ehash_mask;  /* mask: this star's size */
 
     unsigned flags;           /* dd_create_ex's DD_* flags               */
+    unsigned nthreads;        /* threads its calls may use (par.c), >= 1 */
     dd_made made;             /* the cells the last edit made (cells.c)   */
     char err[256];            /* the message of the failure at hand (dd_fail) */
     char errmsg[256];         /* dd_errmsg: the last failed public call's */
@@ -516,6 +524,9 @@ dd_status dd_insert_vertex_dup(dd_tri *t, uint32_t v, uint32_t start, uint32_t *
  * Stable.  Cost O(n) (a radix sort; O(n log n) below 2048 points), 16n
  * bytes of scratch plus 128 KiB from 2048 points on.  DD_ERR_NOMEM.   */
 dd_status dd_spatial_order(const double *pts, uint32_t *ids, uint32_t n, int brio);
+/* dd_spatial_order on up to nthreads threads (one a 65536 points), the
+ * same order; 128 KiB of counters a thread.  DD_ERR_NOMEM.              */
+dd_status dd_spatial_order_threads(const double *pts, uint32_t *ids, uint32_t n, int brio, unsigned nthreads);
 
 /* first[i] = the smallest i' holding the same point as point i of
  * pts[0..3n) (with w not NULL, the same weighted point); writes the kept
@@ -712,6 +723,39 @@ dd_status dd_walk_const(const dd_tri *t, dd_pred *pr, uint64_t *rng, const doubl
 /* dd_create_ex's flag DD_DISCARD_HIDDEN (dtdel.h, which this layer does
  * not include; access.c asserts that the two agree).                    */
 #define DD_DISCARD_HIDDEN_FLAG (1u << 1)
+
+/* dd_create_ex's DD_THREADS(n) and DD_THREADS_ALL (dtdel.h; access.c
+ * asserts that they agree): n in bits 8..18, "every core" in bit 19.     */
+#define DD_THREADS_SHIFT 8
+#define DD_THREADS_MASK 0x7FFu
+#define DD_THREADS_ALL_FLAG (1u << 19)
+
+/* ---- threads (par.c) ------------------------------------------------------ */
+
+/* The most threads one call uses (a larger request uses this many). */
+#define DD_THREADS_MAX 1024u
+/* The cores online (1 if unknown), at most DD_THREADS_MAX. */
+unsigned dd_cores(void);
+/* The count a triangulation starts with when its creator names none:
+ * DTDEL_THREADS if set (a count; 0 or "all": dd_cores()), else 1.      */
+unsigned dd_threads_default(void);
+/* Runs fn(arg, j) for j = 0 .. n - 1, j = 0 in the calling thread, the
+ * others each in a thread of its own, and returns when all have; a job
+ * whose thread cannot be started runs in the caller after its own.    */
+void dd_run_threads(unsigned n, void (*fn)(void *arg, unsigned j), void *arg);
+
+/* Inserts vertex ids lo .. hi - 1 (points stored, vcell DD_NONE, all
+ * distinct, in BRIO + Hilbert order; rounds[0..nround] the first id of
+ * each BRIO round, then hi) into the Delaunay triangulation t (not
+ * weighted), on t->nthreads threads (pbuild.c).  The result is the one
+ * dd_build_insert gives in order, whatever the schedule; the numbering
+ * of the cells is not.  DD_ERR_NOMEM, DD_ERR_INTERNAL (t then unusable:
+ * construction destroys it).                                           */
+dd_status dd_build_parallel(dd_tri *t, uint32_t lo, uint32_t hi, const uint32_t *rounds, uint32_t nround);
+/* The first vertex id of each BRIO round of the m vertex ids whose input
+ * indices are v2in[0..m) (build.c's rounds), in starts[0..*nround), and
+ * m in starts[*nround]; starts has room for 16 + 1.                    */
+void dd_brio_rounds(const uint32_t *v2in, uint32_t m, uint32_t *starts, uint32_t *nround);
 
 /* Creates an empty dd_tri with room for np points. */
 dd_status dd_tri_alloc(dd_tri **out, uint32_t np);
