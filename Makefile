@@ -41,7 +41,7 @@ CXXFLAGS_R = -std=c++17 -O3 -DNDEBUG -frounding-math -Wall -Wextra
 # shim: CGAL is not ours to instrument, and compiling it once saves
 # minutes.  CXXFLAGS_A only links the sanitizer runtime in.
 CXXFLAGS_A = -std=c++17 -O1 -fsanitize=address,undefined
-LIBS     = -lgmp -lmpfr -lm -pthread
+LIBS     = -lgmp -lmpfr -lm -ltbb -ltbbmalloc -pthread
 # What the library itself needs (the CLI and tests add CGAL's MPFR).
 LIB_LIBS = -lgmp -lm -pthread
 
@@ -64,7 +64,7 @@ SHIM_SRC = $(wildcard src/cgal/*.cpp)
 # The CGAL reference objects, compiled once in the release build (see below).
 SHIM_OBJ = $(SHIM_SRC:%.cpp=$(B)/obj/%.o)
 TEST_C   = $(wildcard tests/test_*.c)
-HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h src/cgal/cgal_refine.h $(wildcard datasets/*.h)
+HDRS     = $(wildcard src/*.h) $(wildcard src/*/*.h) $(wildcard variants/*.h) src/cgal/cgal_shim.h src/cgal/cgal_query.h src/cgal/cgal_refine.h src/cgal/cgal_par.h $(wildcard datasets/*.h)
 
 B = build
 A = build/asan

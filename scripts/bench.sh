@@ -84,6 +84,10 @@ rm -f $out/build-write.vtu
 # and on a curve, where point location is most of the work
 echo >>$out/build.txt
 "$DTDEL" build-bench "$nh" --dataset helix >>$out/build.txt || rc=$?
+# on 2 threads: ours against our 1 thread and CGAL's Parallel_tag, then
+# weighted points against our 1 thread (issue 59's rows)
+echo >>$out/build.txt
+"$DTDEL" build-bench "$n" --threads 2 --reps $(by_mode 5 3 1) >>$out/build.txt || rc=$?
 cat $out/build.txt
 # whole workloads: a random sequence of deletions, no repetition, cold
 # caches (seq-bench), on uniform points and on the degenerate grid

@@ -43,6 +43,13 @@ grep -q "^## All weighted datasets" "$q/summary.md" 2>/dev/null && grep -q "^| w
 grep -q "Written by \`dd_write\` as a binary .vtu, the triangulation of .* MB, in .* s\." "$q/readme-table.md" &&
     [ ! -e "$q/build-write.vtu" ] && ok write-note ||
     bad write-note "no dd_write note in readme-table.md, or results/quick/build-write.vtu left: $(grep write "$q/build.txt")"
+# the parallel construction rows (issue 59): ours on 2 threads against our
+# 1 thread and CGAL's Parallel_tag, both identical to CGAL's; weighted too
+grep -q "^parallel: 2 threads, dtdel .*x its 1 thread, .*x CGAL Parallel_tag on 2 threads" "$q/build.txt" 2>/dev/null &&
+    grep -q "^weighted parallel: 2 threads" "$q/build.txt" && [ "$(grep -c '^identical to CGAL: yes' "$q/build.txt")" -eq 3 ] &&
+    grep -qx "identical to 1 thread: yes" "$q/build.txt" &&
+    grep -q "on 2 threads .*× our one thread and .*× CGAL's Parallel_tag on as many, weighted points" "$q/readme-table.md" &&
+    ok parallel-rows || bad parallel-rows "build.txt: $(tail -n 14 "$q/build.txt" 2>/dev/null | tr '\n' ' ')"
 # the Python package against scipy: its table and notes
 [ "$(grep -c '^| .* | .* | .* | .*× |$' "$q/readme-table.md" 2>/dev/null)" -gt 0 ] &&
     grep -q "^| Python: \`dtdel.Delaunay\` against" "$q/readme-table.md" &&

@@ -227,16 +227,26 @@ static void readme_construction(const ctx *c, FILE *out)
     char *line = NULL;
     size_t cap = 0;
     long long n = 0;
-    double ratio;
+    double ratio, r2;
+    unsigned th;
     int any = 0;
     while (read_line(f, &line, &cap) == 1) {
+        if (sscanf(line, "parallel: %u threads, dtdel %lfx its 1 thread, %lfx CGAL Parallel_tag", &th, &ratio, &r2) == 3 &&
+            any) {
+            fprintf(out, "; on %u threads %.2f× our one thread and %.2f× CGAL's Parallel_tag on as many", th, ratio, r2);
+            continue;
+        }
+        if (sscanf(line, "weighted parallel: %u threads, dtdel %lfx its 1 thread", &th, &ratio) == 2 && any) {
+            fprintf(out, ", weighted points %.2f× our one thread", ratio);
+            continue;
+        }
         if (sscanf(line, "dataset %63[^,], n = %lld", ds, &n) == 2) continue;
         if (sscanf(line, "speed ratio dtdel/cgal: %lf", &ratio) == 1 && ds[0]) {
             fprintf(out, "%s%.2f×%s on %s, n = %s",
                     any ? "; " : " Construction of DT(S) (`dtdel build-bench`): ", ratio,
                     any ? "" : " CGAL's speed", ds, fmt_int(n, b));
             any = 1;
-        } else if (!strcmp(line, "identical to CGAL: NO") && any) {
+        } else if ((!strcmp(line, "identical to CGAL: NO") || !strcmp(line, "identical to 1 thread: NO")) && any) {
             fprintf(out, " (**not identical to CGAL's triangulation**)");
         }
     }

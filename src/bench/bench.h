@@ -37,6 +37,10 @@ int gen_points(const char *cmd, const char *dataset, uint64_t n, uint64_t seed, 
 struct dd_cgalq;
 int same_as_cgalq(dd_tri *t, const struct dd_cgalq *g);
 
+/* build-bench --threads N (pbuild_bench.c): the parallel rows; 0 or an
+ * exit status.                                                          */
+int build_bench_threads(const char *dataset, uint64_t n, uint64_t seed, unsigned threads, unsigned reps);
+
 /* The bench commands (dtdel COMMAND --help): argc and argv from the
  * command's name on; an exit status, or EXIT_SHOW_USAGE.                */
 int cmd_bench(int argc, char **argv);

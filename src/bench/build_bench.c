@@ -38,7 +38,7 @@ static int time_write(const dd_tri *t, const char *path)
 int cmd_build_bench(int argc, char **argv)
 {
     const char *dataset = "uniform", *wpath = NULL;
-    uint64_t n = 1000000, seed = 1, reps = 3;
+    uint64_t n = 1000000, seed = 1, reps = 3, threads = 1;
     for (int i = 1, rc; i < argc; i++) {
         if (take_dataset_option("build-bench", argc, argv, &i, &dataset, &seed, &rc)) {
             if (rc) return rc;
@@ -48,10 +48,14 @@ int cmd_build_bench(int argc, char **argv)
         } else if (!strcmp(argv[i], "--reps")) {
             if (++i >= argc || parse_u64(argv[i], &reps) || reps < 1 || reps > BUILD_MAX_REPS)
                 return usage_error("build-bench", "--reps needs an integer from 1 to 9%s", "");
+        } else if (!strcmp(argv[i], "--threads")) {
+            if (++i >= argc || parse_u64(argv[i], &threads) || threads < 1 || threads > 1024)
+                return usage_error("build-bench", "--threads needs an integer from 1 to 1024%s", "");
         } else if (parse_u64(argv[i], &n) || n > UINT32_MAX / 8) {
             return usage_error("build-bench", "N must be a non-negative integer, got '%s'", argv[i]);
         }
     }
+    if (threads > 1) return build_bench_threads(dataset, n, seed, (unsigned)threads, (unsigned)reps);
     double *xyz;
     uint32_t np;
     char msg[512];

@@ -336,13 +336,16 @@ static const command commands[] = {
      "caches), with no warm-up.\n"
      "A counting build (build/count/dtdel) writes the phase split instead;\n"
      "--phases DIR merges such a run's phase columns into this one.", cmd_bench},
-    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R] [--write FILE]",
+    {"build-bench", "build-bench [N] [--dataset NAME] [--seed S] [--reps R] [--write FILE] [--threads T]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL's\n"
      "range insert in the same run, R times each (default 3, at most 9),\n"
      "alternated; prints the median times in points/s, their ratio, bytes\n"
      "per cell, and whether the two triangulations are identical.\n"
      "--write FILE: then writes DT to FILE (dd_write, by its extension), once,\n"
-     "and prints the file's size and the time it took.", cmd_build_bench},
+     "and prints the file's size and the time it took.\n"
+     "--threads T (T > 1): instead, dtdel on 1 and on T threads and CGAL's\n"
+     "Parallel_tag construction on T threads, alternated, each checked\n"
+     "against CGAL; then weighted points (wuniform) on 1 and on T threads.", cmd_build_bench},
     {"seq-bench", "seq-bench [N] [--dataset NAME] [--fraction F] [--variant NAME] [--seed S]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL,\n"
      "then deletes the same seeded random sequence of a fraction F of the\n"
