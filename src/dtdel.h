@@ -499,11 +499,14 @@ dd_status dd_move_many(dd_tri *t, const uint32_t *vs, const double *xyz, const d
  * class, -1 where the point is NaN or infinite), nearest[i] a vertex
  * nearest to it (least power distance on a weighted t, as
  * dd_nearest_vertex; UINT32_MAX where the point is bad).  The queries
- * are answered along a Hilbert curve, each walk starting from the last
- * answer.  DD_ERR_NAN / DD_ERR_INFINITE if some point was bad (the
- * others answered), DD_ERR_NOMEM (nothing answered).  Cost: O(m log m)
- * for the order plus the walks, O(1) cells each for queries spread like
- * the points; O(m) scratch.                                          */
+ * are answered along a Hilbert curve, in chunks of 4096, each walk
+ * starting from the last answer of its chunk.  Threads: the chunks go
+ * to dd_threads(t) threads; the answers do not depend on how many.
+ * DD_ERR_NAN / DD_ERR_INFINITE if some point was bad (the others
+ * answered), DD_ERR_NOMEM (nothing answered; the outputs partly
+ * written).  Cost: O(m) for the order plus the walks, O(1) cells each
+ * for queries spread like the points, divided among the threads; O(m)
+ * scratch.                                                           */
 dd_status dd_locate_many(const dd_tri *t, const double *xyz, size_t m, dd_cell_id *cells);
 dd_status dd_nearest_many(const dd_tri *t, const double *xyz, size_t m, uint32_t *nearest);
 

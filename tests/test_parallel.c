@@ -11,7 +11,8 @@
  * sources: DD_THREADS(n), DD_THREADS_ALL, the DTDEL_THREADS variable,
  * dd_set_threads (0: every core, 64 on any machine, past 1024 clamped),
  * and the refusals that do not depend on it (unknown flag bits,
- * coplanar input).
+ * coplanar input).  And the read-only batches, dd_locate_many and
+ * dd_nearest_many, answer the same on every count.
  *
  * In the ThreadSanitizer build (make test) a data race between the
  * construction's threads fails the run.  Argument "small": smaller sets
@@ -133,6 +134,41 @@ static void datasets(int small)
     }
 }
 
+/* dd_locate_many and dd_nearest_many give the same answers on 1, 2, 3
+ * and 8 threads (the queries: random points, the grid's own points and
+ * the midpoints of grid edges, where a point lies on several cells).  */
+static void batch_reads(const char *name, int small)
+{
+    uint32_t n = 0;
+    double *p = NULL;
+    if (dd_gen(name, small ? 3000 : 40000, 5, &p, &n, NULL, 0) != DD_OK) exit(1);
+    dd_tri *t = NULL;
+    if (dd_create(&t, p, n, NULL, 0) != DD_OK) exit(1);
+    const size_t m = small ? 10000 : 60000;
+    double *q = malloc(3 * m * sizeof *q);
+    tl_rng r = {11};
+    for (size_t i = 0; i < m; i++)
+        for (int c = 0; c < 3; c++) {
+            const double *a = p + 3 * (size_t)(i % n), *b = p + 3 * (size_t)((i * 7 + 1) % n);
+            q[3 * i + c] = i % 3 == 0 ? a[c] : i % 3 == 1 ? 0.5 * (a[c] + b[c]) : tl_unif(&r) * 30;
+        }
+    dd_cell_id *c1 = malloc(m * sizeof *c1), *ck = malloc(m * sizeof *ck);
+    uint32_t *n1 = malloc(m * sizeof *n1), *nk = malloc(m * sizeof *nk);
+    dd_set_threads(t, 1);
+    dd_status a1 = dd_locate_many(t, q, m, c1), b1 = dd_nearest_many(t, q, m, n1);
+    for (size_t k = 1; k < NCOUNTS; k++) {
+        dd_set_threads(t, counts[k]);
+        dd_status ak = dd_locate_many(t, q, m, ck), bk = dd_nearest_many(t, q, m, nk);
+        char tn[96];
+        snprintf(tn, sizeof tn, "parallel/reads/%s/threads-%u", name, counts[k]);
+        tl_check(&st, a1 == DD_OK && b1 == DD_OK && ak == DD_OK && bk == DD_OK && !memcmp(c1, ck, m * sizeof *c1) &&
+                          !memcmp(n1, nk, m * sizeof *n1),
+                 tn, "statuses %s %s, answers differ", dd_status_name(ak), dd_status_name(bk));
+    }
+    free(c1), free(ck), free(n1), free(nk), free(q), free(p);
+    dd_free(t);
+}
+
 /* Where the count comes from: flags, DTDEL_THREADS, dd_set_threads. */
 static void thread_counts(void)
 {
@@ -193,6 +229,8 @@ int main(int argc, char **argv)
     int small = argc > 1 && !strcmp(argv[1], "small");
     unsetenv("DTDEL_THREADS");
     datasets(small);
+    batch_reads("uniform", small);
+    batch_reads("grid", small);
     thread_counts();
     return tl_finish(&st);
 }
