@@ -84,8 +84,42 @@ def test_move_and_reads():
         check("input_points weights", ws[403] == w[3] * 0.5 and ws[500] == 0.0001, "")
 
 
+def test_threads():
+    """threads= (issue 59): the same triangulation on 1, 2, 3 and 8
+    threads, CGAL's; the same locate_many / nearest_many answers; the
+    threads property and its refusals; Delaunay(threads=)."""
+    import dtdel
+    import os
+    rng = np.random.default_rng(9)
+    grid = np.stack(np.meshgrid(*[np.arange(8.0) / 7] * 3), -1).reshape(-1, 3)   # ties: cospherical cells
+    xyz = np.vstack([rng.random((30000, 3)) * 0.9 + 0.05, grid])
+    q = np.vstack([rng.random((9000, 3)), xyz[::7]])
+    with Triangulation(xyz, threads=1) as one:
+        check("threads=1", one.threads == 1, str(one.threads))
+        same_as_cgal("threads=1 equals CGAL", one, dict(enumerate(xyz)))
+        want = sort_rows(one.canonical())
+        c1, n1 = one.locate_many(q), one.nearest_many(q)
+        for k in (2, 3, 8):
+            with Triangulation(xyz, threads=k) as t:
+                check("threads=%d build" % k, t.threads == k and np.array_equal(sort_rows(t.canonical()), want)
+                      and t.check() is None, "")
+                one.threads = k
+                check("threads=%d reads" % k, np.array_equal(one.locate_many(q), c1)
+                      and np.array_equal(one.nearest_many(q), n1), "")
+        one.threads = 0
+        check("threads=0 is every core", one.threads == min(os.cpu_count(), 1024), str(one.threads))
+        one.threads = 64
+        check("threads=64", one.threads == 64, str(one.threads))
+        for bad in (-1, 2.5, "2", True):
+            raises("threads=%r refused" % (bad,), "DD_ERR_ARG", setattr, one, "threads", bad)
+    raises("Triangulation(threads=-1)", "DD_ERR_ARG", Triangulation, xyz[:50], None, False, False, -1)
+    d = dtdel.Delaunay(xyz, threads=2)
+    check("Delaunay(threads=2)", d.triangulation.threads == 2
+          and np.array_equal(sort_rows(d.triangulation.canonical()), want), "")
+
+
 def main():
-    tp.run_groups((test_insert, test_move_and_reads))
+    tp.run_groups((test_insert, test_move_and_reads, test_threads))
 
 
 if __name__ == "__main__":

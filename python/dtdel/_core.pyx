@@ -43,13 +43,16 @@ cdef extern from "dtdel.h" nogil:
         pass
     ctypedef int dd_status
     ctypedef int64_t dd_cell_id
-    int DD_STABLE_INDICES, DD_DISCARD_HIDDEN, DD_WRITE_ASCII
+    int DD_STABLE_INDICES, DD_DISCARD_HIDDEN, DD_WRITE_ASCII, DD_THREADS_ALL
+    unsigned DD_THREADS(unsigned n)
     const char *dd_version()
     const char *dd_status_name(dd_status s)
     dd_status dd_create(dd_tri **out, const double *xyz, uint32_t n, char *msg, size_t msglen)
     dd_status dd_create_ex(dd_tri **out, const double *xyz, const double *weights, uint32_t n,
                            unsigned flags, char *msg, size_t msglen)
     void dd_free(dd_tri *t)
+    void dd_set_threads(dd_tri *t, unsigned n)
+    unsigned dd_threads(const dd_tri *t)
     int dd_is_weighted(const dd_tri *t)
     dd_status dd_weight(const dd_tri *t, uint32_t i, double *w)
     int dd_is_hidden(const dd_tri *t, uint32_t i)
@@ -254,10 +257,29 @@ cdef cnp.ndarray take_ints(void *ptr, size_t count, int width, object dtype):
         free(ptr)
 
 
+cdef unsigned thread_count(n, what) except? 0:
+    """A thread count from Python: an int >= 0 (0: every core; past 1024
+    clamped by the library)."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
+        raise arg_error("%s: threads must be an integer >= 0 (0: every core), got %r" % (what, n))
+    return <unsigned>min(int(n), 1024)
+
+
+cdef unsigned thread_flag(threads, what) except? 1:
+    """dd_create_ex's thread bits: none for None (1, or DTDEL_THREADS),
+    DD_THREADS_ALL for 0, DD_THREADS(n) else."""
+    if threads is None:
+        return 0
+    cdef unsigned n = thread_count(threads, what)
+    return DD_THREADS_ALL if n == 0 else DD_THREADS(n)
+
+
 cdef class Triangulation:
     """The Delaunay triangulation of an (n, 3) array of points (dd_create),
     or with weights (an (n,) array) the regular one (dd_create_ex), its
-    hidden points kept, or forgotten when discard_hidden.  A point's row
+    hidden points kept, or forgotten when discard_hidden; built on
+    `threads` threads (0: every core; None: 1, or DTDEL_THREADS), with the
+    same result on any count.  A point's row
     number is its input index; duplicates are merged into their first
     occurrence (alias).  -1 stands for the infinite vertex.
 
@@ -290,8 +312,9 @@ cdef class Triangulation:
             self.t = NULL
         pthread_rwlock_destroy(&self.lock)
 
-    def __init__(self, points, weights=None, stable_indices=False, discard_hidden=False):
+    def __init__(self, points, weights=None, stable_indices=False, discard_hidden=False, threads=None):
         cdef cnp.ndarray xyz = as_points(points, "Triangulation")
+        cdef unsigned tflag = thread_flag(threads, "Triangulation")
         if cnp.PyArray_DIM(xyz, 0) >= U32:
             raise arg_error("Triangulation: %d points, more than 2^32 - 1" % cnp.PyArray_DIM(xyz, 0))
         wa = as_weights(weights, cnp.PyArray_DIM(xyz, 0), "Triangulation")
@@ -299,7 +322,7 @@ cdef class Triangulation:
         if wa is not None:
             wp = <const double *>cnp.PyArray_DATA(wa)
         cdef unsigned flags = ((DD_STABLE_INDICES if stable_indices else 0)
-                               | (DD_DISCARD_HIDDEN if discard_hidden else 0))
+                               | (DD_DISCARD_HIDDEN if discard_hidden else 0) | tflag)
         cdef uint32_t n = cnp.PyArray_DIM(xyz, 0)
         cdef char msg[MSGLEN]
         cdef dd_tri *out = NULL
@@ -395,6 +418,20 @@ cdef class Triangulation:
         m = dd_errmsg(self.t).decode(errors="replace")
         self.un()
         return m
+
+    # ---- threads -------------------------------------------------------------
+    @property
+    def threads(self):
+        """The threads the calls on it use (dd_threads): the construction,
+        locate_many, nearest_many.  Set it (dd_set_threads) to n >= 1, or
+        0 for every core; the results never depend on it."""
+        self.rd(); n = dd_threads(self.t); self.un()
+        return n
+
+    @threads.setter
+    def threads(self, n):
+        cdef unsigned k = thread_count(n, "threads")
+        self.wr(); dd_set_threads(self.t, k); self.un()
 
     # ---- sizes ---------------------------------------------------------------
     @property

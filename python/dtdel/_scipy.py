@@ -33,7 +33,7 @@ def _queries(xi, call):
 
 class Delaunay:
     """Delaunay(points, furthest_site=False, incremental=False,
-    qhull_options=None, *, weights=None, discard_hidden=False)
+    qhull_options=None, *, weights=None, discard_hidden=False, threads=None)
 
     The Delaunay triangulation of 3D points, a drop-in for
     ``scipy.spatial.Delaunay`` on 3D input: the same attribute names,
@@ -58,6 +58,10 @@ class Delaunay:
         ``Regular_triangulation_3``.
     discard_hidden : bool
         Weighted only: forget hidden points instead of keeping them.
+    threads : int, optional
+        Build (and answer find_simplex's arrays) on that many threads,
+        0 for every core; None: 1, or the DTDEL_THREADS variable.  The
+        result is the same on any count.
 
     Attributes
     ----------
@@ -115,7 +119,7 @@ class Delaunay:
     furthest_site = False
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
-                 weights=None, discard_hidden=False):
+                 weights=None, discard_hidden=False, threads=None):
         if furthest_site:
             raise DtdelError(_ERR_UNSUPPORTED, "Delaunay: furthest_site=True is not supported")
         if qhull_options is not None:
@@ -125,7 +129,7 @@ class Delaunay:
         if a.ndim != 2 or a.shape[1] != 3:
             raise DtdelError(_ERR_ARG, "Delaunay: points must be an (npoints, 3) array (3D only), got "
                              "shape %s" % (a.shape,))
-        self._tri = Triangulation(a, weights=weights, discard_hidden=discard_hidden)
+        self._tri = Triangulation(a, weights=weights, discard_hidden=discard_hidden, threads=threads)
         self._cache = {}
         self._at = -1
 
