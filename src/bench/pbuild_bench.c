@@ -1,7 +1,7 @@
 /*
  * pbuild_bench.c -- `dtdel build-bench --threads N`: the construction on
  * one thread and on N, and CGAL's Parallel_tag construction on N
- * (cgal/cgal_par.h), alternated, the medians compared, all results
+ * (cgal/cgal_par.h), in turns, the medians compared, all results
  * checked against CGAL's; then the weighted construction (wuniform) on
  * one thread and on N.  What make bench appends to results/build.txt.
  */
@@ -75,7 +75,7 @@ static int plain_rows(const char *dataset, const double *xyz, uint32_t np, unsig
     forms_free(&f);
     char label[64];
     printf("dataset %s, n = %u, threads %u (%ld cores online)\n", dataset, np, threads, sysconf(_SC_NPROCESSORS_ONLN));
-    printf("runs: %u each, alternated; medians (fastest-slowest)\n", reps);
+    printf("runs: %u each, in turns; medians (fastest-slowest)\n", reps);
     print_row("dtdel, 1 thread:", one, reps, np);
     snprintf(label, sizeof label, "dtdel, %u threads:", threads);
     print_row(label, many, reps, np);

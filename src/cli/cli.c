@@ -344,7 +344,7 @@ static const command commands[] = {
      "--write FILE: then writes DT to FILE (dd_write, by its extension), once,\n"
      "and prints the file's size and the time it took.\n"
      "--threads T (T > 1): instead, dtdel on 1 and on T threads and CGAL's\n"
-     "Parallel_tag construction on T threads, alternated, each checked\n"
+     "Parallel_tag construction on T threads, in turns, each checked\n"
      "against CGAL; then weighted points (wuniform) on 1 and on T threads.", cmd_build_bench},
     {"seq-bench", "seq-bench [N] [--dataset NAME] [--fraction F] [--variant NAME] [--seed S]",
      "Builds DT of N points (default 10^6 uniform) with dtdel and with CGAL,\n"

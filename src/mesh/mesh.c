@@ -740,23 +740,13 @@ void dd_fill_star(dd_tri *t, uint32_t v)
      * keeps the key of its partner (t->stack, 6 entries a cell).  The
      * boundary list then holds the new cells.                              */
     for (size_t k = 0; k < nb; k++) {
-        uint32_t f = t->boundary.a[k], c = f >> 2, i = f & 3;
-        uint32_t n = dd_new_cell(t);
-        const uint32_t *src = dd_tv(t, c);
-        uint32_t *dst = dd_tv(t, n), loc[4];
-        for (uint32_t j = 0; j < 4; j++) dst[j] = src[j];
-        dst[i] = v;
-        dd_glue(t, 4 * n + i, *dd_fn(t, f));
+        uint32_t f = t->boundary.a[k], i = f & 3;
+        uint32_t n = dd_new_cell(t), loc[4];
+        const uint32_t *dst = dd_star_cell(t, f, n, v);
         t->boundary.a[k] = n;
         if (!nl) continue;
         for (uint32_t j = 0; j < 4; j++) loc[j] = j == i ? 0 : star_local(vc, dst[j]);
-        for (uint32_t j = 0, *p = pending + 6 * k; j < 4; j++) {
-            if (j == i) continue;
-            uint32_t a = loc[dd_star_edge[i][j][0]], b = loc[dd_star_edge[i][j][1]];
-            e[a * nl + b] = 4 * n + j;
-            *p++ = 4 * n + j;
-            *p++ = b * nl + a;
-        }
+        dd_star_edges(e, nl, loc, i, n, pending + 6 * k);
     }
     if (!nl) dd_glue_new_cells(t, t->boundary.a, nb, v);
     /* The partners, then the vertex links (which also clears the local

@@ -404,6 +404,35 @@ static inline void dd_glue(dd_tri *t, uint32_t f, uint32_t g)
     *dd_fn(t, g) = f;
 }
 
+/* The star's cell n over boundary facet f (cell c, opposite position i):
+ * c's vertices with the one at i replaced by v, glued to the cell across
+ * f.  Returns n's vertices.                                            */
+static inline uint32_t *dd_star_cell(dd_tri *t, uint32_t f, uint32_t n, uint32_t v)
+{
+    const uint32_t *src = dd_tv(t, f >> 2);
+    uint32_t *dst = dd_tv(t, n);
+    for (uint32_t j = 0; j < 4; j++) dst[j] = src[j];
+    dst[f & 3] = v;
+    dd_glue(t, 4 * n + (f & 3), *dd_fn(t, f));
+    return dst;
+}
+
+/* The three facets through v (at position i) of star cell n, whose
+ * vertices have local numbers loc: each written into the edge table e
+ * (rows of `stride`) under its directed edge, and (facet, partner's key)
+ * into q[0..6).                                                        */
+static inline void dd_star_edges(uint32_t *e, uint32_t stride, const uint32_t loc[4], uint32_t i, uint32_t n,
+                                 uint32_t *q)
+{
+    for (uint32_t j = 0; j < 4; j++) {
+        if (j == i) continue;
+        uint32_t a = loc[dd_star_edge[i][j][0]], b = loc[dd_star_edge[i][j][1]];
+        e[a * stride + b] = 4 * n + j;
+        *q++ = 4 * n + j;
+        *q++ = b * stride + a;
+    }
+}
+
 /* Conflict test of the perturbed Delaunay triangulation: 1 when point p
  * lies inside the (perturbed) circumsphere of cell c, CGAL's rule for
  * infinite cells included.  In a conflict DT, a cell with the dummy vertex

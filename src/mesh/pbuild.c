@@ -348,27 +348,16 @@ static void fill_star(worker *w, uint32_t v)
     w->nl = 3;
     int table = 1;
     for (size_t k = 0; k < nb; k++) {
-        uint32_t f = s->boundary.a[k], c = f >> 2, i = f & 3;
-        uint32_t n = new_cell(w);
-        const uint32_t *src = dd_tv(s, c);
-        uint32_t *dst = dd_tv(s, n), loc[4];
-        for (uint32_t j = 0; j < 4; j++) dst[j] = src[j];
-        dst[i] = v;
-        dd_glue(s, 4 * n + i, *dd_fn(s, f));
+        uint32_t f = s->boundary.a[k], i = f & 3;
+        uint32_t n = new_cell(w), loc[4];
+        const uint32_t *dst = dd_star_cell(s, f, n, v);
         s->boundary.a[k] = n;
         if (!table) continue;
         for (uint32_t j = 0; j < 4; j++) {
             loc[j] = j == i ? 0 : local_of(w, dst[j]);
             if (j != i && !loc[j]) table = 0;
         }
-        if (!table) continue;
-        for (uint32_t j = 0, *q = pending + 6 * k; j < 4; j++) {
-            if (j == i) continue;
-            uint32_t a = loc[dd_star_edge[i][j][0]], b = loc[dd_star_edge[i][j][1]];
-            e[a * DD_STAR_MAXV + b] = 4 * n + j;
-            *q++ = 4 * n + j;
-            *q++ = b * DD_STAR_MAXV + a;
-        }
+        if (table) dd_star_edges(e, DD_STAR_MAXV, loc, i, n, pending + 6 * k);
     }
     if (table)
         for (size_t k = 0; k < nb; k++)
@@ -434,11 +423,11 @@ static void run_share(void *arg, unsigned j)
  * last new cell, else none.  Only w writes the cells that hold one of
  * its vertices, and their vcell entries, so reading them races with
  * nothing; a cell of no one's region may be another thread's.          */
-static uint32_t safe_start(const worker *w, uint32_t v, uint32_t lo, uint32_t hi)
+static uint32_t safe_start(const worker *w, uint32_t v, uint32_t hi)
 {
     const uint32_t *vcell = w->s.vcell;
     for (uint32_t d = 1; d <= SAFE_LOOK; d++) {
-        if (v >= lo + d && w->part[v - d] == w->j && vcell[v - d] != DD_NONE) return vcell[v - d];
+        if (v >= d && w->part[v - d] == w->j && vcell[v - d] != DD_NONE) return vcell[v - d];
         if (v + d < hi && w->part[v + d] == w->j && vcell[v + d] != DD_NONE) return vcell[v + d];
     }
     return w->s.hint;
@@ -452,7 +441,7 @@ static void run_todo(void *arg, unsigned j)
     w->s.hint = DD_NONE;                  /* the first pass's cells are not j's now */
     for (size_t k = 0; k < w->todo.n && !w->err; k++) {
         uint32_t v = w->todo.a[k];
-        w->s.hint = safe_start(w, v, 0, w->round_end);
+        w->s.hint = safe_start(w, v, w->round_end);
         if (w->full || !insert_one(w, v)) put_aside(w, v);
     }
 }
